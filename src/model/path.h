@@ -1,0 +1,55 @@
+/* Belt path: the closed loop of wrap arcs and straight common tangents that
+ * the belt follows at t = 0, and the path coordinate s along it.
+ *
+ * Order of segments (n pulleys): span 0 (leaves pulley 0), arc of pulley 1,
+ * span 1, arc of pulley 2, ..., span n-1, arc of pulley 0. s = 0 where the
+ * belt leaves pulley 0 (model-format.md). Segment 2i is span i, segment
+ * 2i+1 is the arc of pulley (i+1) mod n. */
+#ifndef BD_PATH_H
+#define BD_PATH_H
+
+#include "beltdyn/model.h"
+
+typedef enum bd_segment_kind { BD_SEGMENT_SPAN = 0, BD_SEGMENT_ARC } bd_segment_kind;
+
+typedef struct bd_path_segment {
+    bd_segment_kind kind;
+    int pulley;        /* span: the pulley it leaves; arc: the pulley wrapped */
+    double s0;         /* m, path coordinate of its start */
+    double length;     /* m */
+    double p0[2];      /* m, start point */
+    double p1[2];      /* m, end point */
+    double dir[2];     /* span: unit direction of travel */
+    double centre[2];  /* arc: pulley centre */
+    double radius;     /* arc: m */
+    double angle0;     /* arc: polar angle of p0 about the centre, rad */
+    double sweep;      /* arc: signed angle swept, rad (+ ccw), |sweep| = wrap */
+} bd_path_segment;
+
+typedef struct bd_path {
+    int pulley_count;
+    int segment_count;         /* 2 * pulley_count */
+    bd_path_segment *segments; /* [segment_count] */
+    double length;             /* m, whole loop */
+} bd_path;
+
+/* build from pulley centres, radii and wrap senses; problems (pulleys that
+ * overlap so no tangent exists) go to diag with the pulley's mark. 0 = ok */
+int bd_path_build(const bd_model_def *m, bd_path *path, bd_diag *diag);
+void bd_path_free(bd_path *path);
+
+/* point and unit tangent (direction of travel) at path coordinate s
+ * (taken modulo the loop length) */
+void bd_path_point(const bd_path *path, double s, double p[2], double tangent[2]);
+/* index of the segment holding s (s modulo the loop length) */
+int bd_path_segment_at(const bd_path *path, double s);
+
+/* the span leaving pulley i, and the arc of pulley i */
+const bd_path_segment *bd_path_span(const bd_path *path, int pulley);
+const bd_path_segment *bd_path_arc(const bd_path *path, int pulley);
+/* s of the point at fraction `at` (0..1) along span `pulley` */
+double bd_path_span_s(const bd_path *path, int pulley, double at);
+/* wrap angle of pulley i, rad (>= 0) */
+double bd_path_wrap_angle(const bd_path *path, int pulley);
+
+#endif

@@ -1,0 +1,26 @@
+/* a tiny assertion library for the unit tests: each CHECK counts, a failing
+ * one prints where and why, and the test's exit code is the failure count */
+#ifndef BD_TESTLIB_H
+#define BD_TESTLIB_H
+#include <stdio.h>
+#include <math.h>
+
+extern int bd_test_failures;
+extern int bd_test_checks;
+
+#define CHECK(cond) do { bd_test_checks++; if (!(cond)) { bd_test_failures++; \
+    fprintf(stderr, "%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #cond); } } while (0)
+
+/* |got - want| <= tol_rel * |want| */
+#define CHECK_REL(got, want, tol_rel) do { double g_ = (got), w_ = (want); \
+    bd_test_checks++; if (!(fabs(g_ - w_) <= (tol_rel) * fabs(w_))) { bd_test_failures++; \
+    fprintf(stderr, "%s:%d: %s = %.9g, want %.9g within %.3g%%\n", __FILE__, __LINE__, \
+            #got, g_, w_, 100.0 * (tol_rel)); } } while (0)
+
+#define CHECK_ABS(got, want, tol) do { double g_ = (got), w_ = (want); \
+    bd_test_checks++; if (!(fabs(g_ - w_) <= (tol))) { bd_test_failures++; \
+    fprintf(stderr, "%s:%d: %s = %.9g, want %.9g within %.3g\n", __FILE__, __LINE__, \
+            #got, g_, w_, (double)(tol)); } } while (0)
+
+int bd_test_finish(const char *name);
+#endif
