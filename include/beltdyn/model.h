@@ -236,6 +236,8 @@ typedef struct bd_simulation_def {
     int stabilize;           /* kinetic-energy damping before t = 0 */
     int probe_count;
     bd_probe_def *probes;    /* [probe_count] */
+    bd_mark mark;            /* the `simulation` key (or 0) */
+    bd_mark time_step_mark;  /* the `time_step` value (or 0) */
 } bd_simulation_def;
 
 typedef struct bd_model_def {
