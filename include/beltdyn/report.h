@@ -1,0 +1,30 @@
+/* beltdyn report: plots and a self-contained HTML report from the output
+ * directory of a finished (or interrupted) run. */
+#ifndef BELTDYN_REPORT_H
+#define BELTDYN_REPORT_H
+
+#include <stddef.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* bd_report_write return codes */
+#define BD_REPORT_OK 0
+#define BD_REPORT_EOUTPUT 1   /* a plot or report.html could not be written */
+#define BD_REPORT_EINPUT 2    /* DIR missing, not a run directory, or a file in it is malformed */
+
+/* read DIR/summary.json (required) and DIR/history.csv, DIR/tension.csv,
+ * DIR/envelope.csv (each optional: plots whose data is absent are left out)
+ * and write DIR/plots/{tension_surface,envelope,probes,drives,takeups,
+ * energy}.{png,svg} and DIR/report.html (one file: images embedded, no
+ * outside references). Every file is written to a temporary name and
+ * renamed when complete. Returns BD_REPORT_OK, or a BD_REPORT_E* code with
+ * a one-line message in err (which may be NULL). */
+int bd_report_write(const char *dir, char *err, size_t errlen);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

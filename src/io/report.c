@@ -1,0 +1,1366 @@
+/* beltdyn report DIR: plots of a run and one self-contained report.html */
+#include "beltdyn/report.h"
+
+#include "io/csv_read.h"
+#include "io/plot.h"
+
+#include <cjson/cJSON.h>
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/types.h>
+
+#define PATH_LEN 4096
+#define LABEL_LEN 512
+#define MAX_GROUP BD_PLOT_MAX_SERIES
+#define FIG_W 1200
+#define FIG_H 700
+#define SAFETY_FACTOR_DEFAULT 6.7
+#define MAX_LABELS 128
+
+/* ---- small helpers ---- */
+
+typedef struct strbuf {
+    char *p;
+    size_t n, cap;
+    int oom;
+} strbuf;
+
+static void sb_grow(strbuf *b, size_t more)
+{
+    if (b->oom || b->n + more + 1 <= b->cap) return;
+    size_t cap = b->cap ? b->cap : 65536;
+    while (cap < b->n + more + 1) cap *= 2;
+    char *q = realloc(b->p, cap);
+    if (!q) {
+        b->oom = 1;
+        return;
+    }
+    b->p = q;
+    b->cap = cap;
+}
+
+static void sb_put(strbuf *b, const char *s, size_t len)
+{
+    sb_grow(b, len);
+    if (b->oom) return;
+    memcpy(b->p + b->n, s, len);
+    b->n += len;
+    b->p[b->n] = '\0';
+}
+
+static void sb_puts(strbuf *b, const char *s) { sb_put(b, s, strlen(s)); }
+
+static void sb_printf(strbuf *b, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+static void sb_printf(strbuf *b, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    int len = vsnprintf(NULL, 0, fmt, ap);
+    va_end(ap);
+    if (len < 0) return;
+    sb_grow(b, (size_t)len);
+    if (b->oom) return;
+    va_start(ap, fmt);
+    vsnprintf(b->p + b->n, (size_t)len + 1, fmt, ap);
+    va_end(ap);
+    b->n += (size_t)len;
+}
+
+/* text with &, <, >, " escaped */
+static void sb_html(strbuf *b, const char *s)
+{
+    for (; s && *s; s++) {
+        switch (*s) {
+        case '&': sb_puts(b, "&amp;"); break;
+        case '<': sb_puts(b, "&lt;"); break;
+        case '>': sb_puts(b, "&gt;"); break;
+        case '"': sb_puts(b, "&quot;"); break;
+        default: sb_put(b, s, 1);
+        }
+    }
+}
+
+static void set_err(char *err, size_t errlen, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+static void set_err(char *err, size_t errlen, const char *fmt, ...)
+{
+    if (!err || errlen == 0) return;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(err, errlen, fmt, ap);
+    va_end(ap);
+}
+
+static int join(char *out, const char *dir, const char *name)
+{
+    int n = snprintf(out, PATH_LEN, "%s/%s", dir, name);
+    return n > 0 && n < PATH_LEN ? 0 : -1;
+}
+
+static int file_exists(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0 && S_ISREG(st.st_mode);
+}
+
+static int ends_with(const char *s, const char *suffix)
+{
+    size_t a = strlen(s), b = strlen(suffix);
+    return a > b && strcmp(s + a - b, suffix) == 0;
+}
+
+/* a number for people: about 4 significant digits, no exponent in the
+ * usual range, thin spaces between thousands */
+static void fmt_num(char *buf, size_t len, double v)
+{
+    if (!isfinite(v)) {
+        snprintf(buf, len, "%s", isnan(v) ? "NaN" : v > 0 ? "inf" : "-inf");
+        return;
+    }
+    double a = fabs(v);
+    if (a != 0.0 && (a < 1e-3 || a >= 1e12)) {
+        snprintf(buf, len, "%.3e", v);
+        return;
+    }
+    int dec = 0;
+    if (a > 0.0 && a < 1000.0) dec = 3 - (int)floor(log10(a));
+    if (dec > 6) dec = 6;
+    if (dec < 0) dec = 0;
+    if (v == floor(v) && a < 1e12) dec = 0;
+    char raw[64];
+    snprintf(raw, sizeof raw, "%.*f", dec, v);
+    /* group the integer digits */
+    const char *p = raw;
+    char *o = buf, *end = buf + len - 1;
+    if (*p == '-') {
+        if (o < end) *o++ = '-';
+        p++;
+    }
+    size_t nint = strcspn(p, ".");
+    for (size_t i = 0; i < nint && o < end; i++) {
+        if (i > 0 && (nint - i) % 3 == 0 && nint > 4) {
+            /* U+2009 thin space */
+            if (o + 3 < end) {
+                *o++ = (char)0xE2;
+                *o++ = (char)0x80;
+                *o++ = (char)0x89;
+            }
+        }
+        *o++ = p[i];
+    }
+    for (p += nint; *p && o < end; p++) *o++ = *p;
+    *o = '\0';
+}
+
+/* a unit that keeps the numbers short: divide by scale, show unit */
+typedef struct unit {
+    double scale;
+    char name[16];
+} unit;
+
+/* N, N·m and J get a k, M or G prefix above 10^4, 10^7, 10^10; other
+ * units stay as they are */
+static unit pick_unit(double maxabs, const char *base)
+{
+    static const char *const prefixed[3] = {"N", "N·m", "J"};
+    static const char *const pre[4] = {"", "k", "M", "G"};
+    unit u;
+    int k = 0, scalable = 0;
+    for (int i = 0; i < 3; i++)
+        if (strcmp(base, prefixed[i]) == 0) scalable = 1;
+    if (scalable) {
+        if (maxabs >= 1e10) k = 3;
+        else if (maxabs >= 1e7) k = 2;
+        else if (maxabs >= 1e4) k = 1;
+    }
+    u.scale = pow(1000.0, (double)k);
+    snprintf(u.name, sizeof u.name, "%s%s", pre[k], base);
+    return u;
+}
+
+static double maxabs_of(const double *v, size_t n)
+{
+    double m = 0.0;
+    for (size_t i = 0; i < n; i++)
+        if (isfinite(v[i]) && fabs(v[i]) > m) m = fabs(v[i]);
+    return m;
+}
+
+/* a scaled copy of v (owned by the caller) */
+static double *scaled(const double *v, size_t n, double scale)
+{
+    double *o = malloc((n ? n : 1) * sizeof *o);
+    if (!o) return NULL;
+    for (size_t i = 0; i < n; i++) o[i] = v[i] / scale;
+    return o;
+}
+
+/* ---- what the report knows ---- */
+
+typedef struct point {
+    int known;
+    double value, t, s;
+} point;
+
+typedef struct report {
+    const char *dir;
+    char plots[PATH_LEN];
+    char model[200];
+    char title[LABEL_LEN];
+    cJSON *summary;
+    /* from summary.json, NaN when absent */
+    double rated_N, safety_factor, t_min_sag_N;
+    int sf_default;
+    /* peak and lowest tension: from summary.json, else from tension.csv */
+    point tmax, tmin;
+    /* plots made, in order */
+    int nplots;
+    struct {
+        char name[32];
+        char caption[LABEL_LEN];
+    } plot[8];
+    /* temporary allocations freed at the end */
+    void *owned[256];
+    int nowned;
+    /* texts of the plots being drawn */
+    char labels[MAX_LABELS][LABEL_LEN];
+    int nlabels;
+} report;
+
+/* keep p to be freed at the end (NULL when p is NULL or the list is full) */
+static double *own(report *r, double *p)
+{
+    if (p && r->nowned < (int)(sizeof r->owned / sizeof r->owned[0])) {
+        r->owned[r->nowned++] = p;
+        return p;
+    }
+    free(p);
+    return NULL;
+}
+
+/* a label buffer that lives as long as the report (for plot texts) */
+static char *lbl(report *r)
+{
+    if (r->nlabels >= MAX_LABELS) r->nlabels = MAX_LABELS - 1;  /* reuse the last */
+    return r->labels[r->nlabels++];
+}
+
+static double json_num(const cJSON *obj, const char *key)
+{
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(obj, key);
+    return cJSON_IsNumber(v) ? v->valuedouble : NAN;
+}
+
+static int write_plot(report *r, const bd_plot_figure *f, const char *name, const char *caption,
+                      char *err, size_t errlen)
+{
+    char png[PATH_LEN], svg[PATH_LEN];
+    if (snprintf(png, sizeof png, "%s/%s.png", r->plots, name) >= (int)sizeof png ||
+        snprintf(svg, sizeof svg, "%s/%s.svg", r->plots, name) >= (int)sizeof svg) {
+        set_err(err, errlen, "%s: path too long", r->plots);
+        return BD_REPORT_EOUTPUT;
+    }
+    if (bd_plot_write(f, png, svg, err, errlen)) return BD_REPORT_EOUTPUT;
+    if (r->nplots < (int)(sizeof r->plot / sizeof r->plot[0])) {
+        snprintf(r->plot[r->nplots].name, sizeof r->plot[0].name, "%s", name);
+        snprintf(r->plot[r->nplots].caption, sizeof r->plot[0].caption, "%s", caption);
+        r->nplots++;
+    }
+    return 0;
+}
+
+static void set_title(report *r, char *buf, size_t len, const char *what)
+{
+    snprintf(buf, len, "%s — %s", r->model, what);
+}
+
+/* ---- tension surface: s x t colour map ---- */
+
+/* bin the long-format field into a w x h raster: each time block becomes
+ * one row of w columns (the largest tension per column, gaps between
+ * elements interpolated); several blocks in one pixel row keep the
+ * largest; pixel rows without a block take the nearest one */
+static float *raster_field(const double *t, const double *s, const double *T, size_t n,
+                           double smin, double smax, double tmin, double tmax, int w, int h)
+{
+    float *img = malloc((size_t)w * (size_t)h * sizeof *img);
+    float *row = malloc((size_t)w * sizeof *row);
+    char *filled = calloc((size_t)h, 1);
+    if (!img || !row || !filled) {
+        free(img);
+        free(row);
+        free(filled);
+        return NULL;
+    }
+    for (size_t i = 0; i < (size_t)w * (size_t)h; i++) img[i] = NAN;
+    double sx = (double)w / (smax - smin);
+    double ty = tmax > tmin ? (double)h / (tmax - tmin) : 0.0;
+    size_t a = 0;
+    while (a < n) {
+        /* one block: rows with the same time */
+        size_t b = a;
+        while (b < n && t[b] == t[a]) b++;
+        for (int c = 0; c < w; c++) row[c] = NAN;
+        for (size_t k = a; k < b; k++) {
+            if (!isfinite(s[k]) || !isfinite(T[k])) continue;
+            long c = (long)((s[k] - smin) * sx);
+            if (c < 0) c = 0;
+            if (c >= w) c = w - 1;
+            float v = (float)T[k];
+            if (!(row[c] >= v)) row[c] = v;
+        }
+        /* interpolate across empty columns between filled ones */
+        int last = -1;
+        for (int c = 0; c < w; c++) {
+            if (isnan(row[c])) continue;
+            if (last >= 0 && c - last > 1) {
+                for (int g = last + 1; g < c; g++) {
+                    float f = (float)(g - last) / (float)(c - last);
+                    row[g] = row[last] + f * (row[c] - row[last]);
+                }
+            }
+            last = c;
+        }
+        /* into its pixel row */
+        if (isfinite(t[a])) {
+            long y = (long)((t[a] - tmin) * ty);
+            if (y < 0) y = 0;
+            if (y >= h) y = h - 1;
+            float *dst = img + (size_t)y * (size_t)w;
+            for (int c = 0; c < w; c++)
+                if (!isnan(row[c]) && !(dst[c] >= row[c])) dst[c] = row[c];
+            filled[y] = 1;
+        }
+        a = b;
+    }
+    /* empty pixel rows copy the nearest filled row */
+    int any = 0;
+    for (int y = 0; y < h; y++) any |= filled[y];
+    if (any) {
+        for (int y = 0; y < h; y++) {
+            if (filled[y]) continue;
+            int lo = y - 1, hi = y + 1;
+            while (lo >= 0 && !filled[lo]) lo--;
+            while (hi < h && !filled[hi]) hi++;
+            int src = lo < 0 ? hi : hi >= h ? lo : (y - lo <= hi - y ? lo : hi);
+            memcpy(img + (size_t)y * (size_t)w, img + (size_t)src * (size_t)w, (size_t)w * sizeof *img);
+        }
+    }
+    free(row);
+    free(filled);
+    return img;
+}
+
+static int plot_tension_surface(report *r, char *err, size_t errlen)
+{
+    char path[PATH_LEN];
+    if (join(path, r->dir, "tension.csv") || !file_exists(path)) return 0;
+    static const char *const want[3] = {"t_s", "s_m", "tension_N"};
+    bd_csv csv;
+    if (bd_csv_read(path, want, 3, &csv, err, errlen)) return BD_REPORT_EINPUT;
+    int rc = 0;
+    size_t n = csv.nrows;
+    const double *t = csv.col[0], *s = csv.col[1], *T = csv.col[2];
+    double smin = INFINITY, smax = -INFINITY, tmin = INFINITY, tmax = -INFINITY;
+    point hi = {0, -INFINITY, 0, 0}, lo = {0, INFINITY, 0, 0};
+    size_t nblocks = 0, first_block = 0;
+    for (size_t i = 0; i < n; i++) {
+        if (i == 0 || t[i] != t[i - 1]) nblocks++;
+        if (nblocks == 1) first_block++;
+        if (!isfinite(t[i]) || !isfinite(s[i]) || !isfinite(T[i])) continue;
+        if (s[i] < smin) smin = s[i];
+        if (s[i] > smax) smax = s[i];
+        if (t[i] < tmin) tmin = t[i];
+        if (t[i] > tmax) tmax = t[i];
+        if (T[i] > hi.value) hi = (point){1, T[i], t[i], s[i]};
+        if (T[i] < lo.value) lo = (point){1, T[i], t[i], s[i]};
+    }
+    if (!hi.known || !(smax > smin)) goto done;  /* nothing to draw */
+    if (!r->tmax.known) r->tmax = hi;
+    if (!r->tmin.known) r->tmin = lo;
+
+    unit u = pick_unit(fmax(fabs(hi.value), fabs(lo.value)), "N");
+    char *cbar = lbl(r), *title = lbl(r), *sub = lbl(r), *mlabel = lbl(r), *nlabel = lbl(r);
+    snprintf(cbar, LABEL_LEN, "Belt tension T [%s]", u.name);
+    set_title(r, title, LABEL_LEN, "belt tension along the belt over time");
+    snprintf(sub, LABEL_LEN,
+             "%zu elements × %zu output times; colour: the largest tension within each pixel",
+             first_block, nblocks);
+    bd_plot_figure f;
+    bd_plot_figure_init(&f, title, FIG_W, FIG_H + 100);
+    f.subtitle = sub;
+    bd_plot_axes *a = &f.panel[0];
+    a->xlabel = "Position along the belt s [m]";
+    a->ylabel = "Time t [s]";
+    bd_plot_map map;
+    memset(&map, 0, sizeof map);
+    map.x0 = smin;
+    map.x1 = smax;
+    map.y0 = tmin;
+    map.y1 = tmax > tmin ? tmax : tmin + 1.0;
+    map.vmin = lo.value / u.scale;
+    map.vmax = hi.value > lo.value ? hi.value / u.scale : lo.value / u.scale + 1.0;
+    map.label = cbar;
+    a->map = &map;
+    /* markers first: they take part in the layout (legend rows none) */
+    char v1[64], v2[64];
+    fmt_num(v1, sizeof v1, hi.value / u.scale);
+    snprintf(mlabel, LABEL_LEN, "max %s %s at s = %.1f m, t = %.2f s", v1, u.name, hi.s, hi.t);
+    fmt_num(v2, sizeof v2, lo.value / u.scale);
+    snprintf(nlabel, LABEL_LEN, "min %s %s at s = %.1f m, t = %.2f s", v2, u.name, lo.s, lo.t);
+    bd_plot_add_marker(a, hi.s, hi.t, mlabel);
+    bd_plot_add_marker(a, lo.s, lo.t, nlabel);
+    int w, h;
+    bd_plot_area_size(&f, 0, &w, &h);
+    if (w < 16) w = 16;
+    if (h < 16) h = 16;
+    float *img = raster_field(t, s, T, n, smin, smax, tmin, map.y1, w, h);
+    if (!img) {
+        set_err(err, errlen, "%s: out of memory", path);
+        rc = BD_REPORT_EOUTPUT;
+        goto done;
+    }
+    /* to the display unit */
+    for (size_t i = 0; i < (size_t)w * (size_t)h; i++) img[i] = (float)((double)img[i] / u.scale);
+    map.v = img;
+    map.w = w;
+    map.h = h;
+    rc = write_plot(r, &f, "tension_surface",
+                    "Belt tension over position s along the belt and time t; the rings mark the "
+                    "highest and the lowest tension.",
+                    err, errlen);
+    free(img);
+done:
+    bd_csv_free(&csv);
+    return rc;
+}
+
+/* ---- envelope: max/min tension along s ---- */
+
+static int plot_envelope(report *r, char *err, size_t errlen)
+{
+    char path[PATH_LEN];
+    if (join(path, r->dir, "envelope.csv") || !file_exists(path)) return 0;
+    static const char *const want[3] = {"s_m", "tension_max_N", "tension_min_N"};
+    bd_csv csv;
+    if (bd_csv_read(path, want, 3, &csv, err, errlen)) return BD_REPORT_EINPUT;
+    int rc = 0;
+    size_t n = csv.nrows;
+    if (n == 0) goto done;
+    double m = fmax(maxabs_of(csv.col[1], n), maxabs_of(csv.col[2], n));
+    if (isfinite(r->rated_N)) m = fmax(m, r->rated_N / r->safety_factor);
+    unit u = pick_unit(m, "N");
+    double *x = csv.col[0];
+    double *hi = own(r, scaled(csv.col[1], n, u.scale));
+    double *lo = own(r, scaled(csv.col[2], n, u.scale));
+    if (!hi || !lo) {
+        set_err(err, errlen, "out of memory");
+        rc = BD_REPORT_EOUTPUT;
+        goto done;
+    }
+    char *title = lbl(r), *ylabel = lbl(r), *allow = lbl(r), *sag = lbl(r), *mlabel = lbl(r);
+    set_title(r, title, LABEL_LEN, "tension envelope along the belt");
+    snprintf(ylabel, LABEL_LEN, "Belt tension T [%s]", u.name);
+    bd_plot_figure f;
+    bd_plot_figure_init(&f, title, FIG_W, FIG_H);
+    f.subtitle = "highest and lowest tension reached at each position during the run";
+    bd_plot_axes *a = &f.panel[0];
+    a->xlabel = "Position along the belt s [m]";
+    a->ylabel = ylabel;
+    a->include_zero = 1;
+    a->has_band = 1;
+    a->band = (bd_plot_band){x, lo, hi, n, "range during the run", {0.0, 0.447, 0.698}, 0.15};
+    int k = bd_plot_add_series(a, x, hi, n, "maximum tension", (bd_rgb){0.80, 0.15, 0.10});
+    a->series[k].width = 2.5;
+    k = bd_plot_add_series(a, x, lo, n, "minimum tension", (bd_rgb){0.0, 0.35, 0.70});
+    a->series[k].width = 2.5;
+    char v[64], v2[64];
+    if (isfinite(r->rated_N)) {
+        double allow_N = r->rated_N / r->safety_factor;
+        fmt_num(v, sizeof v, allow_N / u.scale);
+        fmt_num(v2, sizeof v2, r->rated_N / u.scale);
+        snprintf(allow, LABEL_LEN, "allowable %s %s = rated %s %s / safety factor %.3g%s", v,
+                 u.name, v2, u.name, r->safety_factor, r->sf_default ? " (default)" : "");
+        bd_plot_add_hline(a, allow_N / u.scale, allow, (bd_rgb){0.80, 0.0, 0.0}, 1);
+    }
+    if (isfinite(r->t_min_sag_N)) {
+        fmt_num(v, sizeof v, r->t_min_sag_N / u.scale);
+        snprintf(sag, LABEL_LEN, "minimum tension for the sag limit %s %s", v, u.name);
+        bd_plot_add_hline(a, r->t_min_sag_N / u.scale, sag, (bd_rgb){0.0, 0.55, 0.30}, 1);
+    }
+    /* mark the peak */
+    size_t im = 0;
+    for (size_t i = 1; i < n; i++)
+        if (hi[i] > hi[im] || !isfinite(hi[im])) im = i;
+    if (isfinite(hi[im])) {
+        fmt_num(v, sizeof v, hi[im]);
+        snprintf(mlabel, LABEL_LEN, "peak %s %s at s = %.1f m", v, u.name, x[im]);
+        bd_plot_add_marker(a, x[im], hi[im], mlabel);
+    }
+    rc = write_plot(r, &f, "envelope",
+                    "Highest and lowest belt tension at each position over the run, with the "
+                    "allowable tension and the minimum tension for sag where known.",
+                    err, errlen);
+done:
+    bd_csv_free(&csv);
+    return rc;
+}
+
+/* ---- history.csv plots ---- */
+
+typedef struct group {
+    int n;
+    char name[MAX_GROUP][64];
+    int col[MAX_GROUP][2];   /* column indices, -1 absent */
+} group;
+
+/* columns NAME<suffix_a> and NAME<suffix_b> (b optional) by name */
+static void find_group(const bd_csv *h, const char *suffix_a, const char *suffix_b, group *g)
+{
+    memset(g, 0, sizeof *g);
+    for (int j = 0; j < h->ncols && g->n < MAX_GROUP; j++) {
+        const char *nm = h->names[j];
+        const char *sfx = ends_with(nm, suffix_a) ? suffix_a
+                          : (suffix_b && ends_with(nm, suffix_b)) ? suffix_b : NULL;
+        if (!sfx) continue;
+        size_t len = strlen(nm) - strlen(sfx);
+        char base[64];
+        snprintf(base, sizeof base, "%.*s", (int)len, nm);
+        int which = sfx == suffix_a ? 0 : 1, i;
+        for (i = 0; i < g->n; i++)
+            if (strcmp(g->name[i], base) == 0) break;
+        if (i == g->n) {
+            snprintf(g->name[i], sizeof g->name[i], "%s", base);
+            g->col[i][0] = g->col[i][1] = -1;
+            g->n++;
+        }
+        g->col[i][which] = j;
+    }
+}
+
+/* one panel of NAME columns, scaled to a readable unit */
+static int fill_panel(report *r, bd_plot_axes *a, const bd_csv *h, const group *g, int which,
+                      const char *quantity, const char *base_unit, char *ylabel, size_t ylen,
+                      int with_range, unit *uout)
+{
+    const double *t = h->col[0];
+    double m = 0.0;
+    int any = 0;
+    for (int i = 0; i < g->n; i++)
+        if (g->col[i][which] >= 0) {
+            m = fmax(m, maxabs_of(h->col[g->col[i][which]], h->nrows));
+            any = 1;
+        }
+    if (!any) return 0;
+    unit u = pick_unit(m, base_unit);
+    if (uout) *uout = u;
+    snprintf(ylabel, ylen, "%s [%s]", quantity, u.name);
+    a->ylabel = ylabel;
+    for (int i = 0, k = 0; i < g->n; i++) {
+        int c = g->col[i][which];
+        if (c < 0) continue;
+        double *y = own(r, scaled(h->col[c], h->nrows, u.scale));
+        if (!y) return -1;
+        char *label = lbl(r);
+        if (with_range) {
+            /* the name and the range of values */
+            double lo = INFINITY, hi = -INFINITY;
+            for (size_t q = 0; q < h->nrows; q++)
+                if (isfinite(y[q])) {
+                    lo = fmin(lo, y[q]);
+                    hi = fmax(hi, y[q]);
+                }
+            char a1[64], a2[64];
+            fmt_num(a1, sizeof a1, lo);
+            fmt_num(a2, sizeof a2, hi);
+            snprintf(label, LABEL_LEN, "%s (%s … %s %s)", g->name[i], a1, a2, u.name);
+        } else {
+            snprintf(label, LABEL_LEN, "%s", g->name[i]);
+        }
+        bd_plot_add_series(a, t, y, h->nrows, label, bd_plot_palette(k++));
+    }
+    return 1;
+}
+
+/* mark the largest value (or largest magnitude) over a panel's series */
+static void mark_extreme(report *r, bd_plot_axes *a, const char *what, const char *unit_name,
+                         int magnitude)
+{
+    int bs = -1;
+    size_t bi = 0;
+    double best = -INFINITY;
+    for (int i = 0; i < a->nseries; i++) {
+        const bd_plot_series *s = &a->series[i];
+        for (size_t k = 0; k < s->n; k++) {
+            double v = magnitude ? fabs(s->y[k]) : s->y[k];
+            if (isfinite(v) && isfinite(s->x[k]) && v > best) {
+                best = v;
+                bs = i;
+                bi = k;
+            }
+        }
+    }
+    if (bs < 0) return;
+    const bd_plot_series *s = &a->series[bs];
+    char num[64], *label = lbl(r);
+    fmt_num(num, sizeof num, s->y[bi]);
+    if (a->nseries > 1)
+        snprintf(label, LABEL_LEN, "%s %s %s at t = %.3g s (%.40s)", what, num, unit_name, s->x[bi],
+                 s->label ? s->label : "");
+    else
+        snprintf(label, LABEL_LEN, "%s %s %s at t = %.3g s", what, num, unit_name, s->x[bi]);
+    bd_plot_add_marker(a, s->x[bi], s->y[bi], label);
+}
+
+static int plot_history(report *r, char *err, size_t errlen)
+{
+    char path[PATH_LEN];
+    if (join(path, r->dir, "history.csv") || !file_exists(path)) return 0;
+    bd_csv h;
+    if (bd_csv_read(path, NULL, 0, &h, err, errlen)) return BD_REPORT_EINPUT;
+    int rc = 0;
+    if (h.ncols < 1 || strcmp(h.names[0], "t_s") != 0) {
+        set_err(err, errlen, "%s:1: the first column is not t_s", path);
+        rc = BD_REPORT_EINPUT;
+        goto done;
+    }
+    if (h.nrows == 0) goto done;
+    const double *t = h.col[0];
+    char *title[4], *yl[6];
+    for (int i = 0; i < 4; i++) title[i] = lbl(r);
+    for (int i = 0; i < 6; i++) yl[i] = lbl(r);
+    group g;
+    unit u[5];
+    memset(u, 0, sizeof u);
+
+    /* probes: tension and speed */
+    find_group(&h, ".tension_N", ".speed_mps", &g);
+    if (g.n > 0) {
+        bd_plot_figure f;
+        set_title(r, title[0], LABEL_LEN, "belt tension at the probes");
+        bd_plot_figure_init(&f, title[0], FIG_W, FIG_H + 100);
+        f.npanels = 2;
+        f.share_x = 1;
+        f.panel[1].xlabel = "Time t [s]";
+        if (fill_panel(r, &f.panel[0], &h, &g, 0, "Belt tension T", "N", yl[0], LABEL_LEN, 0, &u[0]) < 0 ||
+            fill_panel(r, &f.panel[1], &h, &g, 1, "Belt speed v", "m/s", yl[1], LABEL_LEN, 0, &u[1]) < 0)
+            goto oom;
+        f.panel[0].include_zero = 1;
+        mark_extreme(r, &f.panel[0], "peak", u[0].name, 0);
+        if (f.panel[1].nseries == 0) f.npanels = 1, f.panel[0].xlabel = "Time t [s]";
+        if ((rc = write_plot(r, &f, "probes",
+                             "Belt tension and speed against time at the probes of the model.", err,
+                             errlen)))
+            goto done;
+    }
+
+    /* drives: speed and torque */
+    find_group(&h, ".omega_rad_s", ".torque_Nm", &g);
+    if (g.n > 0) {
+        bd_plot_figure f;
+        set_title(r, title[1], LABEL_LEN, "drive pulleys");
+        bd_plot_figure_init(&f, title[1], FIG_W, FIG_H + 100);
+        f.npanels = 2;
+        f.share_x = 1;
+        if (fill_panel(r, &f.panel[0], &h, &g, 0, "Pulley speed ω", "rad/s", yl[2], LABEL_LEN, 0, &u[2]) < 0 ||
+            fill_panel(r, &f.panel[1], &h, &g, 1, "Drive torque M", "N·m", yl[3], LABEL_LEN, 0, &u[3]) < 0)
+            goto oom;
+        mark_extreme(r, &f.panel[1], "peak", u[3].name, 1);
+        if (f.panel[0].nseries == 0) f.panel[0] = f.panel[1], memset(&f.panel[1], 0, sizeof f.panel[1]);
+        if (f.panel[1].nseries == 0) f.npanels = 1;
+        f.panel[f.npanels - 1].xlabel = "Time t [s]";
+        f.panel[f.npanels - 1].include_zero = 1;
+        if ((rc = write_plot(r, &f, "drives",
+                             "Angular speed and torque of the drive pulleys against time.", err,
+                             errlen)))
+            goto done;
+    }
+
+    /* takeups: travel */
+    find_group(&h, ".travel_m", NULL, &g);
+    if (g.n > 0) {
+        bd_plot_figure f;
+        set_title(r, title[2], LABEL_LEN, "takeup travel");
+        bd_plot_figure_init(&f, title[2], FIG_W, FIG_H);
+        f.subtitle = "carriage displacement along its axis from the initial position";
+        f.panel[0].xlabel = "Time t [s]";
+        f.panel[0].include_zero = 1;
+        if (fill_panel(r, &f.panel[0], &h, &g, 0, "Takeup travel x", "m", yl[4], LABEL_LEN, 1, &u[4]) < 0)
+            goto oom;
+        mark_extreme(r, &f.panel[0], "largest", u[4].name, 1);
+        if ((rc = write_plot(r, &f, "takeups",
+                             "Takeup carriage travel against time (legend: lowest … highest).", err,
+                             errlen)))
+            goto done;
+    }
+
+    /* energy: changes from t = 0 and the balance error */
+    int ck = bd_csv_find(&h, "kinetic_J"), cp = bd_csv_find(&h, "potential_J"),
+        cd = bd_csv_find(&h, "dissipated_J"), ci = bd_csv_find(&h, "input_J");
+    if (ck >= 0 && cp >= 0 && cd >= 0 && ci >= 0) {
+        size_t n = h.nrows;
+        const double *K = h.col[ck], *P = h.col[cp], *D = h.col[cd], *I = h.col[ci];
+        double E0 = K[0] + P[0] + D[0] - I[0];
+        double ref = fmax(fabs(E0), 1.0);
+        for (size_t i = 0; i < n; i++) {
+            if (isfinite(I[i])) ref = fmax(ref, fabs(I[i]));
+            if (isfinite(K[i])) ref = fmax(ref, fabs(K[i]));
+        }
+        double *dv[5], m = 0.0;
+        for (int q = 0; q < 5; q++) {
+            dv[q] = own(r, malloc(n * sizeof(double)));
+            if (!dv[q]) goto oom;
+        }
+        double *rel = own(r, malloc(n * sizeof(double)));
+        if (!rel) goto oom;
+        for (size_t i = 0; i < n; i++) {
+            dv[0][i] = K[i] - K[0];
+            dv[1][i] = P[i] - P[0];
+            dv[2][i] = D[i] - D[0];
+            dv[3][i] = I[i] - I[0];
+            dv[4][i] = K[i] + P[i] + D[i] - I[i] - E0;
+            rel[i] = 100.0 * dv[4][i] / ref;
+            for (int q = 0; q < 5; q++)
+                if (isfinite(dv[q][i])) m = fmax(m, fabs(dv[q][i]));
+        }
+        unit ue = pick_unit(m, "J");
+        for (int q = 0; q < 5; q++)
+            for (size_t i = 0; i < n; i++) dv[q][i] /= ue.scale;
+        static const char *names[5] = {"kinetic", "potential (gravity, elastic)",
+                                       "dissipated", "input (drive work)",
+                                       "balance: kinetic + potential + dissipated − input"};
+        bd_plot_figure f;
+        set_title(r, title[3], LABEL_LEN, "energy balance");
+        bd_plot_figure_init(&f, title[3], FIG_W, FIG_H + 100);
+        f.subtitle = "energies as changes from t = 0; the balance should stay at zero";
+        f.npanels = 2;
+        f.share_x = 1;
+        snprintf(yl[5], LABEL_LEN, "Energy change ΔE [%s]", ue.name);
+        f.panel[0].ylabel = yl[5];
+        f.panel[0].include_zero = 1;
+        for (int q = 0; q < 5; q++) {
+            bd_rgb c = q == 4 ? (bd_rgb){0.0, 0.0, 0.0} : bd_plot_palette(q);
+            int k = bd_plot_add_series(&f.panel[0], t, dv[q], n, names[q], c);
+            if (q == 4) f.panel[0].series[k].dashed = 1;
+        }
+        f.panel[1].ylabel = "Balance error [%]";
+        f.panel[1].xlabel = "Time t [s]";
+        f.panel[1].include_zero = 1;
+        char *relab = lbl(r);
+        char rv[64];
+        fmt_num(rv, sizeof rv, ref / ue.scale);
+        snprintf(relab, LABEL_LEN, "balance error relative to %s %s (largest of |E0|, input, kinetic)",
+                 rv, ue.name);
+        bd_plot_add_series(&f.panel[1], t, rel, n, relab, (bd_rgb){0.8, 0.0, 0.0});
+        if ((rc = write_plot(r, &f, "energy",
+                             "Kinetic, potential, dissipated and input energy as changes from the "
+                             "start, and the energy balance error.",
+                             err, errlen)))
+            goto done;
+    }
+    goto done;
+oom:
+    set_err(err, errlen, "out of memory");
+    rc = BD_REPORT_EOUTPUT;
+done:
+    bd_csv_free(&h);
+    return rc;
+}
+
+/* ---- report.html ---- */
+
+static const char *css =
+    "body{font-family:'DejaVu Sans',Arial,sans-serif;margin:0;background:#f4f5f7;color:#1a1a1a}"
+    "main{max-width:1240px;margin:0 auto;padding:16px 24px 48px}"
+    "h1{font-size:26px;margin:18px 0 2px}h2{font-size:20px;margin:28px 0 8px;"
+    "border-bottom:2px solid #d0d4da;padding-bottom:4px}"
+    ".sub{color:#555;margin:0 0 14px}"
+    ".cards{display:flex;flex-wrap:wrap;gap:12px}"
+    ".card{background:#fff;border:1px solid #d0d4da;border-left:6px solid #0072b2;"
+    "border-radius:6px;padding:10px 14px;min-width:210px;flex:1}"
+    ".card.bad{border-left-color:#c00000}.card.ok{border-left-color:#009e73}"
+    ".card .k{font-size:13px;color:#555;text-transform:uppercase;letter-spacing:.04em}"
+    ".card .v{font-size:28px;font-weight:bold;margin:2px 0}"
+    ".card .d{font-size:14px;color:#333}"
+    "table{border-collapse:collapse;background:#fff;margin:6px 0 12px;font-size:14px}"
+    "th,td{border:1px solid #d0d4da;padding:4px 10px;text-align:left}"
+    "td.n{text-align:right;font-variant-numeric:tabular-nums}"
+    "th{background:#e9ecf0}"
+    ".warn{background:#fff4e5;border:1px solid #e69f00;border-radius:6px;padding:8px 16px 8px 34px}"
+    ".warn li{margin:4px 0}.none{color:#555}"
+    "figure{background:#fff;border:1px solid #d0d4da;border-radius:6px;margin:14px 0;padding:8px}"
+    "figure img{width:100%;height:auto;display:block}"
+    "figcaption{font-size:14px;color:#333;padding:6px 4px 0}"
+    "nav a{margin-right:14px}";
+
+/* a key like "tension_max_N" as "tension max [N]" */
+static void key_label(char *buf, size_t len, const char *key)
+{
+    static const struct {
+        const char *sfx, *unit;
+    } units[] = {{"_rad_s", "rad/s"}, {"_mps", "m/s"}, {"_Nm", "N·m"}, {"_kW", "kW"},
+                 {"_N", "N"},         {"_J", "J"},     {"_s", "s"},    {"_m", "m"},
+                 {"_rel", "relative"}};
+    const char *unit_name = NULL;
+    size_t base = strlen(key);
+    for (size_t i = 0; i < sizeof units / sizeof units[0]; i++)
+        if (ends_with(key, units[i].sfx)) {
+            unit_name = units[i].unit;
+            base -= strlen(units[i].sfx);
+            break;
+        }
+    char tmp[128];
+    snprintf(tmp, sizeof tmp, "%.*s", (int)base, key);
+    for (char *p = tmp; *p; p++)
+        if (*p == '_') *p = ' ';
+    if (unit_name) snprintf(buf, len, "%s [%s]", tmp, unit_name);
+    else snprintf(buf, len, "%s", tmp);
+}
+
+static void html_value(strbuf *b, const cJSON *v)
+{
+    char num[64];
+    if (cJSON_IsNumber(v)) {
+        fmt_num(num, sizeof num, v->valuedouble);
+        sb_puts(b, num);
+    } else if (cJSON_IsString(v)) {
+        sb_html(b, v->valuestring);
+    } else if (cJSON_IsBool(v)) {
+        sb_puts(b, cJSON_IsTrue(v) ? "yes" : "no");
+    } else if (cJSON_IsNull(v)) {
+        sb_puts(b, "—");
+    } else {
+        char *s = cJSON_PrintUnformatted(v);
+        sb_html(b, s ? s : "");
+        free(s);
+    }
+}
+
+static int is_scalar(const cJSON *v) { return !cJSON_IsObject(v) && !cJSON_IsArray(v); }
+
+/* a table of rows (objects) by name or index: one column per key seen */
+static void html_row_table(strbuf *b, const cJSON *rows, const char *first)
+{
+    const char *keys[32];
+    int nk = 0;
+    const cJSON *row, *v;
+    cJSON_ArrayForEach(row, rows) {
+        cJSON_ArrayForEach(v, row) {
+            int k;
+            if (!v->string || !is_scalar(v)) continue;
+            for (k = 0; k < nk; k++)
+                if (strcmp(keys[k], v->string) == 0) break;
+            if (k == nk && nk < 32) keys[nk++] = v->string;
+        }
+    }
+    sb_puts(b, "<table><tr>");
+    if (first) {
+        sb_puts(b, "<th>");
+        sb_html(b, first);
+        sb_puts(b, "</th>");
+    }
+    for (int k = 0; k < nk; k++) {
+        char lab[160];
+        key_label(lab, sizeof lab, keys[k]);
+        sb_puts(b, "<th>");
+        sb_html(b, lab);
+        sb_puts(b, "</th>");
+    }
+    sb_puts(b, "</tr>\n");
+    cJSON_ArrayForEach(row, rows) {
+        sb_puts(b, "<tr>");
+        if (first) {
+            sb_puts(b, "<th>");
+            sb_html(b, row->string ? row->string : "");
+            sb_puts(b, "</th>");
+        }
+        for (int k = 0; k < nk; k++) {
+            const cJSON *c = cJSON_GetObjectItemCaseSensitive(row, keys[k]);
+            sb_puts(b, cJSON_IsNumber(c) ? "<td class=n>" : "<td>");
+            if (c) html_value(b, c);
+            sb_puts(b, "</td>");
+        }
+        sb_puts(b, "</tr>\n");
+    }
+    sb_puts(b, "</table>\n");
+}
+
+/* an object as tables: scalars (and objects of scalars, prefixed) as
+ * name/value rows; objects of objects and arrays of objects as their own
+ * tables; lists of strings as lists. skip: keys left out */
+static void html_object(strbuf *b, const cJSON *obj, const char *const *skip, int nskip)
+{
+    const cJSON *v;
+    int open = 0;
+    cJSON_ArrayForEach(v, obj) {
+        int s = 0;
+        for (int i = 0; i < nskip; i++)
+            if (v->string && strcmp(v->string, skip[i]) == 0) s = 1;
+        if (s) continue;
+        const cJSON *inner[16];
+        int ni = 0;
+        if (is_scalar(v)) {
+            inner[ni++] = v;
+        } else if (cJSON_IsObject(v)) {
+            const cJSON *c;
+            int all = 1;
+            cJSON_ArrayForEach(c, v) if (!is_scalar(c)) all = 0;
+            if (!all) continue;
+            cJSON_ArrayForEach(c, v) if (ni < 16) inner[ni++] = c;
+        } else {
+            continue;
+        }
+        for (int i = 0; i < ni; i++) {
+            char lab[160], full[256];
+            if (!open) {
+                sb_puts(b, "<table><tr><th>quantity</th><th>value</th></tr>\n");
+                open = 1;
+            }
+            key_label(lab, sizeof lab, inner[i]->string ? inner[i]->string : "");
+            if (inner[i] != v) snprintf(full, sizeof full, "%s: %s", v->string, lab);
+            else snprintf(full, sizeof full, "%s", lab);
+            sb_puts(b, "<tr><th>");
+            sb_html(b, full);
+            sb_puts(b, cJSON_IsNumber(inner[i]) ? "</th><td class=n>" : "</th><td>");
+            html_value(b, inner[i]);
+            sb_puts(b, "</td></tr>\n");
+        }
+    }
+    if (open) sb_puts(b, "</table>\n");
+    /* nested tables */
+    cJSON_ArrayForEach(v, obj) {
+        int s = 0;
+        for (int i = 0; i < nskip; i++)
+            if (v->string && strcmp(v->string, skip[i]) == 0) s = 1;
+        if (s || is_scalar(v)) continue;
+        const cJSON *c = v->child;
+        if (!c) continue;
+        if (cJSON_IsObject(v) && cJSON_IsObject(c)) {
+            sb_puts(b, "<h3>");
+            sb_html(b, v->string);
+            sb_puts(b, "</h3>\n");
+            html_row_table(b, v, v->string);
+        } else if (cJSON_IsArray(v) && cJSON_IsObject(c)) {
+            sb_puts(b, "<h3>");
+            sb_html(b, v->string);
+            sb_puts(b, "</h3>\n");
+            html_row_table(b, v, NULL);
+        } else if (cJSON_IsArray(v)) {
+            sb_puts(b, "<h3>");
+            sb_html(b, v->string);
+            sb_puts(b, "</h3><ul>\n");
+            cJSON_ArrayForEach(c, v) {
+                sb_puts(b, "<li>");
+                html_value(b, c);
+                sb_puts(b, "</li>\n");
+            }
+            sb_puts(b, "</ul>\n");
+        }
+    }
+}
+
+static void sb_base64(strbuf *b, const unsigned char *d, size_t n)
+{
+    static const char tab[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    sb_grow(b, (n + 2) / 3 * 4);
+    if (b->oom) return;
+    char *o = b->p + b->n;
+    size_t i = 0;
+    for (; i + 2 < n; i += 3) {
+        unsigned v = (unsigned)d[i] << 16 | (unsigned)d[i + 1] << 8 | d[i + 2];
+        *o++ = tab[v >> 18 & 63];
+        *o++ = tab[v >> 12 & 63];
+        *o++ = tab[v >> 6 & 63];
+        *o++ = tab[v & 63];
+    }
+    if (i < n) {
+        unsigned v = (unsigned)d[i] << 16 | (i + 1 < n ? (unsigned)d[i + 1] << 8 : 0u);
+        *o++ = tab[v >> 18 & 63];
+        *o++ = tab[v >> 12 & 63];
+        *o++ = i + 1 < n ? tab[v >> 6 & 63] : '=';
+        *o++ = '=';
+    }
+    b->n = (size_t)(o - b->p);
+    b->p[b->n] = '\0';
+}
+
+static int embed_png(strbuf *b, const char *path)
+{
+    FILE *fp = fopen(path, "rb");
+    if (!fp) return -1;
+    fseek(fp, 0, SEEK_END);
+    long len = ftell(fp);
+    fseek(fp, 0, SEEK_SET);
+    unsigned char *d = len > 0 ? malloc((size_t)len) : NULL;
+    int rc = -1;
+    if (d && fread(d, 1, (size_t)len, fp) == (size_t)len) {
+        sb_puts(b, "data:image/png;base64,");
+        sb_base64(b, d, (size_t)len);
+        rc = 0;
+    }
+    free(d);
+    fclose(fp);
+    return rc;
+}
+
+/* headline card */
+static void card(strbuf *b, const char *cls, const char *key, const char *value, const char *detail)
+{
+    sb_printf(b, "<div class=\"card%s%s\"><div class=k>", cls ? " " : "", cls ? cls : "");
+    sb_html(b, key);
+    sb_puts(b, "</div><div class=v>");
+    sb_html(b, value);
+    sb_puts(b, "</div><div class=d>");
+    sb_html(b, detail);
+    sb_puts(b, "</div></div>\n");
+}
+
+/* lowest and highest of a history column, or NaN */
+static void history_range(const char *dir, const char *column, double *lo, double *hi)
+{
+    char path[PATH_LEN], err[256];
+    const char *want[1] = {column};
+    bd_csv c;
+    *lo = *hi = NAN;
+    if (join(path, dir, "history.csv") || bd_csv_read(path, want, 1, &c, err, sizeof err)) return;
+    for (size_t i = 0; i < c.nrows; i++) {
+        double v = c.col[0][i];
+        if (!isfinite(v)) continue;
+        if (!(v >= *lo)) *lo = v;
+        if (!(v <= *hi)) *hi = v;
+    }
+    bd_csv_free(&c);
+}
+
+static void headline(report *r, strbuf *b)
+{
+    char v[128], d[LABEL_LEN], lab[160];
+    sb_puts(b, "<div class=cards>\n");
+    double allow = isfinite(r->rated_N) ? r->rated_N / r->safety_factor : NAN;
+    if (r->tmax.known) {
+        unit u = pick_unit(fabs(r->tmax.value), "N");
+        char num[64];
+        fmt_num(num, sizeof num, r->tmax.value / u.scale);
+        snprintf(v, sizeof v, "%s %s", num, u.name);
+        int n = snprintf(d, sizeof d, "at t = %.3g s, s = %.1f m", r->tmax.t, r->tmax.s);
+        if (isfinite(allow) && n > 0 && (size_t)n < sizeof d)
+            snprintf(d + n, sizeof d - (size_t)n, "; %.0f %% of allowable (rated / %.3g%s)",
+                     100.0 * r->tmax.value / allow, r->safety_factor,
+                     r->sf_default ? ", default" : "");
+        card(b, isfinite(allow) ? (r->tmax.value > allow ? "bad" : "ok") : NULL,
+             "peak belt tension", v, d);
+    }
+    if (r->tmin.known) {
+        unit u = pick_unit(fabs(r->tmin.value), "N");
+        char num[64];
+        fmt_num(num, sizeof num, r->tmin.value / u.scale);
+        snprintf(v, sizeof v, "%s %s", num, u.name);
+        int n = snprintf(d, sizeof d, "at t = %.3g s, s = %.1f m", r->tmin.t, r->tmin.s);
+        int bad = r->tmin.value <= 0.0;
+        if (isfinite(r->t_min_sag_N) && n > 0 && (size_t)n < sizeof d) {
+            char sg[64];
+            unit us = pick_unit(r->t_min_sag_N, "N");
+            fmt_num(sg, sizeof sg, r->t_min_sag_N / us.scale);
+            snprintf(d + n, sizeof d - (size_t)n, "; sag limit needs %s %s", sg, us.name);
+            if (r->tmin.value < r->t_min_sag_N) bad = 1;
+        }
+        card(b, bad ? "bad" : NULL, "lowest belt tension", v, d);
+    }
+    /* takeups and drives from summary.pulleys, else from history.csv */
+    const cJSON *pulleys = cJSON_GetObjectItemCaseSensitive(r->summary, "pulleys");
+    const cJSON *p;
+    cJSON_ArrayForEach(p, pulleys) {
+        double lo = json_num(p, "travel_min_m"), hi = json_num(p, "travel_max_m");
+        if (isfinite(lo) || isfinite(hi)) {
+            char a1[64], a2[64], a3[64];
+            fmt_num(a1, sizeof a1, lo);
+            fmt_num(a2, sizeof a2, hi);
+            fmt_num(a3, sizeof a3, hi - lo);
+            snprintf(v, sizeof v, "%s m", a3);
+            snprintf(d, sizeof d, "%s: from %s m to %s m", p->string, a1, a2);
+            card(b, NULL, "takeup travel range", v, d);
+        }
+    }
+    cJSON_ArrayForEach(p, pulleys) {
+        double tq = json_num(p, "torque_max_Nm");
+        if (isfinite(tq)) {
+            unit u = pick_unit(fabs(tq), "N·m");
+            char num[64];
+            fmt_num(num, sizeof num, tq / u.scale);
+            snprintf(v, sizeof v, "%s %s", num, u.name);
+            double w = json_num(p, "omega_final_rad_s");
+            if (isfinite(w)) snprintf(d, sizeof d, "%s; final speed %.4g rad/s", p->string, w);
+            else snprintf(d, sizeof d, "%s", p->string);
+            card(b, NULL, "drive peak torque", v, d);
+        }
+    }
+    if (!cJSON_IsObject(pulleys) || !pulleys->child) {
+        /* no pulley summary: take the ranges from history.csv */
+        char path[PATH_LEN];
+        bd_csv hd;
+        char err[256];
+        if (!join(path, r->dir, "history.csv") && file_exists(path) &&
+            !bd_csv_read_header(path, &hd, err, sizeof err)) {
+            for (int j = 0; j < hd.ncols; j++) {
+                double lo, hi;
+                const char *nm = hd.names[j];
+                if (ends_with(nm, ".travel_m")) {
+                    history_range(r->dir, nm, &lo, &hi);
+                    char a1[64], a2[64], a3[64];
+                    fmt_num(a1, sizeof a1, lo);
+                    fmt_num(a2, sizeof a2, hi);
+                    fmt_num(a3, sizeof a3, hi - lo);
+                    snprintf(v, sizeof v, "%s m", a3);
+                    snprintf(d, sizeof d, "%.*s: from %s m to %s m",
+                             (int)(strlen(nm) - strlen(".travel_m")), nm, a1, a2);
+                    card(b, NULL, "takeup travel range", v, d);
+                } else if (ends_with(nm, ".torque_Nm")) {
+                    history_range(r->dir, nm, &lo, &hi);
+                    double tq = fabs(hi) >= fabs(lo) ? hi : lo;
+                    unit u = pick_unit(fabs(tq), "N·m");
+                    char num[64];
+                    fmt_num(num, sizeof num, tq / u.scale);
+                    snprintf(v, sizeof v, "%s %s", num, u.name);
+                    snprintf(d, sizeof d, "%.*s", (int)(strlen(nm) - strlen(".torque_Nm")), nm);
+                    card(b, NULL, "drive peak torque", v, d);
+                }
+            }
+            bd_csv_free(&hd);
+        }
+    }
+    const cJSON *energy = cJSON_GetObjectItemCaseSensitive(r->summary, "energy");
+    double be = json_num(energy, "balance_error_rel");
+    if (isfinite(be)) {
+        snprintf(v, sizeof v, "%.3g %%", 100.0 * be);
+        card(b, be > 0.01 ? "bad" : "ok", "energy balance error", v,
+             "largest over the run, relative");
+    }
+    const cJSON *warn = cJSON_GetObjectItemCaseSensitive(r->summary, "warnings");
+    int nw = cJSON_GetArraySize(warn);
+    snprintf(v, sizeof v, "%d", nw);
+    snprintf(lab, sizeof lab, "%s", nw ? "see the list below" : "none");
+    card(b, nw ? "bad" : "ok", "warnings", v, lab);
+    sb_puts(b, "</div>\n");
+}
+
+static int write_html(report *r, char *err, size_t errlen)
+{
+    strbuf b = {0};
+    sb_puts(&b, "<!DOCTYPE html>\n<html lang=en><head><meta charset=utf-8>\n"
+                "<meta name=viewport content=\"width=device-width, initial-scale=1\">\n<title>");
+    sb_html(&b, r->model);
+    sb_puts(&b, " — beltdyn report</title>\n<style>");
+    sb_puts(&b, css);
+    sb_puts(&b, "</style></head><body><main>\n<h1>");
+    sb_html(&b, r->model);
+    sb_puts(&b, "</h1>\n<p class=sub>beltdyn transient run");
+    double dur = json_num(r->summary, "duration_s"), len = json_num(r->summary, "belt_length_m");
+    if (isfinite(dur)) sb_printf(&b, " · %.4g s simulated", dur);
+    if (isfinite(len)) sb_printf(&b, " · belt length %.1f m", len);
+    double nodes = json_num(r->summary, "nodes");
+    if (isfinite(nodes)) sb_printf(&b, " · %.0f nodes", nodes);
+    sb_puts(&b, "</p>\n<nav>");
+    sb_puts(&b, "<a href=\"#plots\">plots</a><a href=\"#summary\">summary</a>");
+    const cJSON *stat = cJSON_GetObjectItemCaseSensitive(r->summary, "static");
+    if (cJSON_IsObject(stat)) sb_puts(&b, "<a href=\"#static\">static design</a>");
+    sb_puts(&b, "</nav>\n");
+
+    headline(r, &b);
+
+    /* warnings */
+    const cJSON *warn = cJSON_GetObjectItemCaseSensitive(r->summary, "warnings");
+    sb_puts(&b, "<h2 id=warnings>Warnings</h2>\n");
+    if (cJSON_GetArraySize(warn) > 0) {
+        const cJSON *w;
+        sb_puts(&b, "<ul class=warn>\n");
+        cJSON_ArrayForEach(w, warn) {
+            sb_puts(&b, "<li>");
+            html_value(&b, w);
+            sb_puts(&b, "</li>\n");
+        }
+        sb_puts(&b, "</ul>\n");
+    } else {
+        sb_puts(&b, "<p class=none>No warnings.</p>\n");
+    }
+
+    /* plots */
+    sb_puts(&b, "<h2 id=plots>Plots</h2>\n");
+    if (r->nplots == 0) sb_puts(&b, "<p class=none>No data to plot in this run directory.</p>\n");
+    for (int i = 0; i < r->nplots; i++) {
+        char png[PATH_LEN];
+        if (snprintf(png, sizeof png, "%s/%s.png", r->plots, r->plot[i].name) >= (int)sizeof png)
+            continue;
+        sb_printf(&b, "<figure id=\"%s\"><img alt=\"%s\" src=\"", r->plot[i].name, r->plot[i].name);
+        if (embed_png(&b, png)) {
+            free(b.p);
+            set_err(err, errlen, "%s: cannot read back", png);
+            return BD_REPORT_EOUTPUT;
+        }
+        sb_puts(&b, "\"><figcaption>");
+        sb_html(&b, r->plot[i].caption);
+        sb_printf(&b, " (also plots/%s.svg)</figcaption></figure>\n", r->plot[i].name);
+    }
+
+    /* summary */
+    sb_puts(&b, "<h2 id=summary>Run summary</h2>\n");
+    static const char *const skip[3] = {"warnings", "static", "model"};
+    html_object(&b, r->summary, skip, 3);
+
+    /* static design table */
+    if (cJSON_IsObject(stat)) {
+        sb_puts(&b, "<h2 id=static>Static design calculation</h2>\n");
+        html_object(&b, stat, NULL, 0);
+    }
+    sb_puts(&b, "</main></body></html>\n");
+    if (b.oom) {
+        free(b.p);
+        set_err(err, errlen, "report.html: out of memory");
+        return BD_REPORT_EOUTPUT;
+    }
+
+    /* to a temporary name, then renamed */
+    char path[PATH_LEN], tmp[PATH_LEN];
+    if (join(path, r->dir, "report.html") || join(tmp, r->dir, "report.html.tmp")) {
+        free(b.p);
+        set_err(err, errlen, "%s: path too long", r->dir);
+        return BD_REPORT_EOUTPUT;
+    }
+    FILE *fp = fopen(tmp, "wb");
+    int ok = fp && fwrite(b.p, 1, b.n, fp) == b.n;
+    if (fp && fclose(fp) != 0) ok = 0;
+    free(b.p);
+    if (!ok || rename(tmp, path) != 0) {
+        set_err(err, errlen, "%s: %s", path, strerror(errno));
+        remove(tmp);
+        return BD_REPORT_EOUTPUT;
+    }
+    return 0;
+}
+
+/* ---- entry ---- */
+
+static int read_summary(report *r, char *err, size_t errlen)
+{
+    char path[PATH_LEN];
+    if (join(path, r->dir, "summary.json")) {
+        set_err(err, errlen, "%s: path too long", r->dir);
+        return BD_REPORT_EINPUT;
+    }
+    FILE *fp = fopen(path, "rb");
+    if (!fp) {
+        set_err(err, errlen, "%s: %s (not the output directory of beltdyn run?)", path,
+                strerror(errno));
+        return BD_REPORT_EINPUT;
+    }
+    strbuf b = {0};
+    char chunk[65536];
+    size_t got;
+    while ((got = fread(chunk, 1, sizeof chunk, fp)) > 0) sb_put(&b, chunk, got);
+    fclose(fp);
+    if (b.oom || !b.p) {
+        free(b.p);
+        set_err(err, errlen, "%s: empty or unreadable", path);
+        return BD_REPORT_EINPUT;
+    }
+    r->summary = cJSON_ParseWithLength(b.p, b.n);
+    if (!r->summary || !cJSON_IsObject(r->summary)) {
+        /* the line of the parse error */
+        const char *at = cJSON_GetErrorPtr();
+        int line = 1;
+        if (at && at >= b.p && at <= b.p + b.n)
+            for (const char *q = b.p; q < at; q++) line += *q == '\n';
+        set_err(err, errlen, "%s:%d: not a JSON object", path, line);
+        cJSON_Delete(r->summary);
+        r->summary = NULL;
+        free(b.p);
+        return BD_REPORT_EINPUT;
+    }
+    free(b.p);
+
+    const cJSON *model = cJSON_GetObjectItemCaseSensitive(r->summary, "model");
+    if (cJSON_IsString(model) && model->valuestring[0])
+        snprintf(r->model, sizeof r->model, "%s", model->valuestring);
+    else snprintf(r->model, sizeof r->model, "%s", r->dir);
+
+    /* design limits: top level, else from the static table */
+    const cJSON *stat = cJSON_GetObjectItemCaseSensitive(r->summary, "static");
+    r->rated_N = json_num(r->summary, "rated_tension_N");
+    r->safety_factor = json_num(r->summary, "safety_factor");
+    r->t_min_sag_N = json_num(r->summary, "T_min_sag_N");
+    if (!isfinite(r->t_min_sag_N)) r->t_min_sag_N = json_num(stat, "T_min_sag_N");
+    if (!isfinite(r->rated_N)) r->rated_N = json_num(stat, "rated_tension_N");
+    if (!isfinite(r->safety_factor)) r->safety_factor = json_num(stat, "safety_factor");
+    if (!(r->rated_N > 0.0)) r->rated_N = NAN;
+    if (!(r->t_min_sag_N > 0.0)) r->t_min_sag_N = NAN;
+    if (!(r->safety_factor > 0.0)) {
+        r->safety_factor = SAFETY_FACTOR_DEFAULT;
+        r->sf_default = 1;
+    }
+
+    const cJSON *ten = cJSON_GetObjectItemCaseSensitive(r->summary, "tension");
+    double v = json_num(ten, "max_N");
+    if (isfinite(v))
+        r->tmax = (point){1, v, json_num(ten, "max_time_s"), json_num(ten, "max_s_m")};
+    v = json_num(ten, "min_N");
+    if (isfinite(v))
+        r->tmin = (point){1, v, json_num(ten, "min_time_s"), json_num(ten, "min_s_m")};
+    return 0;
+}
+
+int bd_report_write(const char *dir, char *err, size_t errlen)
+{
+    report *r;
+    struct stat st;
+    int rc;
+    if (err && errlen) err[0] = '\0';
+    if (!dir || !dir[0]) {
+        set_err(err, errlen, "no run directory given");
+        return BD_REPORT_EINPUT;
+    }
+    if (stat(dir, &st) != 0) {
+        set_err(err, errlen, "%s: %s", dir, strerror(errno));
+        return BD_REPORT_EINPUT;
+    }
+    if (!S_ISDIR(st.st_mode)) {
+        set_err(err, errlen, "%s: not a directory", dir);
+        return BD_REPORT_EINPUT;
+    }
+    r = calloc(1, sizeof *r);
+    if (!r) {
+        set_err(err, errlen, "out of memory");
+        return BD_REPORT_EOUTPUT;
+    }
+    r->dir = dir;
+    if ((rc = read_summary(r, err, errlen))) goto done;
+    if (join(r->plots, dir, "plots")) {
+        set_err(err, errlen, "%s: path too long", dir);
+        rc = BD_REPORT_EINPUT;
+        goto done;
+    }
+    if (mkdir(r->plots, 0777) != 0 && errno != EEXIST) {
+        set_err(err, errlen, "%s: %s", r->plots, strerror(errno));
+        rc = BD_REPORT_EOUTPUT;
+        goto done;
+    }
+    if ((rc = plot_tension_surface(r, err, errlen))) goto done;
+    if ((rc = plot_envelope(r, err, errlen))) goto done;
+    if ((rc = plot_history(r, err, errlen))) goto done;
+    rc = write_html(r, err, errlen);
+done:
+    for (int i = 0; i < r->nowned; i++) free(r->owned[i]);
+    cJSON_Delete(r->summary);
+    free(r);
+    return rc;
+}
