@@ -526,6 +526,20 @@ static void test_level_rules(void)
     bd_static_free(&r);
     model_end(&m);
 
+    /* feed half-way along the carry span: only its last 50 m carry
+     * material; F_H,carry = 0.1962·(15·100 + 20·100 + 60·50) = 1275.3 N,
+     * C stays 1.78 (the carrying run is the whole span, cli.md):
+     * Te = 1.78·(1275.3 + 188.352 + 273.1104) = 3091.4371 N */
+    model_horizontal(&m, BD_STANDARD_DIN22101, 2400.0, 0.30);
+    m.material.feed_at = 0.5;
+    CHECK(compute(&m, &r) == 0);
+    CHECK_REL(r.spans[0].loaded_length_m, 50.0, 1e-9);
+    CHECK_REL(r.spans[0].main_N, 1275.3, TOL);
+    CHECK_REL(r.C, 1.78, 1e-12);
+    CHECK_REL(r.effective_tension_N, 3091.4371, TOL);
+    bd_static_free(&r);
+    model_end(&m);
+
     /* a 50 m conveyor: C auto = 1.92 and the warning */
     model_begin(&m, BD_STANDARD_ISO5048);
     add_pulley(&m, "tail", 0, 0, -1);
