@@ -213,12 +213,13 @@ static range pad_y(const bd_plot_axes *a, range r)
 {
     if (a->map) return r;
     double pad = 0.05 * (r.hi - r.lo);
-    int lo_zero = a->include_zero && r.lo == 0.0;
-    range p = {lo_zero ? r.lo : r.lo - pad, r.hi + pad};
+    range p = {r.lo - pad, r.hi + pad};
     double step = nice_step(p.hi - p.lo, 6);
     p.lo = floor(p.lo / step + 1e-9) * step;
     p.hi = ceil(p.hi / step - 1e-9) * step;
-    if (lo_zero && r.lo == 0.0) p.lo = 0.0;
+    /* data that never crosses zero does not get an axis that does */
+    if (r.lo >= 0.0 && p.lo < 0.0) p.lo = r.lo - 0.5 * pad;
+    if (r.hi <= 0.0 && p.hi > 0.0) p.hi = r.hi + 0.5 * pad;
     return p;
 }
 

@@ -509,10 +509,16 @@ static int plot_envelope(report *r, char *err, size_t errlen)
         snprintf(mlabel, LABEL_LEN, "peak %s %s at s = %.1f m", v, u.name, x[im]);
         bd_plot_add_marker(a, x[im], hi[im], mlabel);
     }
-    rc = write_plot(r, &f, "envelope",
-                    "Highest and lowest belt tension at each position over the run, with the "
-                    "allowable tension and the minimum tension for sag where known.",
-                    err, errlen);
+    {
+        char *cap = lbl(r);
+        snprintf(cap, LABEL_LEN,
+                 "Highest and lowest belt tension at each position over the run.%s%s",
+                 isfinite(r->rated_N) ? " Dashed red: allowable tension (rated / safety factor)."
+                                      : " No rated tension in summary.json: no allowable line.",
+                 isfinite(r->t_min_sag_N) ? " Dashed green: minimum tension for the sag limit."
+                                          : "");
+        rc = write_plot(r, &f, "envelope", cap, err, errlen);
+    }
 done:
     bd_csv_free(&csv);
     return rc;
@@ -649,7 +655,7 @@ static int plot_history(report *r, char *err, size_t errlen)
     find_group(&h, ".tension_N", ".speed_mps", &g);
     if (g.n > 0) {
         bd_plot_figure f;
-        set_title(r, title[0], LABEL_LEN, "belt tension at the probes");
+        set_title(r, title[0], LABEL_LEN, "belt tension and speed at the probes");
         bd_plot_figure_init(&f, title[0], FIG_W, FIG_H + 100);
         f.npanels = 2;
         f.share_x = 1;
@@ -789,7 +795,8 @@ static const char *css =
     ".sub{color:#555;margin:0 0 14px}"
     ".cards{display:flex;flex-wrap:wrap;gap:12px}"
     ".card{background:#fff;border:1px solid #d0d4da;border-left:6px solid #0072b2;"
-    "border-radius:6px;padding:10px 14px;min-width:210px;flex:1}"
+    "border-radius:6px;padding:10px 14px;flex:1 1 220px;max-width:calc(25% - 9px);"
+    "box-sizing:border-box}"
     ".card.bad{border-left-color:#c00000}.card.ok{border-left-color:#009e73}"
     ".card .k{font-size:13px;color:#555;text-transform:uppercase;letter-spacing:.04em}"
     ".card .v{font-size:28px;font-weight:bold;margin:2px 0}"
@@ -805,8 +812,9 @@ static const char *css =
     "figcaption{font-size:14px;color:#333;padding:6px 4px 0}"
     "nav a{margin-right:14px}";
 
-/* a key like "tension_max_N" as "tension max [N]" */
-static void key_label(char *buf, size_t len, const char *key)
+/* a key like "tension_max_N" split into "tension max" and "N" (unit NULL
+ * when the key has no unit suffix) */
+static const char *key_split(char *base, size_t len, const char *key)
 {
     static const struct {
         const char *sfx, *unit;
@@ -814,20 +822,37 @@ static void key_label(char *buf, size_t len, const char *key)
                  {"_N", "N"},         {"_J", "J"},     {"_s", "s"},    {"_m", "m"},
                  {"_rel", "relative"}};
     const char *unit_name = NULL;
-    size_t base = strlen(key);
+    size_t n = strlen(key);
     for (size_t i = 0; i < sizeof units / sizeof units[0]; i++)
         if (ends_with(key, units[i].sfx)) {
             unit_name = units[i].unit;
-            base -= strlen(units[i].sfx);
+            n -= strlen(units[i].sfx);
             break;
         }
-    char tmp[128];
-    snprintf(tmp, sizeof tmp, "%.*s", (int)base, key);
-    for (char *p = tmp; *p; p++)
+    snprintf(base, len, "%.*s", (int)n, key);
+    for (char *p = base; *p; p++)
         if (*p == '_') *p = ' ';
-    if (unit_name) snprintf(buf, len, "%s [%s]", tmp, unit_name);
-    else snprintf(buf, len, "%s", tmp);
+    return unit_name;
 }
+
+/* "tension_max_N" as "tension max [N]"; parent: the enclosing key, whose
+ * unit applies when the key has none ("resistances_N": {"main": ..}) */
+static void key_label2(char *buf, size_t len, const char *parent, const char *key)
+{
+    char b[128], pb[128];
+    const char *unit_name = key_split(b, sizeof b, key);
+    if (parent) {
+        const char *pu = key_split(pb, sizeof pb, parent);
+        if (!unit_name) unit_name = pu;
+        if (unit_name) snprintf(buf, len, "%s: %s [%s]", pb, b, unit_name);
+        else snprintf(buf, len, "%s: %s", pb, b);
+    } else {
+        if (unit_name) snprintf(buf, len, "%s [%s]", b, unit_name);
+        else snprintf(buf, len, "%s", b);
+    }
+}
+
+static void key_label(char *buf, size_t len, const char *key) { key_label2(buf, len, NULL, key); }
 
 static void html_value(strbuf *b, const cJSON *v)
 {
@@ -923,14 +948,13 @@ static void html_object(strbuf *b, const cJSON *obj, const char *const *skip, in
             continue;
         }
         for (int i = 0; i < ni; i++) {
-            char lab[160], full[256];
+            char full[300];
             if (!open) {
                 sb_puts(b, "<table><tr><th>quantity</th><th>value</th></tr>\n");
                 open = 1;
             }
-            key_label(lab, sizeof lab, inner[i]->string ? inner[i]->string : "");
-            if (inner[i] != v) snprintf(full, sizeof full, "%s: %s", v->string, lab);
-            else snprintf(full, sizeof full, "%s", lab);
+            key_label2(full, sizeof full, inner[i] != v ? v->string : NULL,
+                       inner[i]->string ? inner[i]->string : "");
             sb_puts(b, "<tr><th>");
             sb_html(b, full);
             sb_puts(b, cJSON_IsNumber(inner[i]) ? "</th><td class=n>" : "</th><td>");
