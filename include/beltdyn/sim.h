@@ -1,0 +1,60 @@
+/* beltdyn transient simulation: build a simulation from a validated model,
+ * step it, run it to completion writing the outputs of cli.md. */
+#ifndef BELTDYN_SIM_H
+#define BELTDYN_SIM_H
+
+#include <signal.h>
+#include <stdio.h>
+
+#include "beltdyn/model.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct bd_sim bd_sim;
+
+/* exit statuses of bd_sim_run, as the command uses them (cli.md) */
+enum {
+    BD_RUN_OK = 0,
+    BD_RUN_FAILED = 1,       /* diverged, element reversed, takeup limit */
+    BD_RUN_BAD_INPUT = 2,
+    BD_RUN_INTERRUPTED = 130
+};
+
+typedef struct bd_run_options {
+    const char *out_dir;                  /* directory for the outputs */
+    int progress;                         /* 1: progress line on stderr */
+    volatile sig_atomic_t *interrupted;   /* set nonzero to stop (SIGINT) */
+    int hdf5;                             /* reserved */
+} bd_run_options;
+
+/* derive the discrete model (path, elements, idlers, time step, initial
+ * state). Problems found here (e.g. a time step above the stability limit)
+ * go to diag with their file position. 0 = ok. The sim keeps a pointer to
+ * def: def must outlive it. */
+int bd_sim_create(const bd_model_def *def, bd_sim **out, bd_diag *diag);
+void bd_sim_free(bd_sim *sim);
+
+/* what `beltdyn check` prints: loop length, elements, dof, time step and
+ * what limits it, idlers per span, masses */
+void bd_sim_describe(const bd_sim *sim, FILE *f);
+
+/* relax to static equilibrium if the model asks for it (called by run) */
+int bd_sim_stabilize(bd_sim *sim, FILE *log);
+
+/* advance n steps; returns 0, or 1 when the run failed (message in err) */
+int bd_sim_step(bd_sim *sim, long n, char *err, size_t errlen);
+
+/* the whole run with outputs; returns one of BD_RUN_*; message in err */
+int bd_sim_run(bd_sim *sim, const bd_run_options *opt, char *err, size_t errlen);
+
+/* a few read-outs for tests and tools */
+double bd_sim_time(const bd_sim *sim);
+double bd_sim_time_step(const bd_sim *sim);
+int bd_sim_node_count(const bd_sim *sim);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

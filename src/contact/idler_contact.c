@@ -1,0 +1,100 @@
+/* Belt–idler contact (seed 001 §4.3.2): an idler touches the belt element
+ * that is over it, at the foot point of its centre on the element.
+ *
+ * Normal: foot point p = x_e + γ·(x_j − x_e); the belt is pushed away from
+ * the centre along n̂ = (p − c)/|p − c| by f_n = k_c·(R − |p − c|) − c_c·v_n
+ * ≥ 0, shared by the element's nodes by the lever rule, (1−γ) and γ
+ * (eqs 4.95–4.102; the thesis' 4.100 gives node i the share d_i/l, which
+ * puts more force on the farther node: we use the lever rule).
+ *
+ * Rolling (indentation) resistance: a force rr·f_n on the belt against its
+ * motion over the idler (model-format.md `rolling_resistance`), smoothed
+ * below ROLLING_SPEED so a belt at rest carries none.
+ *
+ * Friction: t̂ along the belt in the direction of travel, slip speed
+ * v_r = t̂·((1−γ)v_e + γv_j) − ω·R (eq 4.107). The stick force f (−f·t̂ on
+ * the belt shared by the lever rule, +f·R on the idler) that makes v_r zero
+ * at the end of the step solves eq 4.113:
+ *   f = [v_r/Δt + (1−γ)·t̂·F_e/m_e + γ·t̂·F_j/m_j] / [(1−γ)²/m_e + γ²/m_j + R²/I]
+ * (eq 4.114 rearranged; the idler has no other torque). |f| > μ_s·f_n slips
+ * with ±μ_d·f_n (eqs 4.116–4.117). */
+#include "sim/system.h"
+
+#include <math.h>
+
+/* m/s: below this belt speed over the idler the rolling resistance fades
+ * linearly to zero (a belt at rest is not pushed) */
+#define ROLLING_SPEED 0.01
+
+void bd_idler_contact(bd_sim *sim, bd_idler *id)
+{
+    bd_tracker_update(sim, &id->tr);
+    id->alpha = 0.0;
+    id->torque = 0.0;
+    id->normal = 0.0;
+    id->penetration = 0.0;
+    int e = id->tr.element, j = e + 1 == sim->n ? 0 : e + 1;
+    double g = id->tr.gamma, h = 1.0 - g;
+    double px = sim->x[e] + g * (sim->x[j] - sim->x[e]);
+    double py = sim->y[e] + g * (sim->y[j] - sim->y[e]);
+    double rx = px - id->centre[0], ry = py - id->centre[1];
+    double d2 = rx * rx + ry * ry;
+    if (d2 >= id->radius * id->radius)
+        return;
+    double d = sqrt(d2);
+    double nx = rx / d, ny = ry / d;
+    double vcx = h * sim->vx[e] + g * sim->vx[j];
+    double vcy = h * sim->vy[e] + g * sim->vy[j];
+    double fd = -id->c_contact * (nx * vcx + ny * vcy);
+    double fn = id->k_contact * (id->radius - d) + fd;
+    if (fn < 0.0) {
+        fd -= fn;
+        fn = 0.0;
+    }
+    id->normal = fn;
+    id->penetration = id->radius - d;
+    /* tangent along the travel direction */
+    double tx = -ny, ty = nx;
+    if (tx * id->tr.dir[0] + ty * id->tr.dir[1] < 0.0) {
+        tx = -tx;
+        ty = -ty;
+    }
+    double vt = tx * vcx + ty * vcy;
+    double sat = vt / ROLLING_SPEED;
+    if (sat > 1.0)
+        sat = 1.0;
+    if (sat < -1.0)
+        sat = -1.0;
+    double frr = id->rolling * fn * sat;
+    /* normal + rolling resistance on the two nodes */
+    double Fx = fn * nx - frr * tx, Fy = fn * ny - frr * ty;
+    double Fnx = fd * nx - frr * tx, Fny = fd * ny - frr * ty;
+    sim->fx[e] += h * Fx;
+    sim->fy[e] += h * Fy;
+    sim->fx[j] += g * Fx;
+    sim->fy[j] += g * Fy;
+    sim->fnx[e] += h * Fnx;
+    sim->fny[e] += h * Fny;
+    sim->fnx[j] += g * Fnx;
+    sim->fny[j] += g * Fny;
+    if (sim->friction_off)
+        return;
+    double me = sim->mass[e], mj = sim->mass[j], R = id->radius;
+    double vr = vt - id->omega * R;
+    double num = vr / sim->dt + h * (tx * sim->fx[e] + ty * sim->fy[e]) / me
+               + g * (tx * sim->fx[j] + ty * sim->fy[j]) / mj;
+    double den = h * h / me + g * g / mj + R * R / id->inertia;
+    double f = num / den;
+    if (fabs(f) > id->mu_s * fn)
+        f = copysign(id->mu_d * fn, f);
+    sim->fx[e] -= h * f * tx;
+    sim->fy[e] -= h * f * ty;
+    sim->fx[j] -= g * f * tx;
+    sim->fy[j] -= g * f * ty;
+    sim->fnx[e] -= h * f * tx;
+    sim->fny[e] -= h * f * ty;
+    sim->fnx[j] -= g * f * tx;
+    sim->fny[j] -= g * f * ty;
+    id->torque = f * R;
+    id->alpha = id->torque / id->inertia;
+}

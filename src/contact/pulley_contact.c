@@ -1,0 +1,157 @@
+/* Belt–pulley contact (seed 001 §4.3.1): penalty contact of belt nodes with
+ * the pulley shell and stick–slip friction by the stick-force method.
+ *
+ * Normal: a node at distance a < R from the centre is pushed out along
+ * n̂ = (x − x_p)/a by a penalty spring (eqs 4.70–4.75; our k_c is in N/m).
+ * The spring must be stiff: a wrapped node sinks δ = T·l/(R·k_c), which
+ * shortens its chords by δ/R and so lowers the tension on the wrap by
+ * EA·δ/R = T·(l/R)²·(EA/l)/k_c. With k_c = 100·EA/l0 that is 0.3% of T for
+ * 30° elements. Such a spring is far stiffer than the belt, so it is taken
+ * linearly implicit: the force is the one the spring has at the end of the
+ * step, given the node's other forces F_o and its velocity,
+ *   f_n = k_c·(δ − Δt·v_n − Δt²·F_o,n/m) / (1 + k_c·Δt²/m)  ≥ 0,
+ * stable for any k_c. Its work is booked as non-conservative (with the
+ * dissipated energy): the spring holds at most ½·f_n²/k_c, a few joules, and
+ * the implicit force is not the gradient of ½k_cδ².
+ *
+ * Friction: tangent t̂ = wrap·perp(n̂) points the way the belt travels;
+ * the slip speed is v_r = t̂·(v_i − v_p) − R·ω (eq 4.78). The stick force f_i
+ * (on the node −f_i·t̂, on the pulley +f_i·R as torque) is the one that makes
+ * every sticking node's v_r zero at the end of the step, given the other
+ * forces F_i on the nodes and the external torque T_p on the pulley
+ * (eqs 4.84–4.92, with the pulley's translation neglected as in 4.84):
+ *   α = (R·A + R·F_k + T_p)/(I + R²·M),   A = Σ_S (m_i·v_r,i/Δt + t̂·F_i),
+ *   f_i = m_i·(v_r,i/Δt − R·α) + t̂·F_i   for sticking nodes S,
+ * with M = Σ_S m_i and F_k = Σ of the dynamic forces of slipping nodes.
+ * A node whose |f_i| exceeds μ_s·f_n slips with f_i = ±μ_d·f_n (4.93–4.94)
+ * and the sticking set is solved again. α is the pulley's angular
+ * acceleration (I·α = R·Σf + T_p); it is exact for I → 0 too. */
+#include "sim/system.h"
+
+#include <math.h>
+
+#define WINDOW_MARGIN 3
+
+static void normal_forces(bd_sim *sim, bd_pulley_body *p)
+{
+    const int n = sim->n;
+    double R = p->radius;
+    double vpx = p->qdot * p->axis[0], vpy = p->qdot * p->axis[1];
+    int first_found = -1, last_found = -1;
+    p->contact_count = 0;
+    p->f_axis = 0.0;
+    p->fnc_axis = 0.0;
+    int span = p->win_count + 2 * WINDOW_MARGIN;
+    if (span > p->win_max)
+        span = p->win_max;
+    int start = p->win_first - WINDOW_MARGIN;
+    for (int w = 0; w < span; w++) {
+        int k = ((start + w) % n + n) % n;
+        double rx = sim->x[k] - p->cx, ry = sim->y[k] - p->cy;
+        double a2 = rx * rx + ry * ry;
+        if (a2 >= R * R)
+            continue;
+        double a = sqrt(a2);
+        double nx = rx / a, ny = ry / a;
+        double vn = nx * (sim->vx[k] - vpx) + ny * (sim->vy[k] - vpy);
+        double m = sim->mass[k];
+        double Fo = nx * sim->fx[k] + ny * sim->fy[k];
+        double delta = R - a;
+        double dt = sim->dt;
+        double fn = p->k_contact * (delta - dt * vn - dt * dt * Fo / m)
+                  / (1.0 + p->k_contact * dt * dt / m);
+        if (fn < 0.0)
+            fn = 0.0;
+        double fd = fn;   /* all of it booked as non-conservative work */
+        sim->fx[k] += fn * nx;
+        sim->fy[k] += fn * ny;
+        sim->fnx[k] += fd * nx;
+        sim->fny[k] += fd * ny;
+        p->f_axis -= fn * (nx * p->axis[0] + ny * p->axis[1]);
+        p->fnc_axis -= fd * (nx * p->axis[0] + ny * p->axis[1]);
+        int c = p->contact_count++;
+        p->c_node[c] = k;
+        p->c_normal[c] = fn;
+        p->c_tx[c] = -p->wrap * ny;
+        p->c_ty[c] = p->wrap * nx;
+        if (first_found < 0)
+            first_found = start + w;
+        last_found = start + w;
+    }
+    if (first_found >= 0) {
+        p->win_first = ((first_found % n) + n) % n;
+        p->win_count = last_found - first_found + 1;
+    }
+}
+
+static void friction_forces(bd_sim *sim, bd_pulley_body *p, double T_p)
+{
+    const double dt = sim->dt, R = p->radius;
+    const double vpx = p->qdot * p->axis[0], vpy = p->qdot * p->axis[1];
+    const int nc = p->contact_count;
+    double alpha = 0.0;
+    for (int c = 0; c < nc; c++)
+        p->c_slip[c] = 0;
+    /* solve the sticking set, move violators to slip, repeat */
+    for (int pass = 0; pass <= nc; pass++) {
+        double A = 0.0, M = 0.0, Fk = 0.0;
+        for (int c = 0; c < nc; c++) {
+            if (p->c_slip[c]) {
+                Fk += p->c_f[c];
+                continue;
+            }
+            int k = p->c_node[c];
+            double vr = p->c_tx[c] * (sim->vx[k] - vpx) + p->c_ty[c] * (sim->vy[k] - vpy)
+                      - R * p->omega;
+            A += sim->mass[k] * vr / dt + p->c_tx[c] * sim->fx[k] + p->c_ty[c] * sim->fy[k];
+            M += sim->mass[k];
+        }
+        alpha = (R * A + R * Fk + T_p) / (p->inertia + R * R * M);
+        int changed = 0;
+        for (int c = 0; c < nc; c++) {
+            if (p->c_slip[c])
+                continue;
+            int k = p->c_node[c];
+            double vr = p->c_tx[c] * (sim->vx[k] - vpx) + p->c_ty[c] * (sim->vy[k] - vpy)
+                      - R * p->omega;
+            double f = sim->mass[k] * (vr / dt - R * alpha)
+                     + p->c_tx[c] * sim->fx[k] + p->c_ty[c] * sim->fy[k];
+            p->c_f[c] = f;
+            if (fabs(f) > p->mu_s * p->c_normal[c]) {
+                p->c_slip[c] = 1;
+                p->c_f[c] = copysign(p->mu_d * p->c_normal[c], f);
+                changed = 1;
+            }
+        }
+        if (!changed)
+            break;
+    }
+    /* apply */
+    double sum = 0.0;
+    for (int c = 0; c < nc; c++) {
+        int k = p->c_node[c];
+        double f = p->c_f[c];
+        sim->fx[k] -= f * p->c_tx[c];
+        sim->fy[k] -= f * p->c_ty[c];
+        sim->fnx[k] -= f * p->c_tx[c];
+        sim->fny[k] -= f * p->c_ty[c];
+        double fa = f * (p->c_tx[c] * p->axis[0] + p->c_ty[c] * p->axis[1]);
+        p->f_axis += fa;
+        p->fnc_axis += fa;
+        sum += f;
+    }
+    p->torque_friction = R * sum;
+    p->alpha = alpha;
+}
+
+void bd_pulley_contact(bd_sim *sim, bd_pulley_body *p, double external_torque)
+{
+    normal_forces(sim, p);
+    p->torque_external = external_torque;
+    p->torque_friction = 0.0;
+    if (sim->friction_off || p->contact_count == 0) {
+        p->alpha = external_torque / p->inertia;
+        return;
+    }
+    friction_forces(sim, p, external_torque);
+}

@@ -1,0 +1,264 @@
+/* Writers of a run's outputs (cli.md `run` outputs): history.csv and
+ * tension.csv row by row at output intervals, envelope.csv and summary.json
+ * at the end. Every file is written under a temporary name and renamed when
+ * complete; an interrupted or failed run still renames its CSVs, which are
+ * valid up to the last complete row. */
+#include "io/outputs.h"
+
+#include <cjson/cJSON.h>
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "sim/timestep.h"
+
+static int make_dir(const char *dir, char *err, size_t errlen)
+{
+    char buf[1024];
+    snprintf(buf, sizeof buf, "%s", dir);
+    for (char *p = buf + 1; *p; p++) {
+        if (*p != '/')
+            continue;
+        *p = '\0';
+        mkdir(buf, 0777);
+        *p = '/';
+    }
+    if (mkdir(buf, 0777) != 0 && errno != EEXIST) {
+        snprintf(err, errlen, "cannot create output directory '%s': %s", dir, strerror(errno));
+        return 1;
+    }
+    return 0;
+}
+
+static FILE *open_part(bd_outputs *o, int which, const char *name, char *err, size_t errlen)
+{
+    snprintf(o->final_path[which], sizeof o->final_path[which], "%s/%s", o->dir, name);
+    snprintf(o->part_path[which], sizeof o->part_path[which], "%s/.%s.part", o->dir, name);
+    FILE *f = fopen(o->part_path[which], "w");
+    if (!f)
+        snprintf(err, errlen, "cannot write '%s': %s", o->part_path[which], strerror(errno));
+    return f;
+}
+
+static int finish_part(bd_outputs *o, int which, FILE **f)
+{
+    if (!*f)
+        return 0;
+    int bad = fclose(*f) != 0;
+    *f = NULL;
+    if (!bad)
+        bad = rename(o->part_path[which], o->final_path[which]) != 0;
+    return bad;
+}
+
+int bd_outputs_open(bd_outputs *o, const bd_sim *sim, const char *dir, char *err, size_t errlen)
+{
+    memset(o, 0, sizeof *o);
+    snprintf(o->dir, sizeof o->dir, "%s", dir);
+    if (make_dir(dir, err, errlen))
+        return 1;
+    o->history = open_part(o, BD_OUT_HISTORY, "history.csv", err, errlen);
+    o->tension = o->history ? open_part(o, BD_OUT_TENSION, "tension.csv", err, errlen) : NULL;
+    if (!o->history || !o->tension) {
+        if (o->history)
+            fclose(o->history);
+        return 1;
+    }
+    static char hbuf[1 << 16], tbuf[1 << 20];
+    setvbuf(o->history, hbuf, _IOFBF, sizeof hbuf);
+    setvbuf(o->tension, tbuf, _IOFBF, sizeof tbuf);
+    o->bins = sim->n;
+    o->env_max = malloc((size_t)o->bins * sizeof *o->env_max);
+    o->env_min = malloc((size_t)o->bins * sizeof *o->env_min);
+    for (int i = 0; i < o->bins; i++) {
+        o->env_max[i] = -INFINITY;
+        o->env_min[i] = INFINITY;
+    }
+    /* history header */
+    const bd_model_def *def = sim->def;
+    fprintf(o->history, "t_s");
+    for (int i = 0; i < sim->probe_count; i++)
+        fprintf(o->history, ",%s.tension_N,%s.speed_mps", def->simulation.probes[i].name,
+                def->simulation.probes[i].name);
+    for (int i = 0; i < sim->pulley_count; i++)
+        if (def->pulleys[i].has_drive)
+            fprintf(o->history, ",%s.omega_rad_s,%s.torque_Nm", def->pulleys[i].name,
+                    def->pulleys[i].name);
+    for (int i = 0; i < sim->pulley_count; i++)
+        if (def->pulleys[i].has_takeup)
+            fprintf(o->history, ",%s.travel_m", def->pulleys[i].name);
+    fprintf(o->history, ",kinetic_J,potential_J,dissipated_J,input_J\n");
+    fprintf(o->tension, "t_s,s_m,x_m,y_m,tension_N,speed_mps\n");
+    return 0;
+}
+
+void bd_outputs_row(bd_outputs *o, bd_sim *sim, double t)
+{
+    const bd_model_def *def = sim->def;
+    FILE *h = o->history;
+    fprintf(h, "%.6f", t);
+    for (int i = 0; i < sim->probe_count; i++) {
+        bd_probe *pr = &sim->probes[i];
+        int e = pr->tr.element, j = e + 1 == sim->n ? 0 : e + 1;
+        double g = pr->tr.gamma;
+        pr->tension = bd_tracker_tension(sim, &pr->tr);
+        pr->speed = (1.0 - g) * (pr->tr.dir[0] * sim->vx[e] + pr->tr.dir[1] * sim->vy[e])
+                  + g * (pr->tr.dir[0] * sim->vx[j] + pr->tr.dir[1] * sim->vy[j]);
+        if (pr->tension > pr->tension_max)
+            pr->tension_max = pr->tension;
+        if (pr->tension < pr->tension_min)
+            pr->tension_min = pr->tension;
+        fprintf(h, ",%.6g,%.6g", pr->tension, pr->speed);
+    }
+    for (int i = 0; i < sim->pulley_count; i++)
+        if (def->pulleys[i].has_drive)
+            fprintf(h, ",%.6g,%.6g", sim->pulleys[i].omega, sim->pulleys[i].drive_torque);
+    for (int i = 0; i < sim->pulley_count; i++)
+        if (def->pulleys[i].has_takeup)
+            fprintf(h, ",%.6g", sim->pulleys[i].q);
+    const bd_energy *en = &sim->energy;
+    fprintf(h, ",%.9g,%.9g,%.9g,%.9g\n", en->kinetic, en->potential, en->dissipated, en->input);
+
+    /* tension along the belt, and the Eulerian envelope */
+    FILE *f = o->tension;
+    double L = sim->path.length;
+    for (int e = 0; e < sim->n; e++) {
+        int j = e + 1 == sim->n ? 0 : e + 1;
+        double s = bd_element_s(sim, e);
+        double T = sim->tension[e];
+        fprintf(f, "%.6f,%.4f,%.4f,%.4f,%.6g,%.5g\n", t, s, 0.5 * (sim->x[e] + sim->x[j]),
+                0.5 * (sim->y[e] + sim->y[j]), T, bd_element_speed(sim, e));
+        int b = (int)(s / L * o->bins);
+        if (b >= o->bins)
+            b = o->bins - 1;
+        if (b < 0)
+            b = 0;
+        if (T > o->env_max[b])
+            o->env_max[b] = T;
+        if (T < o->env_min[b])
+            o->env_min[b] = T;
+    }
+    o->rows++;
+}
+
+void bd_outputs_flush(bd_outputs *o)
+{
+    if (o->history)
+        fflush(o->history);
+    if (o->tension)
+        fflush(o->tension);
+}
+
+static int write_envelope(bd_outputs *o, const bd_sim *sim)
+{
+    FILE *f = open_part(o, BD_OUT_ENVELOPE, "envelope.csv", o->err, sizeof o->err);
+    if (!f)
+        return 1;
+    fprintf(f, "s_m,tension_max_N,tension_min_N\n");
+    double L = sim->path.length;
+    for (int b = 0; b < o->bins; b++) {
+        /* a bin no element centre fell in takes its nearest filled one */
+        int k = b;
+        for (int d = 0; d < o->bins && o->env_max[k] == -INFINITY; d++) {
+            k = (b + d) % o->bins;
+            if (o->env_max[k] != -INFINITY)
+                break;
+            k = (b - d + o->bins) % o->bins;
+        }
+        if (o->env_max[k] == -INFINITY)
+            continue;
+        fprintf(f, "%.4f,%.6g,%.6g\n", (b + 0.5) * L / o->bins, o->env_max[k], o->env_min[k]);
+    }
+    return finish_part(o, BD_OUT_ENVELOPE, &f);
+}
+
+static cJSON *num(cJSON *obj, const char *key, double v)
+{
+    /* JSON has no inf/nan: write null for them */
+    if (isfinite(v))
+        return cJSON_AddNumberToObject(obj, key, v);
+    return cJSON_AddNullToObject(obj, key);
+}
+
+static int write_summary(bd_outputs *o, const bd_sim *sim, double wall, const char *status)
+{
+    const bd_model_def *def = sim->def;
+    cJSON *root = cJSON_CreateObject();
+    cJSON_AddStringToObject(root, "model", def->name);
+    num(root, "duration_s", sim->t);
+    num(root, "time_step_s", sim->dt);
+    num(root, "steps", (double)sim->steps);
+    num(root, "nodes", sim->n);
+    num(root, "belt_length_m", sim->path.length);
+    num(root, "wall_time_s", wall);
+    cJSON_AddStringToObject(root, "status", status);
+    num(root, "time_step_limit_s", sim->dt_limit);
+    cJSON_AddStringToObject(root, "time_step_limited_by", bd_time_step_limit_name(sim->limit_kind));
+    if (def->belt.rated_tension > 0.0)
+        num(root, "rated_tension_N", def->belt.rated_tension);
+    cJSON *ten = cJSON_AddObjectToObject(root, "tension");
+    num(ten, "max_N", sim->tension_max);
+    num(ten, "max_time_s", sim->tension_max_t);
+    num(ten, "max_s_m", sim->tension_max_s);
+    num(ten, "min_N", sim->tension_min);
+    num(ten, "min_time_s", sim->tension_min_t);
+    num(ten, "min_s_m", sim->tension_min_s);
+    cJSON *probes = cJSON_AddObjectToObject(root, "probes");
+    for (int i = 0; i < sim->probe_count; i++) {
+        const bd_probe *pr = &sim->probes[i];
+        cJSON *p = cJSON_AddObjectToObject(probes, def->simulation.probes[i].name);
+        num(p, "tension_max_N", pr->tension_max);
+        num(p, "tension_min_N", pr->tension_min);
+        num(p, "tension_final_N", pr->tension);
+        num(p, "speed_final_mps", pr->speed);
+    }
+    cJSON *pulleys = cJSON_AddObjectToObject(root, "pulleys");
+    for (int i = 0; i < sim->pulley_count; i++) {
+        const bd_pulley_body *pb = &sim->pulleys[i];
+        cJSON *p = cJSON_AddObjectToObject(pulleys, def->pulleys[i].name);
+        num(p, "omega_final_rad_s", pb->omega);
+        if (def->pulleys[i].has_drive)
+            num(p, "torque_max_Nm", pb->torque_max_abs);
+        if (def->pulleys[i].has_takeup) {
+            num(p, "travel_min_m", pb->travel_min);
+            num(p, "travel_max_m", pb->travel_max);
+        }
+    }
+    cJSON *en = cJSON_AddObjectToObject(root, "energy");
+    num(en, "kinetic_final_J", sim->energy.kinetic);
+    num(en, "balance_error_rel", sim->energy.balance_error_rel);
+    if (def->simulation.stabilize) {
+        cJSON *st = cJSON_AddObjectToObject(root, "stabilize");
+        num(st, "steps", sim->stabilize_iterations);
+        num(st, "kinetic_final_J", sim->stabilize_final_kinetic);
+    }
+    cJSON *w = cJSON_AddArrayToObject(root, "warnings");
+    for (int i = 0; i < sim->warning_count; i++)
+        cJSON_AddItemToArray(w, cJSON_CreateString(sim->warnings[i]));
+    char *text = cJSON_Print(root);
+    cJSON_Delete(root);
+    FILE *f = open_part(o, BD_OUT_SUMMARY, "summary.json", o->err, sizeof o->err);
+    if (!f) {
+        free(text);
+        return 1;
+    }
+    fputs(text, f);
+    fputc('\n', f);
+    free(text);
+    return finish_part(o, BD_OUT_SUMMARY, &f);
+}
+
+int bd_outputs_close(bd_outputs *o, const bd_sim *sim, double wall, const char *status)
+{
+    int bad = finish_part(o, BD_OUT_HISTORY, &o->history);
+    bad |= finish_part(o, BD_OUT_TENSION, &o->tension);
+    if (o->rows > 0)
+        bad |= write_envelope(o, sim);
+    bad |= write_summary(o, sim, wall, status);
+    free(o->env_max);
+    free(o->env_min);
+    o->env_max = o->env_min = NULL;
+    return bad;
+}

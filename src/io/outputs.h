@@ -1,0 +1,31 @@
+/* Writers of a run's output files (outputs.c) */
+#ifndef BD_OUTPUTS_H
+#define BD_OUTPUTS_H
+
+#include <stdio.h>
+
+#include "sim/system.h"
+
+enum { BD_OUT_HISTORY = 0, BD_OUT_TENSION, BD_OUT_ENVELOPE, BD_OUT_SUMMARY, BD_OUT_COUNT };
+
+typedef struct bd_outputs {
+    char dir[1024];
+    char final_path[BD_OUT_COUNT][1100];
+    char part_path[BD_OUT_COUNT][1100];
+    FILE *history, *tension;
+    int bins;              /* envelope bins along the path */
+    double *env_max;       /* [bins] N */
+    double *env_min;       /* [bins] N */
+    long rows;
+    char err[2048];
+} bd_outputs;
+
+int bd_outputs_open(bd_outputs *o, const bd_sim *sim, const char *dir, char *err, size_t errlen);
+/* one output time: a history row, the tension rows, the envelope update */
+void bd_outputs_row(bd_outputs *o, bd_sim *sim, double t);
+void bd_outputs_flush(bd_outputs *o);
+/* finish every file (rename), write envelope.csv and summary.json; status
+ * is "completed", "failed" or "interrupted" */
+int bd_outputs_close(bd_outputs *o, const bd_sim *sim, double wall, const char *status);
+
+#endif

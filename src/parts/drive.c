@@ -1,0 +1,137 @@
+/* Drives (model-format.md `drive`): the torque a drive puts on its pulley.
+ * Torque and speed are positive in the sense that moves the belt forward.
+ *
+ * speed: a PI speed loop with acceleration feed-forward, like a VFD's,
+ *   T = J·[α_ref + 2ζω_c·(ω_ref − ω) + ω_c²·∫(ω_ref − ω)dt],  ζ = 1,
+ * tuned for J, the inertia of everything the drives move (belt, material,
+ * pulleys, idlers reflected to this pulley, shared among the speed drives);
+ * the integral stops winding up while the torque is at max_torque.
+ * torque: the table, linear between points.
+ * motor: an induction motor direct on line by the Kloss formula
+ *   T_m = 2·T_b·s·s_b/(s² + s_b²),  s = 1 − ω_m/ω_sync,
+ * T_b = breakdown_torque_ratio·T_rated, T_rated = P/ω_rated, and s_b from
+ * the rated point: s_b = s_r·(k + √(k² − 1)), k = T_b/T_rated; at the pulley
+ * T = gear_ratio·T_m with ω_m = gear_ratio·ω.
+ * Stops at stop.at: coast (no torque), ramp (the speed reference falls
+ * linearly to zero over stop.time), brake (brake_torque against the motion,
+ * holding at standstill). Every torque is clipped to ±max_torque. */
+#include "sim/system.h"
+
+#include <math.h>
+
+static const double PI = 3.14159265358979323846;
+
+/* start curves, seed 000 eqs 52–55, τ = t/T in [0, 1]. Nordell's two-part
+ * quadratic as printed in seed 000 (53) ends at 2·v0; we use the curve it
+ * describes: v = 2v0τ² for τ ≤ ½, v0·(1 − 2(1−τ)²) after (continuous speed
+ * and acceleration, reaching v0 at T). */
+static double curve_shape(bd_start_curve c, double tau)
+{
+    if (tau <= 0.0)
+        return 0.0;
+    if (tau >= 1.0)
+        return 1.0;
+    switch (c) {
+    case BD_CURVE_LINEAR: return tau;
+    case BD_CURVE_HARRISON: return 0.5 * (1.0 - cos(PI * tau));
+    case BD_CURVE_NORDELL:
+        return tau <= 0.5 ? 2.0 * tau * tau : 1.0 - 2.0 * (1.0 - tau) * (1.0 - tau);
+    case BD_CURVE_SCURVE: return tau * tau * (3.0 - 2.0 * tau);
+    }
+    return tau;
+}
+
+static double start_speed(const bd_drive_def *d, double t)
+{
+    if (t < d->start_delay)
+        return d->creep_speed;
+    if (d->start_time <= 0.0)
+        return d->speed;
+    return d->creep_speed + (d->speed - d->creep_speed)
+                                * curve_shape(d->curve, (t - d->start_delay) / d->start_time);
+}
+
+/* target belt speed of a speed drive at time t, stops included */
+double bd_start_curve_speed(const bd_drive_def *d, double t)
+{
+    if (d->stop_mode == BD_STOP_RAMP && t >= d->stop_at) {
+        double f = d->stop_time > 0.0 ? 1.0 - (t - d->stop_at) / d->stop_time : 0.0;
+        return f > 0.0 ? start_speed(d, d->stop_at) * f : 0.0;
+    }
+    return start_speed(d, t);
+}
+
+static double clip(double v, double limit)
+{
+    return v > limit ? limit : (v < -limit ? -limit : v);
+}
+
+/* Kloss curve at the motor shaft, N·m */
+static double motor_torque(const bd_pulley_body *p, double omega_pulley)
+{
+    const bd_motor_def *m = &p->def->drive.motor;
+    double w_sync = m->synchronous_speed_rpm * 2.0 * PI / 60.0;
+    double s = 1.0 - omega_pulley * m->gear_ratio / w_sync;
+    double sb = p->motor_slip_b;
+    return 2.0 * p->motor_breakdown * s * sb / (s * s + sb * sb);
+}
+
+void bd_drive_prepare(bd_sim *sim, bd_pulley_body *p, double reflected_inertia)
+{
+    const bd_drive_def *d = &p->def->drive;
+    p->ctrl_inertia = reflected_inertia;
+    /* 2 Hz speed loop, slowed if the explicit step could not carry it: the
+     * proportional gain acts like a damper 2ω_c·J on the pulley and the belt
+     * sticking to it, stable for Δt·2ω_c·J/I_local < 2; keep it below 0.5 */
+    double I_local = p->inertia + sim->belt_mpl * PI * p->radius * p->radius * p->radius;
+    double w = 2.0 * PI * 2.0;
+    double w_max = 0.25 * I_local / (sim->dt * reflected_inertia);
+    p->ctrl_bandwidth = w < w_max ? w : w_max;
+    if (d->control == BD_CONTROL_MOTOR) {
+        const bd_motor_def *m = &d->motor;
+        double w_rated = m->rated_speed_rpm * 2.0 * PI / 60.0;
+        double T_rated = m->rated_power / w_rated;
+        double k = m->breakdown_torque_ratio;
+        double s_r = 1.0 - m->rated_speed_rpm / m->synchronous_speed_rpm;
+        p->motor_breakdown = k * T_rated;
+        p->motor_slip_b = s_r * (k + sqrt(k * k - 1.0));
+    }
+}
+
+double bd_drive_torque(const bd_sim *sim, bd_pulley_body *p)
+{
+    const bd_drive_def *d = &p->def->drive;
+    double t = sim->t, T = 0.0;
+    int stopped = d->stop_mode != BD_STOP_NONE && t >= d->stop_at;
+    if (stopped && d->stop_mode == BD_STOP_COAST)
+        return 0.0;
+    if (stopped && d->stop_mode == BD_STOP_BRAKE) {
+        /* brake: the torque that would stop the pulley this step, at most
+         * brake_torque; it holds the pulley once stopped */
+        return -clip(p->omega * p->inertia / sim->dt, d->brake_torque);
+    }
+    switch (d->control) {
+    case BD_CONTROL_SPEED: {
+        double R = p->radius;
+        double w_ref = bd_start_curve_speed(d, t) / R;
+        double w_ref_next = bd_start_curve_speed(d, t + sim->dt) / R;
+        double a_ref = (w_ref_next - w_ref) / sim->dt;
+        double err = w_ref - p->omega;
+        double wc = p->ctrl_bandwidth;
+        double J = p->ctrl_inertia;
+        double T_unclipped = J * (a_ref + 2.0 * wc * err + wc * wc * p->integral);
+        T = clip(T_unclipped, d->max_torque);
+        /* integrate only while not saturated (anti-windup) */
+        if (T == T_unclipped)
+            p->integral += err * sim->dt;
+        return T;
+    }
+    case BD_CONTROL_TORQUE:
+        T = bd_table_eval(&d->torque, t);
+        break;
+    case BD_CONTROL_MOTOR:
+        T = t >= d->motor.start_time ? motor_torque(p, p->omega) * d->motor.gear_ratio : 0.0;
+        break;
+    }
+    return clip(T, d->max_torque);
+}

@@ -1,0 +1,49 @@
+/* Takeups (model-format.md `takeup`, seed 001 §4.2.2 eqs 4.63–4.65): the
+ * carriage slides along its axis a under the takeup pull F(t) (gravity: the
+ * counterweight's weight; constant_force: the set force or its table), the
+ * pulley's own weight and the belt's forces on the pulley:
+ *   (m_pulley + m_takeup)·q̈ = F(t) + m_pulley·g·(−a_y) + F_belt·a
+ * The carriage stops at the ends of `travel`. */
+#include "sim/system.h"
+
+#include <math.h>
+
+double bd_takeup_force(const bd_sim *sim, const bd_pulley_body *p, double t)
+{
+    (void)sim;
+    return bd_table_eval(&p->def->takeup.force, t);
+}
+
+/* advance the carriage one step; returns the non-conservative work done on
+ * it this step (J) and adds the set-point work to *input */
+double bd_takeup_advance(bd_sim *sim, bd_pulley_body *p, double *input)
+{
+    const bd_takeup_def *td = &p->def->takeup;
+    double F = bd_takeup_force(sim, p, sim->t);
+    /* a changing set force changes the potential −F·q: that is work put in */
+    *input += -(F - p->force_prev) * p->q;
+    p->force_prev = F;
+    double pull = F - p->def->mass * sim->gravity * p->axis[1] + p->f_axis;
+    double q_old = p->qdot;
+    p->qdot += pull / p->carriage_mass * sim->dt;
+    double q_new = p->q + p->qdot * sim->dt;
+    if (td->has_travel && (q_new < td->travel_min || q_new > td->travel_max)) {
+        q_new = q_new < td->travel_min ? td->travel_min : td->travel_max;
+        p->qdot = 0.0;
+        if (!p->at_limit)
+            bd_sim_warn(sim, "takeup '%s' reached the end of its travel (%g m) at t = %.3f s",
+                        p->def->name, q_new, sim->t);
+        p->at_limit = 1;
+    } else {
+        p->at_limit = 0;
+    }
+    double dq = q_new - p->q;
+    p->q = q_new;
+    p->cx += dq * p->axis[0];
+    p->cy += dq * p->axis[1];
+    if (p->q < p->travel_min)
+        p->travel_min = p->q;
+    if (p->q > p->travel_max)
+        p->travel_max = p->q;
+    return p->fnc_axis * 0.5 * (q_old + p->qdot) * sim->dt;
+}

@@ -1,0 +1,56 @@
+/* `beltdyn check`: what was derived from the model */
+#include "sim/system.h"
+#include "sim/timestep.h"
+
+#include <math.h>
+#include <stdio.h>
+
+void bd_sim_describe(const bd_sim *sim, FILE *f)
+{
+    const bd_model_def *def = sim->def;
+    double belt_mass = 0.0, material = 0.0;
+    for (int i = 0; i < sim->n; i++) {
+        belt_mass += sim->mass[i] - sim->material[i];
+        material += sim->material[i];
+    }
+    int dof = 2 * sim->n + sim->pulley_count + sim->idler_count;
+    for (int i = 0; i < sim->pulley_count; i++)
+        dof += sim->pulleys[i].movable;
+    fprintf(f, "model: %s\n", def->name);
+    fprintf(f, "belt loop length: %.3f m\n", sim->path.length);
+    fprintf(f, "belt elements: %d (unstretched length %.4f m)\n", sim->n, sim->l0);
+    fprintf(f, "belt nodes: %d\n", sim->n);
+    fprintf(f, "degrees of freedom: %d (2 per node, 1 per pulley and idler, 1 per "
+               "moving takeup)\n", dof);
+    fprintf(f, "stable time step: %.4g s, limited by the %s\n", sim->dt_limit,
+            bd_time_step_limit_name(sim->limit_kind));
+    fprintf(f, "time step used: %.4g s (%s)\n", sim->dt,
+            def->simulation.time_step > 0.0 ? "given" : "auto, 0.8 x limit");
+    fprintf(f, "steps for %.4g s: %.0f\n", def->simulation.duration,
+            ceil(def->simulation.duration / sim->dt));
+    fprintf(f, "pulleys:\n");
+    for (int i = 0; i < sim->pulley_count; i++) {
+        const bd_pulley_body *p = &sim->pulleys[i];
+        const bd_path_segment *sp = bd_path_span(&sim->path, i);
+        fprintf(f, "  %-12s wrap %6.1f deg, span after it %.3f m, inertia %.4g kg m2%s%s\n",
+                p->def->name, bd_path_wrap_angle(&sim->path, i) * 180.0 / 3.14159265358979,
+                sp->length, p->inertia, p->def->has_drive ? ", drive" : "",
+                p->def->has_takeup ? ", takeup" : "");
+    }
+    if (def->idler_set_count > 0)
+        fprintf(f, "idlers:\n");
+    for (int k = 0; k < def->idler_set_count; k++)
+        fprintf(f, "  span %-12s %d idlers, spacing %.4f m\n",
+                def->pulleys[def->idler_sets[k].span].name, sim->idlers_per_set[k],
+                sim->idler_spacing[k]);
+    double pulley_mass = 0.0, takeup_mass = 0.0;
+    for (int i = 0; i < sim->pulley_count; i++) {
+        pulley_mass += def->pulleys[i].mass;
+        if (def->pulleys[i].has_takeup)
+            takeup_mass += def->pulleys[i].takeup.mass;
+    }
+    fprintf(f, "masses: belt %.1f kg, material %.1f kg, pulleys %.1f kg, takeup carriages "
+               "%.1f kg\n", belt_mass, material, pulley_mass, takeup_mass);
+    for (int i = 0; i < sim->warning_count; i++)
+        fprintf(f, "warning: %s\n", sim->warnings[i]);
+}

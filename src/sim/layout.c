@@ -1,0 +1,338 @@
+/* Initial belt layout: the at-rest tension along the path and the node
+ * positions that realise it (model-format.md `initial_state`).
+ *
+ * At rest, with frictionless support normal to the belt, the tension changes
+ * along the belt only by the weight of belt and material:
+ *   dT/ds = m'(s)·g·dy/ds   →   T(s) = T_c + W(s),  W(s) = ∫ m'(s)·g dy.
+ * The level T_c comes from the takeup (force balance of its pulley along the
+ * carriage axis) or, without one, from the installed tension: the belt's
+ * unstretched length is L/(1 + T0/EA).
+ *
+ * Nodes are laid so that every element's chord is its stretched length
+ * l0·(1 + T/EA). Chords on a wrap are shorter than the arc, so the loop
+ * closes only for the right level: without takeup we solve for T_c (the
+ * unstretched length is fixed), with a takeup we move the takeup pulley
+ * along its axis (the tension is fixed by its force). This removes the
+ * tension steps between sections that seed 001 §6.1 reports. */
+#include "sim/layout.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define GRID_PER_ELEMENT 8
+
+/* weight potential W(s) sampled on a fine grid of the path */
+typedef struct weight_grid {
+    int m;
+    double ds;
+    double *W;   /* [m + 1] */
+} weight_grid;
+
+static double material_mpl_at(const bd_model_def *def, const bd_path *path, double s)
+{
+    const bd_material_def *mat = &def->material;
+    if (!mat->present || !mat->initially_loaded)
+        return 0.0;
+    double s_feed = bd_path_span_s(path, mat->feed_span, mat->feed_at);
+    /* loaded from the feed point to where the belt reaches the discharge
+     * pulley (the start of its arc) */
+    double s_dis = bd_path_arc(path, mat->discharge)->s0;
+    double L = path->length;
+    double rel = fmod(s - s_feed + 2.0 * L, L);
+    double len = fmod(s_dis - s_feed + 2.0 * L, L);
+    return rel <= len ? mat->mass_per_length : 0.0;
+}
+
+static void weight_grid_build(const bd_model_def *def, const bd_path *path, double target,
+                              weight_grid *g)
+{
+    g->m = (int)ceil(path->length / target * GRID_PER_ELEMENT) + 16;
+    g->ds = path->length / g->m;
+    g->W = malloc((size_t)(g->m + 1) * sizeof *g->W);
+    double p[2], t[2], yprev;
+    bd_path_point(path, 0.0, p, t);
+    yprev = p[1];
+    g->W[0] = 0.0;
+    for (int i = 1; i <= g->m; i++) {
+        double s = i * g->ds;
+        bd_path_point(path, s, p, t);
+        double mpl = def->belt.mass_per_length + material_mpl_at(def, path, s - 0.5 * g->ds);
+        g->W[i] = g->W[i - 1] + mpl * def->gravity * (p[1] - yprev);
+        yprev = p[1];
+    }
+}
+
+static double weight_at(const weight_grid *g, double s)
+{
+    double u = s / g->ds;
+    if (u <= 0.0)
+        return g->W[0];
+    int i = (int)u;
+    if (i >= g->m)
+        return g->W[g->m];
+    double f = u - i;
+    return (1.0 - f) * g->W[i] + f * g->W[i + 1];
+}
+
+/* smallest ds > 0 with |P(s + ds) - P(s)| = chord */
+static double advance_by_chord(const bd_path *path, double s, double chord)
+{
+    double p0[2], t0[2], p[2], t[2];
+    bd_path_point(path, s, p0, t0);
+    double ds = chord;
+    for (int it = 0; it < 30; it++) {
+        bd_path_point(path, s + ds, p, t);
+        double dx = p[0] - p0[0], dy = p[1] - p0[1];
+        double d = hypot(dx, dy);
+        if (d <= 0.0)
+            break;
+        /* d(d)/d(ds) = t·(p - p0)/d */
+        double slope = (t[0] * dx + t[1] * dy) / d;
+        if (slope < 0.2)
+            slope = 0.2;
+        double step = (chord - d) / slope;
+        ds += step;
+        if (fabs(step) < 1e-13 * (1.0 + chord))
+            break;
+    }
+    return ds;
+}
+
+/* lay n elements of unstretched length l0 under T(s) = Tc + W(s); returns
+ * the path length consumed (the loop closes when it equals path->length) */
+static double march(const bd_path *path, const weight_grid *g, double EA, double l0,
+                    double Tc, int n, double *s_nodes)
+{
+    double s = 0.0;
+    for (int i = 0; i < n; i++) {
+        if (s_nodes)
+            s_nodes[i] = s;
+        /* stretch by the tension at the element's middle: one fixed-point
+         * pass is enough since T varies slowly over one element */
+        double T = Tc + weight_at(g, s + 0.5 * l0);
+        double chord = l0 * (1.0 + T / EA);
+        double ds = advance_by_chord(path, s, chord);
+        T = Tc + weight_at(g, s + 0.5 * ds);
+        chord = l0 * (1.0 + T / EA);
+        s += advance_by_chord(path, s, chord);
+    }
+    return s;
+}
+
+/* secant solve of f(x) = 0 from two guesses */
+typedef double (*closure_fn)(double x, void *ctx);
+
+static int secant(closure_fn f, void *ctx, double x0, double x1, double tol, double *root)
+{
+    double f0 = f(x0, ctx), f1 = f(x1, ctx);
+    for (int it = 0; it < 60; it++) {
+        if (fabs(f1) < tol) {
+            *root = x1;
+            return 0;
+        }
+        if (f1 == f0)
+            break;
+        double x2 = x1 - f1 * (x1 - x0) / (f1 - f0);
+        x0 = x1;
+        f0 = f1;
+        x1 = x2;
+        f1 = f(x1, ctx);
+    }
+    *root = x1;
+    return fabs(f1) < 100.0 * tol ? 0 : 1;
+}
+
+typedef struct level_ctx {
+    const bd_path *path;
+    const weight_grid *g;
+    double EA, l0;
+    int n;
+} level_ctx;
+
+static double level_misfit(double Tc, void *vctx)
+{
+    level_ctx *c = vctx;
+    return march(c->path, c->g, c->EA, c->l0, Tc, c->n, NULL) - c->path->length;
+}
+
+/* the takeup's level: force balance of the takeup pulley along its axis,
+ *   F + (m_p + m_arc)·g·(ĝ·a) + (T_out·u_out − T_in·u_in)·a = 0,
+ * with T_in, T_out at the ends of its wrap. The belt (and load) on the wrap,
+ * m_arc, hangs on the pulley too: model-format.md's rule
+ * T = force/((u_in − u_out)·a) leaves out both weights, which on a vertical
+ * loop is several percent of the tension. */
+static int takeup_level(const bd_model_def *def, const bd_path *path, const weight_grid *g,
+                        int k, double *Tc)
+{
+    const bd_pulley_def *pd = &def->pulleys[k];
+    const bd_path_segment *arc = bd_path_arc(path, k);
+    int n = path->pulley_count;
+    const bd_path_segment *in = bd_path_span(path, (k + n - 1) % n);
+    const bd_path_segment *out = bd_path_span(path, k);
+    const double *a = pd->takeup.axis;
+    double F = bd_table_eval(&pd->takeup.force, 0.0);
+    double arc_mass = 0.0;
+    for (double u = 0.5 * g->ds; u < arc->length; u += g->ds)
+        arc_mass += g->ds * (def->belt.mass_per_length + material_mpl_at(def, path, arc->s0 + u));
+    double gravity_pull = -(pd->mass + arc_mass) * def->gravity * a[1];
+    double u_in_a = in->dir[0] * a[0] + in->dir[1] * a[1];
+    double u_out_a = out->dir[0] * a[0] + out->dir[1] * a[1];
+    double W_in = weight_at(g, arc->s0);
+    double W_out = weight_at(g, arc->s0 + arc->length);
+    double denom = u_out_a - u_in_a;
+    if (fabs(denom) < 1e-6)
+        return 1;
+    *Tc = (-F - gravity_pull - W_out * u_out_a + W_in * u_in_a) / denom;
+    return 0;
+}
+
+/* path with the takeup pulley k moved by q along its axis */
+typedef struct shift_ctx {
+    const bd_model_def *def;
+    bd_model_def moved;
+    bd_pulley_def *pulleys;
+    int k;
+    const weight_grid *g;
+    double EA, l0, Tc;
+    int n;
+    bd_path path;
+} shift_ctx;
+
+static double shift_misfit(double q, void *vctx)
+{
+    shift_ctx *c = vctx;
+    const bd_pulley_def *pd = &c->def->pulleys[c->k];
+    c->pulleys[c->k].x = pd->x + q * pd->takeup.axis[0];
+    c->pulleys[c->k].y = pd->y + q * pd->takeup.axis[1];
+    bd_path_free(&c->path);
+    bd_diag quiet;
+    bd_diag_init(&quiet);
+    int bad = bd_path_build(&c->moved, &c->path, &quiet);
+    bd_diag_free(&quiet);
+    if (bad)
+        return 1e30;
+    return march(&c->path, c->g, c->EA, c->l0, c->Tc, c->n, NULL) - c->path.length;
+}
+
+int bd_layout_belt(const bd_model_def *def, const bd_layout_request *req, bd_layout *out,
+                   char *err, size_t errlen)
+{
+    memset(out, 0, sizeof *out);
+    const bd_path *path = req->path;
+    double EA = def->belt.axial_stiffness;
+    weight_grid g;
+    weight_grid_build(def, path, req->target_length, &g);
+    int takeup = -1;
+    for (int i = 0; i < def->pulley_count; i++)
+        if (def->pulleys[i].has_takeup && def->pulleys[i].takeup.type != BD_TAKEUP_FIXED) {
+            takeup = i;
+            break;
+        }
+    int rest = def->simulation.initial_state == BD_INITIAL_REST;
+    double L = path->length;
+    double Tc = 0.0, L_un;
+    out->takeup = takeup;
+    if (!rest && takeup >= 0) {
+        if (takeup_level(def, path, &g, takeup, &Tc)) {
+            snprintf(err, errlen, "pulleys[%d] '%s': takeup axis is perpendicular to the "
+                     "belt's pull on the pulley; it cannot set the tension", takeup,
+                     def->pulleys[takeup].name);
+            free(g.W);
+            return 1;
+        }
+        /* unstretched length of the belt under T(s) */
+        L_un = 0.0;
+        for (int i = 0; i < g.m; i++)
+            L_un += g.ds / (1.0 + (Tc + 0.5 * (g.W[i] + g.W[i + 1])) / EA);
+    } else if (!rest) {
+        L_un = L / (1.0 + def->belt.initial_tension / EA);
+        Tc = def->belt.initial_tension;
+    } else {
+        L_un = L;
+        EA = INFINITY;   /* unstretched: chords are l0 */
+    }
+    int n = (int)lround(L_un / req->target_length);
+    if (n < 8)
+        n = 8;
+    double l0 = L_un / n;
+    out->n = n;
+    out->level = Tc;
+
+    if (!rest && takeup >= 0) {
+        /* the takeup pulley moves so that the loop closes */
+        shift_ctx c = {0};
+        c.def = def;
+        c.moved = *def;
+        c.pulleys = malloc((size_t)def->pulley_count * sizeof *c.pulleys);
+        memcpy(c.pulleys, def->pulleys, (size_t)def->pulley_count * sizeof *c.pulleys);
+        c.moved.pulleys = c.pulleys;
+        c.k = takeup;
+        c.g = &g;
+        c.EA = EA;
+        c.l0 = l0;
+        c.Tc = Tc;
+        c.n = n;
+        double q;
+        int bad = secant(shift_misfit, &c, 0.0, 0.01 * l0, 1e-10 * L, &q);
+        shift_misfit(q, &c);
+        free(c.pulleys);
+        if (bad) {
+            bd_path_free(&c.path);
+            snprintf(err, errlen, "could not lay the belt on its path: the takeup pulley '%s' "
+                     "finds no position that closes the loop", def->pulleys[takeup].name);
+            free(g.W);
+            return 1;
+        }
+        out->takeup_shift = q;
+        out->path = c.path;
+    } else if (!rest) {
+        level_ctx c = {path, &g, EA, l0, n};
+        double Tfit;
+        if (secant(level_misfit, &c, Tc, Tc + 0.001 * EA + 1.0, 1e-10 * L, &Tfit)) {
+            snprintf(err, errlen, "could not lay the belt on its path with installed tension "
+                     "%g N", def->belt.initial_tension);
+            free(g.W);
+            return 1;
+        }
+        Tc = Tfit;
+        out->level = Tc;
+        bd_diag quiet;
+        bd_diag_init(&quiet);
+        bd_path_build(def, &out->path, &quiet);
+        bd_diag_free(&quiet);
+    } else {
+        /* unstretched: scale l0 so the chords close the loop */
+        double lo = l0 * 0.9, hi = l0 * 1.1;
+        for (int it = 0; it < 80; it++) {
+            double mid = 0.5 * (lo + hi);
+            if (march(path, &g, INFINITY, mid, 0.0, n, NULL) > L)
+                hi = mid;
+            else
+                lo = mid;
+        }
+        l0 = 0.5 * (lo + hi);
+        bd_diag quiet;
+        bd_diag_init(&quiet);
+        bd_path_build(def, &out->path, &quiet);
+        bd_diag_free(&quiet);
+    }
+    out->l0 = l0;
+    out->s = malloc((size_t)n * sizeof *out->s);
+    out->tension = malloc((size_t)n * sizeof *out->tension);
+    march(&out->path, &g, EA, l0, Tc, n, out->s);
+    for (int i = 0; i < n; i++) {
+        double s_mid = 0.5 * (out->s[i] + (i + 1 < n ? out->s[i + 1] : out->path.length));
+        out->tension[i] = rest ? 0.0 : Tc + weight_at(&g, s_mid);
+    }
+    free(g.W);
+    return 0;
+}
+
+void bd_layout_free(bd_layout *l)
+{
+    free(l->s);
+    free(l->tension);
+    bd_path_free(&l->path);
+    memset(l, 0, sizeof *l);
+}

@@ -1,0 +1,109 @@
+/* The run: optional stabilization, then the step loop with outputs at every
+ * output interval, a progress line on a terminal, and a clean stop on
+ * divergence or SIGINT with everything written so far flushed and valid. */
+#include "io/outputs.h"
+#include "sim/system.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include <time.h>
+
+static double wall_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static void progress(const bd_sim *sim, double duration, double wall)
+{
+    double frac = sim->t / duration;
+    double remaining = frac > 0.0 ? wall * (1.0 - frac) / frac : 0.0;
+    fprintf(stderr, "\r  t = %8.3f s  %5.1f%%  wall %7.1f s  remaining %7.1f s  %6.2fx real time ",
+            sim->t, 100.0 * frac, wall, remaining, wall > 0.0 ? sim->t / wall : 0.0);
+}
+
+/* energy at t = 0: the reference of the balance */
+static void energy_start(bd_sim *sim)
+{
+    bd_energy *en = &sim->energy;
+    en->potential = bd_energy_potential(sim);
+    en->kinetic = 0.0;
+    en->dissipated = 0.0;
+    en->input = 0.0;
+    en->max_kinetic = 0.0;
+    en->balance_error_rel = 0.0;
+    en->initial = en->potential;
+}
+
+int bd_sim_run(bd_sim *sim, const bd_run_options *opt, char *err, size_t errlen)
+{
+    double wall0 = wall_seconds();
+    if (sim->def->simulation.stabilize && bd_sim_stabilize(sim, NULL)) {
+        snprintf(err, errlen, "%s", sim->fail_msg);
+        return BD_RUN_FAILED;
+    }
+    bd_outputs out;
+    if (bd_outputs_open(&out, sim, opt->out_dir, err, errlen))
+        return BD_RUN_BAD_INPUT;
+    energy_start(sim);
+    const double duration = sim->def->simulation.duration;
+    const double interval = sim->def->simulation.output_interval;
+    const double dt = sim->dt;
+    bd_outputs_row(&out, sim, sim->t);
+    double next_out = interval;
+    double last_progress = 0.0;
+    int status = BD_RUN_OK;
+    while (sim->t < duration - 0.5 * dt) {
+        double t_step = sim->t;
+        sim->want_energy = t_step >= next_out - 0.5 * dt;
+        if (bd_step_once(sim)) {
+            status = BD_RUN_FAILED;
+            break;
+        }
+        if (sim->want_energy) {
+            sim->want_energy = 0;
+            bd_energy_update_balance(sim);
+            bd_outputs_row(&out, sim, t_step);
+            while (next_out <= t_step + 0.5 * dt)
+                next_out += interval;
+            if (opt->interrupted && *opt->interrupted) {
+                status = BD_RUN_INTERRUPTED;
+                break;
+            }
+            if (opt->progress) {
+                double w = wall_seconds() - wall0;
+                if (w - last_progress > 0.25) {
+                    progress(sim, duration, w);
+                    last_progress = w;
+                }
+            }
+        }
+    }
+    if (status == BD_RUN_OK) {
+        /* the final state */
+        sim->energy.potential = bd_energy_potential(sim);
+        bd_energy_update_balance(sim);
+        bd_outputs_row(&out, sim, sim->t);
+    }
+    if (opt->progress) {
+        progress(sim, duration, wall_seconds() - wall0);
+        fputc('\n', stderr);
+    }
+    if (status == BD_RUN_FAILED)
+        snprintf(err, errlen, "%s", sim->fail_msg);
+    else if (status == BD_RUN_INTERRUPTED)
+        snprintf(err, errlen, "interrupted at t = %.4f s; outputs written up to that time", sim->t);
+    if (sim->tension_min < 0.0)
+        bd_sim_warn(sim, "the belt is in compression (lowest tension %.0f N at t = %.3f s, "
+                    "s = %.2f m): raise the takeup force", sim->tension_min, sim->tension_min_t,
+                    sim->tension_min_s);
+    const char *word = status == BD_RUN_OK ? "completed"
+                     : status == BD_RUN_FAILED ? "failed" : "interrupted";
+    if (bd_outputs_close(&out, sim, wall_seconds() - wall0, word) && status == BD_RUN_OK) {
+        snprintf(err, errlen, "could not write the outputs in '%s'", opt->out_dir);
+        return BD_RUN_FAILED;
+    }
+    return status;
+}

@@ -1,0 +1,202 @@
+/* The simulated system: parameters derived once from the model (never
+ * changed by a step) and the state that the step loop advances. Belt nodes
+ * and elements are stored as flat arrays (struct of arrays). Element e joins
+ * node e to node e+1 (mod N): the belt is a closed loop. */
+#ifndef BD_SYSTEM_H
+#define BD_SYSTEM_H
+
+#include "beltdyn/model.h"
+#include "beltdyn/sim.h"
+#include "model/path.h"
+
+/* a tracker follows which belt element is currently over a fixed point of
+ * the path (idler, probe, feed point): the belt moves through it */
+typedef struct bd_tracker {
+    double p[2];      /* m, the fixed point */
+    double dir[2];    /* unit travel direction of the path there */
+    double s;         /* m, its path coordinate */
+    int element;      /* element currently over it */
+    double gamma;     /* 0..1 position of the foot point on that element */
+} bd_tracker;
+
+typedef struct bd_pulley_body {
+    const bd_pulley_def *def;
+    double radius;          /* m */
+    double inertia;         /* kg·m², pulley + drive inertia (floored > 0) */
+    double wrap;            /* ±1: sense the belt turns (+ ccw) */
+    double mu_s, mu_d;
+    double bearing_damping; /* N·m·s */
+    int movable;            /* a gravity or constant_force takeup */
+    double axis[2];         /* unit axis of the carriage */
+    double carriage_mass;   /* kg moving along the axis (pulley + takeup) */
+    double k_contact;       /* N/m penalty stiffness of a node on it */
+    double c_contact;       /* N·s/m contact damping */
+    /* contact window: nodes first .. first+count-1 (mod N) were in contact */
+    int win_first, win_count;
+    int win_max;            /* capacity of the scratch arrays below */
+    /* per-contact scratch for the stick-force solve [win_max] */
+    int *c_node;
+    double *c_normal;       /* N, normal force */
+    double *c_tx, *c_ty;    /* unit tangent (positive in the wrap sense) */
+    double *c_f;            /* N, friction (+ = retards the belt) */
+    int *c_slip;
+    int contact_count;
+    /* results of the contact pass of this step */
+    double alpha;           /* rad/s² angular acceleration */
+    double f_axis;          /* N belt force on the pulley along its axis */
+    double fnc_axis;        /* N its non-conservative part */
+    double torque_friction; /* N·m belt friction torque on the pulley */
+    double torque_external; /* N·m drive + bearing torque this step */
+    /* state */
+    double omega;           /* rad/s, positive drives the belt forward */
+    double q, qdot;         /* m, m/s carriage travel along axis */
+    double cx, cy;          /* m, current centre */
+    double drive_torque;    /* N·m last applied by the drive */
+    double torque_max_abs;  /* N·m largest |drive torque| */
+    double travel_min, travel_max;
+    double integral;        /* speed-controller integral state (rad) */
+    double ctrl_inertia;    /* kg·m² the speed controller is tuned for */
+    double ctrl_bandwidth;  /* rad/s of its closed speed loop */
+    double motor_breakdown; /* N·m at the motor shaft (motor control) */
+    double motor_slip_b;    /* breakdown slip, - */
+    double bearing_torque;  /* N·m bearing torque this step */
+    double omega_ref_prev;  /* rad/s */
+    double force_prev;      /* N takeup force at the previous step */
+    int at_limit;           /* takeup carriage at a travel limit */
+} bd_pulley_body;
+
+typedef struct bd_idler {
+    bd_tracker tr;
+    double centre[2];      /* m */
+    double radius;         /* m */
+    double inertia;        /* kg·m² */
+    double mu_s, mu_d;
+    double rolling;        /* rolling resistance coefficient */
+    double k_contact, c_contact;
+    double omega;          /* rad/s, + = surface moves with the belt */
+    double alpha;          /* rad/s² this step */
+    double torque;         /* N·m belt friction torque this step */
+    double normal;         /* N, last normal force (for energy) */
+    double penetration;    /* m, last */
+    int set;               /* index of its idler set */
+} bd_idler;
+
+typedef struct bd_probe {
+    bd_tracker tr;
+    double tension_max, tension_min, tension, speed;
+} bd_probe;
+
+typedef enum bd_time_step_limit {
+    BD_LIMIT_AXIAL = 0, BD_LIMIT_BENDING, BD_LIMIT_CONTACT_PULLEY,
+    BD_LIMIT_CONTACT_IDLER, BD_LIMIT_USER
+} bd_time_step_limit;
+
+typedef struct bd_energy {
+    double kinetic, potential, dissipated, input;
+    double initial;        /* E_kin + E_pot at t = 0 */
+    double max_kinetic;
+    double balance_error_rel; /* largest so far */
+} bd_energy;
+
+struct bd_sim {
+    const bd_model_def *def;
+    bd_path path;
+    double gravity;
+
+    /* belt: N nodes, N elements */
+    int n;
+    double l0;             /* m, unstretched element length (all equal) */
+    double EA, EI;         /* N, N·m² */
+    double k_axial;        /* N/m = EA/l0 */
+    double c_axial;        /* N·s/m dashpot of one element */
+    double k_bend;         /* N·m/rad = EI/l0 */
+    double belt_mpl;       /* kg/m */
+    double *x, *y;         /* [n] m */
+    double *vx, *vy;       /* [n] m/s at the half step */
+    double *fx, *fy;       /* [n] N total force */
+    double *fnx, *fny;     /* [n] N non-conservative part (energy account) */
+    double *mass;          /* [n] kg belt + material */
+    double *material;      /* [n] kg of material on the node */
+    double *tension;       /* [n] N of element e (spring + dashpot) */
+    double *ux, *uy;       /* [n] unit vector of element e */
+    double *len;           /* [n] m current length of element e */
+    double *s_node0;       /* [n] m initial path coordinate of node */
+    int *seg_hint;         /* [n] segment guess for Eulerian s of elements */
+
+    int pulley_count;
+    bd_pulley_body *pulleys;
+    int idler_count;
+    bd_idler *idlers;
+    int *idlers_per_set;   /* [idler_set_count] */
+    double *idler_spacing; /* [idler_set_count] actual spacing, m */
+    int probe_count;
+    bd_probe *probes;
+
+    /* material feed/discharge */
+    int has_feed;
+    bd_tracker feed;
+    double material_mpl;
+    int discharge_pulley;
+
+    /* time */
+    double dt, dt_limit;
+    bd_time_step_limit limit_kind;
+    int limit_index;       /* pulley/idler index when contact limits */
+    double t;
+    long steps;
+
+    /* bookkeeping */
+    bd_energy energy;
+    double tension_max, tension_max_t, tension_max_s;
+    double tension_min, tension_min_t, tension_min_s;
+    int stabilize_iterations;
+    double stabilize_final_kinetic;
+    int friction_off;      /* during stabilization */
+    int want_energy;       /* book the potential energy in the next step */
+    int failed;
+    char fail_msg[512];
+    int warn_compression, warn_liftoff_reported, warn_travel_limit;
+    char **warnings;
+    int warning_count;
+};
+
+/* build.c */
+void bd_sim_warn(bd_sim *sim, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+/* tracker.c */
+void bd_tracker_init(const bd_sim *sim, bd_tracker *tr, double s);
+void bd_tracker_update(const bd_sim *sim, bd_tracker *tr);
+double bd_tracker_tension(const bd_sim *sim, const bd_tracker *tr);
+
+/* belt_lumped.c: elastic, damping, bending, gravity forces on nodes */
+void bd_belt_forces(bd_sim *sim);
+double bd_belt_elastic_energy(const bd_sim *sim);
+
+/* pulley_contact.c / idler_contact.c */
+void bd_pulley_contact(bd_sim *sim, bd_pulley_body *p, double external_torque);
+void bd_idler_contact(bd_sim *sim, bd_idler *id);
+
+/* drive.c */
+void bd_drive_prepare(bd_sim *sim, bd_pulley_body *p, double reflected_inertia);
+double bd_drive_torque(const bd_sim *sim, bd_pulley_body *p);
+double bd_start_curve_speed(const bd_drive_def *d, double t);
+/* takeup.c */
+double bd_takeup_force(const bd_sim *sim, const bd_pulley_body *p, double t);
+double bd_takeup_advance(bd_sim *sim, bd_pulley_body *p, double *input);
+
+/* energy.c */
+double bd_energy_potential(const bd_sim *sim);
+void bd_energy_update_balance(bd_sim *sim);
+
+/* step.c */
+int bd_step_once(bd_sim *sim);
+
+/* output helpers: Eulerian path coordinate of element e's midpoint */
+double bd_element_s(const bd_sim *sim, int e);
+double bd_element_speed(const bd_sim *sim, int e);
+
+#endif
