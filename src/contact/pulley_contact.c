@@ -10,7 +10,10 @@
  * linearly implicit: the force is the one the spring has at the end of the
  * step, given the node's other forces F_o and its velocity,
  *   f_n = k_c·(δ − Δt·v_n − Δt²·F_o,n/m) / (1 + k_c·Δt²/m)  ≥ 0,
- * stable for any k_c. Its work is booked as non-conservative (with the
+ * stable for any k_c. A node just off the shell (δ < 0) is in contact when
+ * this force is positive: it would reach the shell during the step. Without
+ * that, nodes resting on the shell chatter in and out of contact and the
+ * belt creeps on the pulley for want of friction. Its work is booked as non-conservative (with the
  * dissipated energy): the spring holds at most ½·f_n²/k_c, a few joules, and
  * the implicit force is not the gradient of ½k_cδ².
  *
@@ -31,13 +34,18 @@
 #include <math.h>
 
 #define WINDOW_MARGIN 3
+/* predictive contact gap, as a fraction of the element length */
+#define CONTACT_GAP 0.02
 
 static void normal_forces(bd_sim *sim, bd_pulley_body *p)
 {
     const int n = sim->n;
     double R = p->radius;
+    /* predictive contact: a node within this gap of the shell may reach it
+     * during the step; the implicit force says whether it does */
+    double Rc = R + CONTACT_GAP * sim->l0;
     double vpx = p->qdot * p->axis[0], vpy = p->qdot * p->axis[1];
-    int first_found = -1, last_found = -1;
+    int found = 0, first_found = 0, last_found = 0;
     p->contact_count = 0;
     p->f_axis = 0.0;
     p->fnc_axis = 0.0;
@@ -49,7 +57,7 @@ static void normal_forces(bd_sim *sim, bd_pulley_body *p)
         int k = ((start + w) % n + n) % n;
         double rx = sim->x[k] - p->cx, ry = sim->y[k] - p->cy;
         double a2 = rx * rx + ry * ry;
-        if (a2 >= R * R)
+        if (a2 >= Rc * Rc)
             continue;
         double a = sqrt(a2);
         double nx = rx / a, ny = ry / a;
@@ -60,8 +68,8 @@ static void normal_forces(bd_sim *sim, bd_pulley_body *p)
         double dt = sim->dt;
         double fn = p->k_contact * (delta - dt * vn - dt * dt * Fo / m)
                   / (1.0 + p->k_contact * dt * dt / m);
-        if (fn < 0.0)
-            fn = 0.0;
+        if (fn <= 0.0)
+            continue;
         double fd = fn;   /* all of it booked as non-conservative work */
         sim->fx[k] += fn * nx;
         sim->fy[k] += fn * ny;
@@ -74,11 +82,12 @@ static void normal_forces(bd_sim *sim, bd_pulley_body *p)
         p->c_normal[c] = fn;
         p->c_tx[c] = -p->wrap * ny;
         p->c_ty[c] = p->wrap * nx;
-        if (first_found < 0)
+        if (!found)
             first_found = start + w;
+        found = 1;
         last_found = start + w;
     }
-    if (first_found >= 0) {
+    if (found) {
         p->win_first = ((first_found % n) + n) % n;
         p->win_count = last_found - first_found + 1;
     }

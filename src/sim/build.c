@@ -206,12 +206,18 @@ static void setup_probes_and_feed(bd_sim *sim)
  * point: put each span's end nodes (the ones next to a wrap) onto the shell
  * and lay the nodes between on the straight line joining them, at the same
  * fractions along the span. */
-static void onto_shell(const bd_pulley_body *pb, double *x, double *y)
+/* put node k onto pulley pb's shell at chord distance |x_k − x_ref| from
+ * the wrap node ref, turning in the sense `sense` (±1) from ref: the
+ * element between them keeps its length */
+static void onto_shell(bd_sim *sim, const bd_pulley_body *pb, int ref, int k, double sense)
 {
-    double rx = *x - pb->cx, ry = *y - pb->cy;
-    double r = hypot(rx, ry);
-    *x = pb->cx + rx * pb->radius / r;
-    *y = pb->cy + ry * pb->radius / r;
+    double c = hypot(sim->x[k] - sim->x[ref], sim->y[k] - sim->y[ref]);
+    if (c >= 2.0 * pb->radius)
+        return;
+    double a = atan2(sim->y[ref] - pb->cy, sim->x[ref] - pb->cx)
+             + sense * 2.0 * asin(c / (2.0 * pb->radius));
+    sim->x[k] = pb->cx + pb->radius * cos(a);
+    sim->y[k] = pb->cy + pb->radius * sin(a);
 }
 
 static void straighten_spans(bd_sim *sim)
@@ -237,11 +243,12 @@ static void straighten_spans(bd_sim *sim)
          * node of the wrap; likewise the arrival node */
         int a = prev, b = (last + 1) % n;
         if (sim->s_node0[i] - g->s0 < 0.5 * sim->l0) {
-            onto_shell(&sim->pulleys[gp->pulley], &sim->x[i], &sim->y[i]);
+            onto_shell(sim, &sim->pulleys[gp->pulley], prev, i, sim->pulleys[gp->pulley].wrap);
             a = i;
         }
         if (g->s0 + g->length - sim->s_node0[last] < 0.5 * sim->l0 && last != a) {
-            onto_shell(&sim->pulleys[gn->pulley], &sim->x[last], &sim->y[last]);
+            onto_shell(sim, &sim->pulleys[gn->pulley], (last + 1) % n, last,
+                       -sim->pulleys[gn->pulley].wrap);
             b = last;
         }
         double ax = sim->x[a], ay = sim->y[a], bx = sim->x[b], by = sim->y[b];

@@ -143,17 +143,17 @@ static int secant(closure_fn f, void *ctx, double x0, double x1, double tol, dou
     return fabs(f1) < 100.0 * tol ? 0 : 1;
 }
 
-typedef struct level_ctx {
+typedef struct length_ctx {
     const bd_path *path;
     const weight_grid *g;
-    double EA, l0;
+    double EA, Tc;
     int n;
-} level_ctx;
+} length_ctx;
 
-static double level_misfit(double Tc, void *vctx)
+static double length_misfit(double l0, void *vctx)
 {
-    level_ctx *c = vctx;
-    return march(c->path, c->g, c->EA, c->l0, Tc, c->n, NULL) - c->path->length;
+    length_ctx *c = vctx;
+    return march(c->path, c->g, c->EA, l0, c->Tc, c->n, NULL) - c->path->length;
 }
 
 /* the takeup's level: force balance of the takeup pulley along its axis,
@@ -286,32 +286,19 @@ int bd_layout_belt(const bd_model_def *def, const bd_layout_request *req, bd_lay
         }
         out->takeup_shift = q;
         out->path = c.path;
-    } else if (!rest) {
-        level_ctx c = {path, &g, EA, l0, n};
-        double Tfit;
-        if (secant(level_misfit, &c, Tc, Tc + 0.001 * EA + 1.0, 1e-10 * L, &Tfit)) {
-            snprintf(err, errlen, "could not lay the belt on its path with installed tension "
-                     "%g N", def->belt.initial_tension);
+    } else {
+        /* no takeup: the installed tension T0 (or none, at rest) is kept and
+         * the unstretched element length found so the chords close the loop;
+         * the chords of the wraps make it a little shorter than L/(1+T0/EA),
+         * which would otherwise lower the tension by EA·(arc − chord)/L */
+        length_ctx c = {path, &g, EA, Tc, n};
+        double l_fit;
+        if (secant(length_misfit, &c, l0, l0 * 0.999, 1e-10 * L, &l_fit)) {
+            snprintf(err, errlen, "could not lay the belt on its path");
             free(g.W);
             return 1;
         }
-        Tc = Tfit;
-        out->level = Tc;
-        bd_diag quiet;
-        bd_diag_init(&quiet);
-        bd_path_build(def, &out->path, &quiet);
-        bd_diag_free(&quiet);
-    } else {
-        /* unstretched: scale l0 so the chords close the loop */
-        double lo = l0 * 0.9, hi = l0 * 1.1;
-        for (int it = 0; it < 80; it++) {
-            double mid = 0.5 * (lo + hi);
-            if (march(path, &g, INFINITY, mid, 0.0, n, NULL) > L)
-                hi = mid;
-            else
-                lo = mid;
-        }
-        l0 = 0.5 * (lo + hi);
+        l0 = l_fit;
         bd_diag quiet;
         bd_diag_init(&quiet);
         bd_path_build(def, &out->path, &quiet);
