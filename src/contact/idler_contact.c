@@ -2,10 +2,17 @@
  * that is over it, at the foot point of its centre on the element.
  *
  * Normal: foot point p = x_e + γ·(x_j − x_e); the belt is pushed away from
- * the centre along n̂ = (p − c)/|p − c| by f_n = k_c·(R − |p − c|) − c_c·v_n
- * ≥ 0, shared by the element's nodes by the lever rule, (1−γ) and γ
- * (eqs 4.95–4.102; the thesis' 4.100 gives node i the share d_i/l, which
- * puts more force on the farther node: we use the lever rule).
+ * the centre along n̂ = (p − c)/|p − c| by a penalty spring on the
+ * penetration δ = R − |p − c|, shared by the element's nodes by the lever
+ * rule, (1−γ) and γ (eqs 4.95–4.102; the thesis' 4.100 gives node i the
+ * share d_i/l, which puts more force on the farther node). As for pulleys
+ * (pulley_contact.c) the spring is stiff and linearly implicit: with the
+ * contact point's effective mass m* = 1/((1−γ)²/m_e + γ²/m_j), its normal
+ * velocity v_n and the normal acceleration a_o,n the other forces give it,
+ *   f_n = k_c·(δ − Δt·v_n − Δt²·a_o,n) / (1 + k_c·Δt²/m*)  ≥ 0,
+ * and its work is booked as non-conservative: a stiff explicit contact
+ * would ring near the step's stability limit, where the scheme's energy is
+ * no longer ½kδ² + ½mv², and the bookkeeping would drift.
  *
  * Rolling (indentation) resistance: a force rr·f_n on the belt against its
  * motion over the idler (model-format.md `rolling_resistance`), smoothed
@@ -25,6 +32,8 @@
 /* m/s: below this belt speed over the idler the rolling resistance fades
  * linearly to zero (a belt at rest is not pushed) */
 #define ROLLING_SPEED 0.01
+/* predictive contact gap, as a fraction of the element length */
+#define IDLER_CONTACT_GAP 0.02
 
 void bd_idler_contact(bd_sim *sim, bd_idler *id)
 {
@@ -32,27 +41,30 @@ void bd_idler_contact(bd_sim *sim, bd_idler *id)
     id->alpha = 0.0;
     id->torque = 0.0;
     id->normal = 0.0;
-    id->penetration = 0.0;
     int e = id->tr.element, j = e + 1 == sim->n ? 0 : e + 1;
     double g = id->tr.gamma, h = 1.0 - g;
     double px = sim->x[e] + g * (sim->x[j] - sim->x[e]);
     double py = sim->y[e] + g * (sim->y[j] - sim->y[e]);
     double rx = px - id->centre[0], ry = py - id->centre[1];
     double d2 = rx * rx + ry * ry;
-    if (d2 >= id->radius * id->radius)
+    double Rc = id->radius + IDLER_CONTACT_GAP * sim->l0;
+    if (d2 >= Rc * Rc)
         return;
     double d = sqrt(d2);
     double nx = rx / d, ny = ry / d;
     double vcx = h * sim->vx[e] + g * sim->vx[j];
     double vcy = h * sim->vy[e] + g * sim->vy[j];
-    double fd = -id->c_contact * (nx * vcx + ny * vcy);
-    double fn = id->k_contact * (id->radius - d) + fd;
-    if (fn < 0.0) {
-        fd -= fn;
-        fn = 0.0;
-    }
+    double me = sim->mass[e], mj = sim->mass[j];
+    double m_eff = 1.0 / (h * h / me + g * g / mj);
+    double aon = nx * (h * sim->fx[e] / me + g * sim->fx[j] / mj)
+               + ny * (h * sim->fy[e] / me + g * sim->fy[j] / mj);
+    double dt = sim->dt;
+    double fn = id->k_contact * (id->radius - d - dt * (nx * vcx + ny * vcy) - dt * dt * aon)
+              / (1.0 + id->k_contact * dt * dt / m_eff);
+    if (fn <= 0.0)
+        return;
+    double fd = fn;   /* booked as non-conservative work */
     id->normal = fn;
-    id->penetration = id->radius - d;
     /* tangent along the travel direction */
     double tx = -ny, ty = nx;
     if (tx * id->tr.dir[0] + ty * id->tr.dir[1] < 0.0) {
@@ -79,7 +91,7 @@ void bd_idler_contact(bd_sim *sim, bd_idler *id)
     sim->fny[j] += g * Fny;
     if (sim->friction_off)
         return;
-    double me = sim->mass[e], mj = sim->mass[j], R = id->radius;
+    double R = id->radius;
     double vr = vt - id->omega * R;
     double num = vr / sim->dt + h * (tx * sim->fx[e] + ty * sim->fy[e]) / me
                + g * (tx * sim->fx[j] + ty * sim->fy[j]) / mj;

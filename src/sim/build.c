@@ -93,7 +93,6 @@ static void setup_pulleys(bd_sim *sim, const bd_layout *lay)
         }
         /* contact: stiff and linearly implicit (pulley_contact.c) */
         p->k_contact = 100.0 * sim->k_axial;
-        p->c_contact = 0.0;
         double wrap = bd_path_wrap_angle(&sim->path, i);
         p->win_max = (int)ceil((wrap + 0.5) * pd->radius / sim->l0) + 16;
         p->c_node = xcalloc((size_t)p->win_max, sizeof *p->c_node);
@@ -144,7 +143,6 @@ static void setup_idlers(bd_sim *sim)
     sim->idler_count = total;
     sim->idlers = xcalloc((size_t)total, sizeof *sim->idlers);
     int at = 0;
-    double m_node = sim->belt_mpl * sim->l0;
     for (int k = 0; k < def->idler_set_count; k++) {
         const bd_idler_set_def *set = &def->idler_sets[k];
         const bd_path_segment *sp = bd_path_span(&sim->path, set->span);
@@ -158,6 +156,11 @@ static void setup_idlers(bd_sim *sim)
             bd_idler *id = &sim->idlers[at++];
             double s = sp->s0 + (j + 1) * sim->idler_spacing[k];
             bd_tracker_init(sim, &id->tr, s);
+            /* touch the belt as laid (not the ideal path): no initial kick */
+            int e = id->tr.element, e1 = e + 1 == sim->n ? 0 : e + 1;
+            double g = id->tr.gamma;
+            id->tr.p[0] = sim->x[e] + g * (sim->x[e1] - sim->x[e]);
+            id->tr.p[1] = sim->y[e] + g * (sim->y[e1] - sim->y[e]);
             id->radius = set->radius;
             id->centre[0] = id->tr.p[0] + nx * set->radius;
             id->centre[1] = id->tr.p[1] + ny * set->radius;
@@ -165,12 +168,8 @@ static void setup_idlers(bd_sim *sim)
             id->mu_s = set->friction.mu_static;
             id->mu_d = set->friction.mu_dynamic;
             id->rolling = set->rolling_resistance;
-            /* idler contact (explicit): a node on it rings at most at the
-             * belt's highest axial frequency (DESIGN.md: stiffness from node
-             * mass and time step, not a fixed 1e12); half-critical damping
-             * keeps it from bouncing */
-            id->k_contact = sim->k_axial;
-            id->c_contact = 2.0 * 0.5 * sqrt(id->k_contact * m_node);
+            /* stiff, linearly implicit contact (idler_contact.c) */
+            id->k_contact = 100.0 * sim->k_axial;
             id->set = k;
         }
     }

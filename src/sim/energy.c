@@ -1,7 +1,7 @@
 /* Energy bookkeeping (cli.md `energy`): potential energy of gravity (belt,
  * material, pulleys; y = 0 is the datum), elastic energy of the belt
- * elements, bending springs and idler contact springs (the stiff implicit
- * pulley contact is booked as work: pulley_contact.c), and the potential −F·q of
+ * elements and bending springs (the stiff implicit contacts with pulleys and
+ * idlers are booked as work: pulley_contact.c), and the potential −F·q of
  * the takeup pulls (a gravity takeup's counterweight included). Kinetic
  * energy and the work of dissipative forces and drives are booked in the
  * step (step.c). */
@@ -21,10 +21,6 @@ double bd_energy_potential(const bd_sim *sim)
         e += p->def->mass * g * p->cy;
         if (p->movable)
             e -= bd_takeup_force(sim, p, sim->t) * p->q;
-    }
-    for (int i = 0; i < sim->idler_count; i++) {
-        const bd_idler *id = &sim->idlers[i];
-        e += 0.5 * id->k_contact * id->penetration * id->penetration;
     }
     return e;
 }

@@ -30,7 +30,6 @@ typedef struct bd_pulley_body {
     double axis[2];         /* unit axis of the carriage */
     double carriage_mass;   /* kg moving along the axis (pulley + takeup) */
     double k_contact;       /* N/m penalty stiffness of a node on it */
-    double c_contact;       /* N·s/m contact damping */
     /* contact window: nodes first .. first+count-1 (mod N) were in contact */
     int win_first, win_count;
     int win_max;            /* capacity of the scratch arrays below */
@@ -72,12 +71,11 @@ typedef struct bd_idler {
     double inertia;        /* kg·m² */
     double mu_s, mu_d;
     double rolling;        /* rolling resistance coefficient */
-    double k_contact, c_contact;
+    double k_contact;      /* N/m penalty stiffness */
     double omega;          /* rad/s, + = surface moves with the belt */
     double alpha;          /* rad/s² this step */
     double torque;         /* N·m belt friction torque this step */
-    double normal;         /* N, last normal force (for energy) */
-    double penetration;    /* m, last */
+    double normal;         /* N, last normal force */
     int set;               /* index of its idler set */
 } bd_idler;
 
@@ -87,8 +85,7 @@ typedef struct bd_probe {
 } bd_probe;
 
 typedef enum bd_time_step_limit {
-    BD_LIMIT_AXIAL = 0, BD_LIMIT_BENDING, BD_LIMIT_CONTACT_PULLEY,
-    BD_LIMIT_CONTACT_IDLER, BD_LIMIT_USER
+    BD_LIMIT_AXIAL = 0, BD_LIMIT_BENDING, BD_LIMIT_USER
 } bd_time_step_limit;
 
 typedef struct bd_energy {

@@ -4,10 +4,11 @@
  * The highest frequency of the belt is that of a node between two elements
  * moving against its neighbours: for the axial springs ω² = 4k/m (k = EA/l0,
  * m = node mass), for the bending springs (k_θ = EI/l0, lever l0, a node and
- * its two neighbours) ω² = 16·k_θ/(m·l0²); a contact spring k_c on the node
- * adds k_c/m (idlers; pulley contact is implicit). Their sum bounds the largest eigenvalue (Gershgorin). The
+ * its two neighbours) ω² = 16·k_θ/(m·l0²). Their sum bounds the largest
+ * eigenvalue (Gershgorin); contacts are linearly implicit and add no limit
+ * (pulley_contact.c, idler_contact.c). The
  * Kelvin–Voigt dashpot of ratio ζ_e (eq 4.3, per element) damps that mode
- * with ζ = 2ζ_e; contact damping adds its share. */
+ * with ζ = 2ζ_e. */
 #include "sim/timestep.h"
 
 #include <math.h>
@@ -17,8 +18,6 @@ const char *bd_time_step_limit_name(bd_time_step_limit kind)
     switch (kind) {
     case BD_LIMIT_AXIAL: return "axial stiffness of the belt elements";
     case BD_LIMIT_BENDING: return "bending stiffness of the belt";
-    case BD_LIMIT_CONTACT_PULLEY: return "belt-pulley contact stiffness";
-    case BD_LIMIT_CONTACT_IDLER: return "belt-idler contact stiffness";
     case BD_LIMIT_USER: return "the time step given in the model";
     }
     return "?";
@@ -29,24 +28,13 @@ int bd_time_step_choose(bd_sim *sim, bd_diag *diag)
     double m = sim->belt_mpl * sim->l0;   /* lightest node: no material */
     double w_axial = 4.0 * sim->k_axial;
     double w_bend = 16.0 * sim->k_bend / (sim->l0 * sim->l0);
-    double k_c = 0.0, c_c = 0.0;
-    bd_time_step_limit contact_kind = BD_LIMIT_CONTACT_PULLEY;
-    /* pulley contact is linearly implicit: it sets no limit */
-    for (int i = 0; i < sim->idler_count; i++)
-        if (sim->idlers[i].k_contact > k_c) {
-            k_c = sim->idlers[i].k_contact;
-            c_c = sim->idlers[i].c_contact;
-            contact_kind = BD_LIMIT_CONTACT_IDLER;
-        }
-    double omega = sqrt((w_axial + w_bend + k_c) / m);
-    double zeta = (4.0 * sim->c_axial + c_c) / (2.0 * m * omega);
+    double omega = sqrt((w_axial + w_bend) / m);
+    double zeta = 4.0 * sim->c_axial / (2.0 * m * omega);
     sim->dt_limit = 2.0 / omega * (sqrt(1.0 + zeta * zeta) - zeta);
     /* what limits it: the largest contribution to ω² */
     sim->limit_kind = BD_LIMIT_AXIAL;
-    if (w_bend > w_axial && w_bend > k_c)
+    if (w_bend > w_axial)
         sim->limit_kind = BD_LIMIT_BENDING;
-    else if (k_c > w_axial && k_c > w_bend)
-        sim->limit_kind = contact_kind;
 
     double user = sim->def->simulation.time_step;
     if (user > 0.0) {
