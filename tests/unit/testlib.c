@@ -8,3 +8,36 @@ int bd_test_finish(const char *name)
     printf("%s: %d checks, %d failed\n", name, bd_test_checks, bd_test_failures);
     return bd_test_failures == 0 ? 0 : 1;
 }
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "sim/system.h"
+
+int bd_test_make_sim(const char *yaml, bd_model_def *def, bd_sim **sim)
+{
+    bd_diag d;
+    bd_diag_init(&d);
+    int bad = bd_model_load_string(yaml, strlen(yaml), "test.yaml", def, &d);
+    if (!bad)
+        bad = bd_sim_create(def, sim, &d);
+    for (int i = 0; i < d.count + d.warning_count; i++)
+        fprintf(stderr, "%s\n", d.lines[i]);
+    bd_diag_free(&d);
+    if (bad) {
+        fprintf(stderr, "test model did not load\n");
+        exit(2);
+    }
+    return 0;
+}
+
+int bd_test_run_to(bd_sim *sim, double t)
+{
+    char err[512];
+    while (sim->t < t - 0.5 * sim->dt)
+        if (bd_sim_step(sim, 1, err, sizeof err)) {
+            fprintf(stderr, "run failed: %s\n", err);
+            return 1;
+        }
+    return 0;
+}

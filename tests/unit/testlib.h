@@ -24,3 +24,10 @@ extern int bd_test_checks;
 
 int bd_test_finish(const char *name);
 #endif
+
+/* build a simulation from model text; aborts the test on failure */
+struct bd_model_def;
+struct bd_sim;
+int bd_test_make_sim(const char *yaml, struct bd_model_def *def, struct bd_sim **sim);
+/* advance to time t (s); returns 0, or 1 if the run failed */
+int bd_test_run_to(struct bd_sim *sim, double t);
