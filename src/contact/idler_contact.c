@@ -10,9 +10,9 @@
  * contact point's effective mass m* = 1/((1−γ)²/m_e + γ²/m_j), its normal
  * velocity v_n and the normal acceleration a_o,n the other forces give it,
  *   f_n = k_c·(δ − Δt·v_n − Δt²·a_o,n) / (1 + k_c·Δt²/m*)  ≥ 0,
- * and its work is booked as non-conservative: a stiff explicit contact
- * would ring near the step's stability limit, where the scheme's energy is
- * no longer ½kδ² + ½mv², and the bookkeeping would drift.
+ * stable for any k_c (an explicit contact this stiff would ring near the
+ * step's stability limit). The spring's own force k_c·δ is conservative;
+ * the rest of f_n is booked as non-conservative work.
  *
  * Rolling (indentation) resistance: a force rr·f_n on the belt against its
  * motion over the idler (model-format.md `rolling_resistance`), smoothed
@@ -63,7 +63,8 @@ void bd_idler_contact(bd_sim *sim, bd_idler *id)
               / (1.0 + id->k_contact * dt * dt / m_eff);
     if (fn <= 0.0)
         return;
-    double fd = fn;   /* booked as non-conservative work */
+    double delta = id->radius - d;
+    double fd = fn - (delta > 0.0 ? id->k_contact * delta : 0.0);
     id->normal = fn;
     /* tangent along the travel direction */
     double tx = -ny, ty = nx;
@@ -109,4 +110,15 @@ void bd_idler_contact(bd_sim *sim, bd_idler *id)
     sim->fny[j] -= g * f * ty;
     id->torque = f * R;
     id->alpha = id->torque / id->inertia;
+}
+
+/* elastic energy of the idler's contact spring: ½k_c·δ² at the foot point */
+double bd_idler_contact_energy(const bd_sim *sim, const bd_idler *id)
+{
+    int e = id->tr.element, j = e + 1 == sim->n ? 0 : e + 1;
+    double g = id->tr.gamma;
+    double px = sim->x[e] + g * (sim->x[j] - sim->x[e]);
+    double py = sim->y[e] + g * (sim->y[j] - sim->y[e]);
+    double delta = id->radius - hypot(px - id->centre[0], py - id->centre[1]);
+    return delta > 0.0 ? 0.5 * id->k_contact * delta * delta : 0.0;
 }

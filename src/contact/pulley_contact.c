@@ -13,9 +13,9 @@
  * stable for any k_c. A node just off the shell (δ < 0) is in contact when
  * this force is positive: it would reach the shell during the step. Without
  * that, nodes resting on the shell chatter in and out of contact and the
- * belt creeps on the pulley for want of friction. Its work is booked as non-conservative (with the
- * dissipated energy): the spring holds at most ½·f_n²/k_c, a few joules, and
- * the implicit force is not the gradient of ½k_cδ².
+ * belt creeps on the pulley for want of friction. The spring's own force
+ * k_c·δ is conservative (½k_cδ² is potential energy); the rest of f_n, what
+ * the implicit step adds to stop the node, is booked as non-conservative.
  *
  * Friction: tangent t̂ = wrap·perp(n̂) points the way the belt travels;
  * the slip speed is v_r = t̂·(v_i − v_p) − R·ω (eq 4.78). The stick force f_i
@@ -44,7 +44,10 @@ static void normal_forces(bd_sim *sim, bd_pulley_body *p)
     /* predictive contact: a node within this gap of the shell may reach it
      * during the step; the implicit force says whether it does */
     double Rc = R + CONTACT_GAP * sim->l0;
-    double vpx = p->qdot * p->axis[0], vpy = p->qdot * p->axis[1];
+    /* the shell's velocity at the end of the step, with the carriage's
+     * acceleration of the last step (a moving takeup pulley) */
+    double vp_end = p->qdot + sim->dt * p->qddot;
+    double vpx = vp_end * p->axis[0], vpy = vp_end * p->axis[1];
     int found = 0, first_found = 0, last_found = 0;
     p->contact_count = 0;
     p->f_axis = 0.0;
@@ -61,7 +64,7 @@ static void normal_forces(bd_sim *sim, bd_pulley_body *p)
             continue;
         double a = sqrt(a2);
         double nx = rx / a, ny = ry / a;
-        double vn = nx * (sim->vx[k] - vpx) + ny * (sim->vy[k] - vpy);
+        double vn = nx * (sim->vx[k] - vpx) + ny * (sim->vy[k] - vpy);   /* v_n − v_p,n */
         double m = sim->mass[k];
         double Fo = nx * sim->fx[k] + ny * sim->fy[k];
         double delta = R - a;
@@ -70,7 +73,7 @@ static void normal_forces(bd_sim *sim, bd_pulley_body *p)
                   / (1.0 + p->k_contact * dt * dt / m);
         if (fn <= 0.0)
             continue;
-        double fd = fn;   /* all of it booked as non-conservative work */
+        double fd = fn - (delta > 0.0 ? p->k_contact * delta : 0.0);
         sim->fx[k] += fn * nx;
         sim->fy[k] += fn * ny;
         sim->fnx[k] += fd * nx;
@@ -163,4 +166,22 @@ void bd_pulley_contact(bd_sim *sim, bd_pulley_body *p, double external_torque)
         return;
     }
     friction_forces(sim, p, external_torque);
+}
+
+/* elastic energy of the contact springs: ½k_c·δ² of every node inside the
+ * shell, among the nodes the window covers */
+double bd_pulley_contact_energy(const bd_sim *sim, const bd_pulley_body *p)
+{
+    const int n = sim->n;
+    double e = 0.0, R = p->radius;
+    int span = p->win_count + 2 * WINDOW_MARGIN;
+    if (span > p->win_max)
+        span = p->win_max;
+    for (int w = 0; w < span; w++) {
+        int k = ((p->win_first - WINDOW_MARGIN + w) % n + n) % n;
+        double a = hypot(sim->x[k] - p->cx, sim->y[k] - p->cy);
+        if (a < R)
+            e += 0.5 * p->k_contact * (R - a) * (R - a);
+    }
+    return e;
 }

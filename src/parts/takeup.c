@@ -20,16 +20,19 @@ double bd_takeup_advance(bd_sim *sim, bd_pulley_body *p, double *input)
 {
     const bd_takeup_def *td = &p->def->takeup;
     double F = bd_takeup_force(sim, p, sim->t);
-    /* a changing set force changes the potential −F·q: that is work put in */
-    *input += -(F - p->force_prev) * p->q;
+    /* a changing set force changes the potential −F·q: that is work put in,
+     * −∫q·dF, with q at the middle of the interval the force changed over */
+    *input += -(F - p->force_prev) * (p->q - 0.5 * p->qdot * sim->dt);
     p->force_prev = F;
     double pull = F - p->def->mass * sim->gravity * p->axis[1] + p->f_axis;
     double q_old = p->qdot;
-    p->qdot += pull / p->carriage_mass * sim->dt;
+    p->qddot = pull / p->carriage_mass;
+    p->qdot += p->qddot * sim->dt;
     double q_new = p->q + p->qdot * sim->dt;
     if (td->has_travel && (q_new < td->travel_min || q_new > td->travel_max)) {
         q_new = q_new < td->travel_min ? td->travel_min : td->travel_max;
         p->qdot = 0.0;
+        p->qddot = 0.0;
         if (!p->at_limit)
             bd_sim_warn(sim, "takeup '%s' reached the end of its travel (%g m) at t = %.3f s",
                         p->def->name, q_new, sim->t);

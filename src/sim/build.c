@@ -422,6 +422,7 @@ int bd_sim_create(const bd_model_def *def, bd_sim **out, bd_diag *diag)
         return 1;
     }
     prepare_drives(sim);
+    bd_sim_start_at_rest(sim);
     sim->tension_max = -INFINITY;
     sim->tension_min = INFINITY;
     for (int i = 0; i < sim->pulley_count; i++) {

@@ -1,7 +1,6 @@
 /* Energy bookkeeping (cli.md `energy`): potential energy of gravity (belt,
  * material, pulleys; y = 0 is the datum), elastic energy of the belt
- * elements and bending springs (the stiff implicit contacts with pulleys and
- * idlers are booked as work: pulley_contact.c), and the potential −F·q of
+ * elements, bending springs and contact springs, and the potential −F·q of
  * the takeup pulls (a gravity takeup's counterweight included). Kinetic
  * energy and the work of dissipative forces and drives are booked in the
  * step (step.c). */
@@ -19,9 +18,12 @@ double bd_energy_potential(const bd_sim *sim)
     for (int i = 0; i < sim->pulley_count; i++) {
         const bd_pulley_body *p = &sim->pulleys[i];
         e += p->def->mass * g * p->cy;
+        e += bd_pulley_contact_energy(sim, p);
         if (p->movable)
             e -= bd_takeup_force(sim, p, sim->t) * p->q;
     }
+    for (int i = 0; i < sim->idler_count; i++)
+        e += bd_idler_contact_energy(sim, &sim->idlers[i]);
     return e;
 }
 

@@ -55,7 +55,6 @@ int bd_sim_stabilize(bd_sim *sim, FILE *log)
             prev = ke;
         }
     }
-    zero_velocities(sim);
     sim->stabilize_iterations = (int)(k < STABILIZE_MAX_STEPS ? k + 1 : k);
     sim->stabilize_final_kinetic = prev;
     if (k >= STABILIZE_MAX_STEPS)
@@ -79,5 +78,6 @@ int bd_sim_stabilize(bd_sim *sim, FILE *log)
     sim->tension_max = -INFINITY;
     sim->tension_min = INFINITY;
     memset(&sim->energy, 0, sizeof sim->energy);
+    bd_sim_start_at_rest(sim);
     return 0;
 }

@@ -49,6 +49,7 @@ typedef struct bd_pulley_body {
     /* state */
     double omega;           /* rad/s, positive drives the belt forward */
     double q, qdot;         /* m, m/s carriage travel along axis */
+    double qddot;           /* m/s² its acceleration in the last step */
     double cx, cy;          /* m, current centre */
     double drive_torque;    /* N·m last applied by the drive */
     double torque_max_abs;  /* N·m largest |drive torque| */
@@ -176,6 +177,8 @@ double bd_belt_elastic_energy(const bd_sim *sim);
 /* pulley_contact.c / idler_contact.c */
 void bd_pulley_contact(bd_sim *sim, bd_pulley_body *p, double external_torque);
 void bd_idler_contact(bd_sim *sim, bd_idler *id);
+double bd_pulley_contact_energy(const bd_sim *sim, const bd_pulley_body *p);
+double bd_idler_contact_energy(const bd_sim *sim, const bd_idler *id);
 
 /* drive.c */
 void bd_drive_prepare(bd_sim *sim, bd_pulley_body *p, double reflected_inertia);
@@ -191,6 +194,7 @@ void bd_energy_update_balance(bd_sim *sim);
 
 /* step.c */
 int bd_step_once(bd_sim *sim);
+void bd_sim_start_at_rest(bd_sim *sim);
 
 /* output helpers: Eulerian path coordinate of element e's midpoint */
 double bd_element_s(const bd_sim *sim, int e);
