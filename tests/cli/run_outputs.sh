@@ -275,6 +275,23 @@ else
     bad "--quiet" "exit $rc, stderr: $(head -c 300 "$tmp/quiet.err")"
 fi
 
+# on a terminal (util-linux `script` gives the run a pty) a progress line
+# with simulated time, percent, wall time, remaining time and real-time factor
+# appears; --quiet silences it
+if command -v script >/dev/null 2>&1; then
+    tty_out=$(script -qec "'$BELTDYN' run '$flat' -o '$tmp/tty'" /dev/null 2>&1 | tr '\r' '\n')
+    if printf '%s\n' "$tty_out" | grep -qE 't = +[0-9.]+ s +[0-9.]+% +wall .*remaining .*real time'; then
+        ok "progress line on a terminal"
+    else
+        bad "progress line on a terminal" "none seen: $(printf '%s' "$tty_out" | head -c 300)"
+    fi
+    tty_out=$(script -qec "'$BELTDYN' run '$flat' -o '$tmp/tty_quiet' --quiet" /dev/null 2>&1)
+    if [ -z "$tty_out" ] && [ -s "$tmp/tty_quiet/summary.json" ]; then ok "--quiet silences the progress line on a terminal"
+    else bad "--quiet on a terminal" "printed: $(printf '%s' "$tty_out" | head -c 300)"; fi
+else
+    echo "skip progress line on a terminal: no 'script' command"
+fi
+
 # without -o the outputs go to ./out
 mkdir -p "$tmp/cwd"
 (cd "$tmp/cwd" && "$BELTDYN" run "$flat" --quiet >/dev/null 2>&1)
