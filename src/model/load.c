@@ -613,15 +613,29 @@ static const field stop_fields[] = {
 };
 FIELDSET(stop_fs, stop_fields, stop_post);
 
+/* the Kloss curve needs a breakdown torque above the rated one and a rated
+ * speed below synchronous (a positive rated slip) */
+static void motor_post(ctx *c, const fieldset *fs, yaml_node_t *const *found, bd_mark at,
+                       const char *path, void *base)
+{
+    (void)fs;
+    (void)found;
+    const bd_motor_def *m = base;
+    if (m->rated_speed_rpm > 0.0 && m->synchronous_speed_rpm > 0.0
+        && m->rated_speed_rpm >= m->synchronous_speed_rpm)
+        err(c, at, path, "rated_speed_rpm (%g) must be below synchronous_speed_rpm (%g): "
+            "an induction motor runs with slip", m->rated_speed_rpm, m->synchronous_speed_rpm);
+}
+
 static const field motor_fields[] = {
     POS("rated_power", bd_motor_def, rated_power, REQ),
     POS("rated_speed_rpm", bd_motor_def, rated_speed_rpm, REQ),
     POS("synchronous_speed_rpm", bd_motor_def, synchronous_speed_rpm, REQ),
-    POS("breakdown_torque_ratio", bd_motor_def, breakdown_torque_ratio, REQ),
+    NUM("breakdown_torque_ratio", bd_motor_def, breakdown_torque_ratio, REQ | GT, 1.0, INFINITY),
     POS("gear_ratio", bd_motor_def, gear_ratio, REQ),
     NONNEG("start_time", bd_motor_def, start_time, REQ),
 };
-FIELDSET(motor_fs, motor_fields, NULL);
+FIELDSET(motor_fs, motor_fields, motor_post);
 
 static const char *const vbelt_names[] = {"flat", "v", NULL};
 static const field transmission_fields[] = {

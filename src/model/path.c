@@ -49,6 +49,25 @@ int bd_path_build(const bd_model_def *m, bd_path *path, bd_diag *diag)
     }
     int bad = 0;
 
+    /* no two pulleys may overlap, neighbours or not */
+    for (int i = 0; i < n; i++)
+        for (int j = i + 1; j < n; j++) {
+            const bd_pulley_def *a = &m->pulleys[i], *b = &m->pulleys[j];
+            double gap = hypot(b->x - a->x, b->y - a->y) - a->radius - b->radius;
+            if (gap < 0.0) {
+                bd_diag_error(diag, m->source, b->mark,
+                              "pulleys[%d] '%s': overlaps pulley '%s' (their shells "
+                              "intersect by %.4g m)", j, b->name, a->name, -gap);
+                bad = 1;
+            }
+        }
+    if (bad) {
+        free(dir);
+        free(span_len);
+        bd_path_free(path);
+        return 1;
+    }
+
     /* spans: common tangent from pulley i to pulley i+1 */
     for (int i = 0; i < n; i++) {
         const bd_pulley_def *a = &m->pulleys[i];

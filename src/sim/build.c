@@ -355,6 +355,23 @@ static void prepare_drives(bd_sim *sim)
 int bd_sim_create(const bd_model_def *def, bd_sim **out, bd_diag *diag)
 {
     *out = NULL;
+    /* parsed, but not simulated by this version: say so rather than ignore */
+    int unsupported = 0;
+    if (def->belt.formulation == BD_FORMULATION_AXIAL) {
+        bd_diag_error(diag, def->source, def->belt.mark,
+                      "belt.formulation: 'axial' is not available in this version of beltdyn; "
+                      "use 'discrete'");
+        unsupported = 1;
+    }
+    for (int i = 0; i < def->pulley_count; i++)
+        if (def->pulleys[i].has_drive && def->pulleys[i].drive.has_transmission) {
+            bd_diag_error(diag, def->source, def->pulleys[i].drive.mark,
+                          "pulleys[%d].drive.transmission: belt transmissions are not available "
+                          "in this version of beltdyn", i);
+            unsupported = 1;
+        }
+    if (unsupported)
+        return 1;
     bd_path given;
     if (bd_path_build(def, &given, diag))
         return 1;

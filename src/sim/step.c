@@ -72,6 +72,11 @@ static int check_elements(bd_sim *sim)
     int ilo = 0, ihi = 0;
     for (int e = 0; e < sim->n; e++) {
         double T = sim->tension[e];
+        if (!(T == T)) {   /* NaN: report this element */
+            hi = T;
+            ihi = e;
+            break;
+        }
         if (T > hi) {
             hi = T;
             ihi = e;
