@@ -50,6 +50,8 @@ static int load_model(const char *path, bd_model_def *def, bd_sim **sim)
         bad = bd_sim_create(def, sim, &diag);
     print_diag(&diag);
     bd_diag_free(&diag);
+    if (bad)
+        bd_model_def_free(def);
     return bad ? 2 : 0;
 }
 

@@ -34,8 +34,10 @@ static int make_dir(const char *dir, char *err, size_t errlen)
 
 static FILE *open_part(bd_outputs *o, int which, const char *name, char *err, size_t errlen)
 {
-    snprintf(o->final_path[which], sizeof o->final_path[which], "%s/%s", o->dir, name);
-    snprintf(o->part_path[which], sizeof o->part_path[which], "%s/.%s.part", o->dir, name);
+    char dir[sizeof o->dir];
+    memcpy(dir, o->dir, sizeof dir);
+    snprintf(o->final_path[which], sizeof o->final_path[which], "%s/%s", dir, name);
+    snprintf(o->part_path[which], sizeof o->part_path[which], "%s/.%s.part", dir, name);
     FILE *f = fopen(o->part_path[which], "w");
     if (!f)
         snprintf(err, errlen, "cannot write '%s': %s", o->part_path[which], strerror(errno));
