@@ -12,6 +12,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "beltdyn/standards.h"
 #include "sim/timestep.h"
 
 static int make_dir(const char *dir, char *err, size_t errlen)
@@ -184,6 +185,34 @@ static cJSON *num(cJSON *obj, const char *key, double v)
     return cJSON_AddNullToObject(obj, key);
 }
 
+/* the model's design-standard calculation (cli.md `static --json`) as
+ * "static", with its T_min_sag_N also at the top level; a warning instead
+ * when it cannot be computed */
+static void add_static(cJSON *root, cJSON *warnings, const bd_model_def *def)
+{
+    bd_diag diag;
+    bd_diag_init(&diag);
+    bd_static_result res;
+    cJSON *st = NULL;
+    if (bd_static_compute(def, &res, &diag) == 0) {
+        char *text = bd_static_to_json(&res, def);
+        st = text ? cJSON_Parse(text) : NULL;
+        free(text);
+        if (st)
+            num(root, "T_min_sag_N", res.T_min_sag_N);
+        bd_static_free(&res);
+    }
+    if (st) {
+        cJSON_AddItemToObject(root, "static", st);
+    } else {
+        char msg[1200];
+        snprintf(msg, sizeof msg, "the static design calculation failed%s%s",
+                 diag.count > 0 ? ": " : "", diag.count > 0 ? diag.lines[0] : "");
+        cJSON_AddItemToArray(warnings, cJSON_CreateString(msg));
+    }
+    bd_diag_free(&diag);
+}
+
 static int write_summary(bd_outputs *o, const bd_sim *sim, double wall, const char *status)
 {
     const bd_model_def *def = sim->def;
@@ -239,6 +268,8 @@ static int write_summary(bd_outputs *o, const bd_sim *sim, double wall, const ch
     cJSON *w = cJSON_AddArrayToObject(root, "warnings");
     for (int i = 0; i < sim->warning_count; i++)
         cJSON_AddItemToArray(w, cJSON_CreateString(sim->warnings[i]));
+    if (def->design.present)
+        add_static(root, w, def);
     char *text = cJSON_Print(root);
     cJSON_Delete(root);
     FILE *f = open_part(o, BD_OUT_SUMMARY, "summary.json", o->err, sizeof o->err);
