@@ -23,13 +23,14 @@ static int usage(FILE *f)
     fprintf(f,
             "usage: beltdyn check MODEL.yaml\n"
             "       beltdyn static MODEL.yaml [--json]\n"
-            "       beltdyn run MODEL.yaml [-o DIR] [--quiet]\n"
+            "       beltdyn run MODEL.yaml [-o DIR] [--quiet] [--hdf5]\n"
             "       beltdyn report DIR\n"
             "\n"
             "  check   read and validate a model; print what was derived\n"
             "  static  design-standard tensions (DIN 22101, ISO 5048, CEMA)\n"
             "  run     transient simulation; writes summary.json, history.csv,\n"
-            "          tension.csv and envelope.csv into DIR (default ./out)\n"
+            "          tension.csv and envelope.csv into DIR (default ./out);\n"
+            "          --hdf5 also writes the tension field to DIR/tension.h5\n"
             "  report  plots and report.html from a finished run's DIR\n");
     return 2;
 }
@@ -114,12 +115,14 @@ static int cmd_static(int argc, char **argv)
 static int cmd_run(int argc, char **argv)
 {
     const char *path = NULL, *dir = "out";
-    int quiet = 0;
+    int quiet = 0, hdf5 = 0;
     for (int i = 0; i < argc; i++) {
         if (strcmp(argv[i], "-o") == 0 && i + 1 < argc)
             dir = argv[++i];
         else if (strcmp(argv[i], "--quiet") == 0 || strcmp(argv[i], "-q") == 0)
             quiet = 1;
+        else if (strcmp(argv[i], "--hdf5") == 0)
+            hdf5 = 1;
         else if (!path && argv[i][0] != '-')
             path = argv[i];
         else
@@ -140,6 +143,7 @@ static int cmd_run(int argc, char **argv)
     opt.out_dir = dir;
     opt.progress = !quiet && isatty(STDERR_FILENO);
     opt.interrupted = &interrupted;
+    opt.hdf5 = hdf5;
     char err[1024] = "";
     rc = bd_sim_run(sim, &opt, err, sizeof err);
     if (rc != BD_RUN_OK)

@@ -26,7 +26,7 @@ typedef struct bd_run_options {
     const char *out_dir;                  /* directory for the outputs */
     int progress;                         /* 1: progress line on stderr */
     volatile sig_atomic_t *interrupted;   /* set nonzero to stop (SIGINT) */
-    int hdf5;                             /* reserved */
+    int hdf5;                             /* 1: also DIR/tension.h5 */
 } bd_run_options;
 
 /* derive the discrete model (path, elements, idlers, time step, initial

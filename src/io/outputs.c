@@ -13,6 +13,7 @@
 #include <sys/stat.h>
 
 #include "beltdyn/standards.h"
+#include "io/hdf5_out.h"
 #include "sim/timestep.h"
 
 static int make_dir(const char *dir, char *err, size_t errlen)
@@ -56,7 +57,8 @@ static int finish_part(bd_outputs *o, int which, FILE **f)
     return bad;
 }
 
-int bd_outputs_open(bd_outputs *o, const bd_sim *sim, const char *dir, char *err, size_t errlen)
+int bd_outputs_open(bd_outputs *o, const bd_sim *sim, const char *dir, int hdf5, char *err,
+                    size_t errlen)
 {
     memset(o, 0, sizeof *o);
     snprintf(o->dir, sizeof o->dir, "%s", dir);
@@ -68,6 +70,23 @@ int bd_outputs_open(bd_outputs *o, const bd_sim *sim, const char *dir, char *err
         if (o->history)
             fclose(o->history);
         return 1;
+    }
+    if (hdf5) {
+        char d[sizeof o->dir];
+        memcpy(d, o->dir, sizeof d);
+        snprintf(o->final_path[BD_OUT_HDF5], sizeof o->final_path[BD_OUT_HDF5], "%s/tension.h5", d);
+        snprintf(o->part_path[BD_OUT_HDF5], sizeof o->part_path[BD_OUT_HDF5], "%s/.tension.h5.part",
+                 d);
+        o->h5 = bd_h5_open(o->part_path[BD_OUT_HDF5], sim->def->name, sim->n, sim->path.length,
+                           err, errlen);
+        if (!o->h5) {
+            fclose(o->history);
+            fclose(o->tension);
+            remove(o->part_path[BD_OUT_HISTORY]);
+            remove(o->part_path[BD_OUT_TENSION]);
+            remove(o->part_path[BD_OUT_HDF5]);
+            return 1;
+        }
     }
     static char hbuf[1 << 16], tbuf[1 << 20];
     setvbuf(o->history, hbuf, _IOFBF, sizeof hbuf);
@@ -127,12 +146,21 @@ void bd_outputs_row(bd_outputs *o, bd_sim *sim, double t)
     /* tension along the belt, and the Eulerian envelope */
     FILE *f = o->tension;
     double L = sim->path.length;
+    double *h5s = o->h5 ? bd_h5_s(o->h5) : NULL;
+    double *h5T = o->h5 ? bd_h5_tension(o->h5) : NULL;
+    double *h5v = o->h5 ? bd_h5_speed(o->h5) : NULL;
     for (int e = 0; e < sim->n; e++) {
         int j = e + 1 == sim->n ? 0 : e + 1;
         double s = bd_element_s(sim, e);
         double T = sim->tension[e];
+        double v = bd_element_speed(sim, e);
         fprintf(f, "%.6f,%.4f,%.4f,%.4f,%.6g,%.5g\n", t, s, 0.5 * (sim->x[e] + sim->x[j]),
-                0.5 * (sim->y[e] + sim->y[j]), T, bd_element_speed(sim, e));
+                0.5 * (sim->y[e] + sim->y[j]), T, v);
+        if (h5s) {
+            h5s[e] = s;
+            h5T[e] = T;
+            h5v[e] = v;
+        }
         int b = (int)(s / L * o->bins);
         if (b >= o->bins)
             b = o->bins - 1;
@@ -143,6 +171,12 @@ void bd_outputs_row(bd_outputs *o, bd_sim *sim, double t)
         if (T < o->env_min[b])
             o->env_min[b] = T;
     }
+    if (o->h5 && bd_h5_row(o->h5, t, o->err, sizeof o->err) != 0) {
+        /* stop writing it; bd_outputs_close reports the failure */
+        bd_h5_close(o->h5);
+        o->h5 = NULL;
+        o->h5_failed = 1;
+    }
     o->rows++;
 }
 
@@ -152,6 +186,7 @@ void bd_outputs_flush(bd_outputs *o)
         fflush(o->history);
     if (o->tension)
         fflush(o->tension);
+    bd_h5_flush(o->h5);
 }
 
 static int write_envelope(bd_outputs *o, const bd_sim *sim)
@@ -287,6 +322,17 @@ int bd_outputs_close(bd_outputs *o, const bd_sim *sim, double wall, const char *
 {
     int bad = finish_part(o, BD_OUT_HISTORY, &o->history);
     bad |= finish_part(o, BD_OUT_TENSION, &o->tension);
+    if (o->h5) {
+        int h5bad = bd_h5_close(o->h5);
+        o->h5 = NULL;
+        if (!h5bad)
+            h5bad = rename(o->part_path[BD_OUT_HDF5], o->final_path[BD_OUT_HDF5]) != 0;
+        bad |= h5bad;
+    }
+    if (o->h5_failed) {
+        remove(o->part_path[BD_OUT_HDF5]);
+        bad = 1;
+    }
     if (o->rows > 0)
         bad |= write_envelope(o, sim);
     bad |= write_summary(o, sim, wall, status);

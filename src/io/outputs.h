@@ -6,13 +6,17 @@
 
 #include "sim/system.h"
 
-enum { BD_OUT_HISTORY = 0, BD_OUT_TENSION, BD_OUT_ENVELOPE, BD_OUT_SUMMARY, BD_OUT_COUNT };
+enum { BD_OUT_HISTORY = 0, BD_OUT_TENSION, BD_OUT_ENVELOPE, BD_OUT_SUMMARY, BD_OUT_HDF5, BD_OUT_COUNT };
+
+struct bd_h5;
 
 typedef struct bd_outputs {
     char dir[1024];
     char final_path[BD_OUT_COUNT][1100];
     char part_path[BD_OUT_COUNT][1100];
     FILE *history, *tension;
+    struct bd_h5 *h5;      /* tension.h5 when asked for (run --hdf5), else NULL */
+    int h5_failed;         /* writing tension.h5 failed (message in err) */
     int bins;              /* envelope bins along the path */
     double *env_max;       /* [bins] N */
     double *env_min;       /* [bins] N */
@@ -20,7 +24,9 @@ typedef struct bd_outputs {
     char err[2048];
 } bd_outputs;
 
-int bd_outputs_open(bd_outputs *o, const bd_sim *sim, const char *dir, char *err, size_t errlen);
+/* hdf5: also write DIR/tension.h5 (hdf5_out.c) */
+int bd_outputs_open(bd_outputs *o, const bd_sim *sim, const char *dir, int hdf5, char *err,
+                    size_t errlen);
 /* one output time: a history row, the tension rows, the envelope update */
 void bd_outputs_row(bd_outputs *o, bd_sim *sim, double t);
 void bd_outputs_flush(bd_outputs *o);

@@ -45,7 +45,7 @@ int bd_sim_run(bd_sim *sim, const bd_run_options *opt, char *err, size_t errlen)
         return BD_RUN_FAILED;
     }
     bd_outputs out;
-    if (bd_outputs_open(&out, sim, opt->out_dir, err, errlen))
+    if (bd_outputs_open(&out, sim, opt->out_dir, opt->hdf5, err, errlen))
         return BD_RUN_BAD_INPUT;
     energy_start(sim);
     const double duration = sim->def->simulation.duration;
