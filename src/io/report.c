@@ -1325,7 +1325,8 @@ static int read_summary(report *r, char *err, size_t errlen)
     r->t_min_sag_N = json_num(r->summary, "T_min_sag_N");
     if (!isfinite(r->t_min_sag_N)) r->t_min_sag_N = json_num(stat, "T_min_sag_N");
     if (!isfinite(r->rated_N)) r->rated_N = json_num(stat, "rated_tension_N");
-    if (!isfinite(r->safety_factor)) r->safety_factor = json_num(stat, "safety_factor");
+    /* the static table's "safety_factor" is rated / computed maximum tension,
+     * an outcome, not the design factor: never take the allowable from it */
     if (!(r->rated_N > 0.0)) r->rated_N = NAN;
     if (!(r->t_min_sag_N > 0.0)) r->t_min_sag_N = NAN;
     if (!(r->safety_factor > 0.0)) {
