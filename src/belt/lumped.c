@@ -22,6 +22,10 @@ static void element_forces(bd_sim *sim)
     const double *x = sim->x, *y = sim->y, *vx = sim->vx, *vy = sim->vy;
     double *fx = sim->fx, *fy = sim->fy, *fnx = sim->fnx, *fny = sim->fny;
     double *ux = sim->ux, *uy = sim->uy, *len = sim->len, *tension = sim->tension;
+    /* the extremes of this step, for the run's record and divergence check;
+     * a NaN anywhere makes the sum NaN */
+    double hi = -INFINITY, lo = INFINITY, sum = 0.0;
+    int ihi = 0, ilo = 0;
     for (int e = 0; e < n; e++) {
         int j = e + 1 == n ? 0 : e + 1;
         double dx = x[j] - x[e], dy = y[j] - y[e];
@@ -35,6 +39,15 @@ static void element_forces(bd_sim *sim)
         uy[e] = ey;
         len[e] = l;
         tension[e] = T;
+        sum += T;
+        if (T > hi) {
+            hi = T;
+            ihi = e;
+        }
+        if (T < lo) {
+            lo = T;
+            ilo = e;
+        }
         fx[e] += T * ex;
         fy[e] += T * ey;
         fx[j] -= T * ex;
@@ -44,6 +57,11 @@ static void element_forces(bd_sim *sim)
         fnx[j] -= Td * ex;
         fny[j] -= Td * ey;
     }
+    sim->step_tension_max = hi;
+    sim->step_tension_min = lo;
+    sim->step_element_max = ihi;
+    sim->step_element_min = ilo;
+    sim->step_tension_sum = sum;
 }
 
 static void bending_forces(bd_sim *sim)

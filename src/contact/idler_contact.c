@@ -40,7 +40,6 @@ void bd_idler_contact(bd_sim *sim, bd_idler *id)
     bd_tracker_update(sim, &id->tr);
     id->alpha = 0.0;
     id->torque = 0.0;
-    id->normal = 0.0;
     int e = id->tr.element, j = e + 1 == sim->n ? 0 : e + 1;
     double g = id->tr.gamma, h = 1.0 - g;
     double px = sim->x[e] + g * (sim->x[j] - sim->x[e]);
@@ -65,7 +64,6 @@ void bd_idler_contact(bd_sim *sim, bd_idler *id)
         return;
     double delta = id->radius - d;
     double fd = fn - (delta > 0.0 ? id->k_contact * delta : 0.0);
-    id->normal = fn;
     /* tangent along the travel direction */
     double tx = -ny, ty = nx;
     if (tx * id->tr.dir[0] + ty * id->tr.dir[1] < 0.0) {

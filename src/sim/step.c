@@ -20,10 +20,8 @@
 static void material_transport(bd_sim *sim)
 {
     bd_tracker *fd = &sim->feed;
-    int e_before = fd->element;
     bd_tracker_update(sim, fd);
-    (void)e_before;
-    if (sim->has_feed && sim->t >= 0.0) {
+    if (sim->has_feed) {
         int e = fd->element, j = e + 1 == sim->n ? 0 : e + 1;
         double g = fd->gamma;
         double v = (1.0 - g) * (fd->dir[0] * sim->vx[e] + fd->dir[1] * sim->vy[e])
@@ -68,23 +66,16 @@ static void material_discharge(bd_sim *sim)
 
 static int check_elements(bd_sim *sim)
 {
-    double lo = INFINITY, hi = -INFINITY;
-    int ilo = 0, ihi = 0;
-    for (int e = 0; e < sim->n; e++) {
-        double T = sim->tension[e];
-        if (!(T == T)) {   /* NaN: report this element */
-            hi = T;
-            ihi = e;
-            break;
-        }
-        if (T > hi) {
-            hi = T;
-            ihi = e;
-        }
-        if (T < lo) {
-            lo = T;
-            ilo = e;
-        }
+    double hi = sim->step_tension_max, lo = sim->step_tension_min;
+    int ihi = sim->step_element_max, ilo = sim->step_element_min;
+    if (!(sim->step_tension_sum == sim->step_tension_sum)) {
+        /* a NaN: find the first element that has it (failure path only) */
+        for (int e = 0; e < sim->n; e++)
+            if (!(sim->tension[e] == sim->tension[e])) {
+                hi = sim->tension[e];
+                ihi = e;
+                break;
+            }
     }
     if (!(hi == hi) || !(lo == lo) || hi > DIVERGED_STRAIN * sim->EA
         || lo < REVERSED_STRAIN * sim->EA) {
@@ -96,7 +87,6 @@ static int check_elements(bd_sim *sim)
                  "is too large for the forces acting, or the model is unstable",
                  sim->t, sim->steps, e, bd_element_s(sim, e), sim->x[e], sim->y[e], strain,
                  strain < 0.0 ? " (element reversed)" : "", sim->dt);
-        sim->failed = 1;
         return 1;
     }
     if (hi > sim->tension_max) {

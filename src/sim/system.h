@@ -60,7 +60,6 @@ typedef struct bd_pulley_body {
     double motor_breakdown; /* N·m at the motor shaft (motor control) */
     double motor_slip_b;    /* breakdown slip, - */
     double bearing_torque;  /* N·m bearing torque this step */
-    double omega_ref_prev;  /* rad/s */
     double force_prev;      /* N takeup force at the previous step */
     int at_limit;           /* takeup carriage at a travel limit */
 } bd_pulley_body;
@@ -76,7 +75,6 @@ typedef struct bd_idler {
     double omega;          /* rad/s, + = surface moves with the belt */
     double alpha;          /* rad/s² this step */
     double torque;         /* N·m belt friction torque this step */
-    double normal;         /* N, last normal force */
     int set;               /* index of its idler set */
 } bd_idler;
 
@@ -139,9 +137,11 @@ struct bd_sim {
     /* time */
     double dt, dt_limit;
     bd_time_step_limit limit_kind;
-    int limit_index;       /* pulley/idler index when contact limits */
     double t;
     long steps;
+    /* element tension extremes of the current step (belt_lumped.c) */
+    double step_tension_max, step_tension_min, step_tension_sum;
+    int step_element_max, step_element_min;
 
     /* bookkeeping */
     bd_energy energy;
@@ -151,9 +151,7 @@ struct bd_sim {
     double stabilize_final_kinetic;
     int friction_off;      /* during stabilization */
     int want_energy;       /* book the potential energy in the next step */
-    int failed;
     char fail_msg[512];
-    int warn_compression, warn_liftoff_reported, warn_travel_limit;
     char **warnings;
     int warning_count;
 };
