@@ -4,6 +4,7 @@
  * complete; an interrupted or failed run still renames its CSVs, which are
  * valid up to the last complete row. */
 #include "io/outputs.h"
+#include "io/json_util.h"
 
 #include <cjson/cJSON.h>
 #include <errno.h>
@@ -212,14 +213,6 @@ static int write_envelope(bd_outputs *o, const bd_sim *sim)
     return finish_part(o, BD_OUT_ENVELOPE, &f);
 }
 
-static cJSON *num(cJSON *obj, const char *key, double v)
-{
-    /* JSON has no inf/nan: write null for them */
-    if (isfinite(v))
-        return cJSON_AddNumberToObject(obj, key, v);
-    return cJSON_AddNullToObject(obj, key);
-}
-
 /* the model's design-standard calculation (cli.md `static --json`) as
  * "static", with its T_min_sag_N also at the top level; a warning instead
  * when it cannot be computed */
@@ -234,7 +227,7 @@ static void add_static(cJSON *root, cJSON *warnings, const bd_model_def *def)
         st = text ? cJSON_Parse(text) : NULL;
         free(text);
         if (st)
-            num(root, "T_min_sag_N", res.T_min_sag_N);
+            bd_json_add_number(root, "T_min_sag_N", res.T_min_sag_N);
         bd_static_free(&res);
     }
     if (st) {
@@ -253,52 +246,52 @@ static int write_summary(bd_outputs *o, const bd_sim *sim, double wall, const ch
     const bd_model_def *def = sim->def;
     cJSON *root = cJSON_CreateObject();
     cJSON_AddStringToObject(root, "model", def->name);
-    num(root, "duration_s", sim->t);
-    num(root, "time_step_s", sim->dt);
-    num(root, "steps", (double)sim->steps);
-    num(root, "nodes", sim->n);
-    num(root, "belt_length_m", sim->path.length);
-    num(root, "wall_time_s", wall);
+    bd_json_add_number(root, "duration_s", sim->t);
+    bd_json_add_number(root, "time_step_s", sim->dt);
+    bd_json_add_number(root, "steps", (double)sim->steps);
+    bd_json_add_number(root, "nodes", sim->n);
+    bd_json_add_number(root, "belt_length_m", sim->path.length);
+    bd_json_add_number(root, "wall_time_s", wall);
     cJSON_AddStringToObject(root, "status", status);
-    num(root, "time_step_limit_s", sim->dt_limit);
+    bd_json_add_number(root, "time_step_limit_s", sim->dt_limit);
     cJSON_AddStringToObject(root, "time_step_limited_by", bd_time_step_limit_name(sim->limit_kind));
     if (def->belt.rated_tension > 0.0)
-        num(root, "rated_tension_N", def->belt.rated_tension);
+        bd_json_add_number(root, "rated_tension_N", def->belt.rated_tension);
     cJSON *ten = cJSON_AddObjectToObject(root, "tension");
-    num(ten, "max_N", sim->tension_max);
-    num(ten, "max_time_s", sim->tension_max_t);
-    num(ten, "max_s_m", sim->tension_max_s);
-    num(ten, "min_N", sim->tension_min);
-    num(ten, "min_time_s", sim->tension_min_t);
-    num(ten, "min_s_m", sim->tension_min_s);
+    bd_json_add_number(ten, "max_N", sim->tension_max);
+    bd_json_add_number(ten, "max_time_s", sim->tension_max_t);
+    bd_json_add_number(ten, "max_s_m", sim->tension_max_s);
+    bd_json_add_number(ten, "min_N", sim->tension_min);
+    bd_json_add_number(ten, "min_time_s", sim->tension_min_t);
+    bd_json_add_number(ten, "min_s_m", sim->tension_min_s);
     cJSON *probes = cJSON_AddObjectToObject(root, "probes");
     for (int i = 0; i < sim->probe_count; i++) {
         const bd_probe *pr = &sim->probes[i];
         cJSON *p = cJSON_AddObjectToObject(probes, def->simulation.probes[i].name);
-        num(p, "tension_max_N", pr->tension_max);
-        num(p, "tension_min_N", pr->tension_min);
-        num(p, "tension_final_N", pr->tension);
-        num(p, "speed_final_mps", pr->speed);
+        bd_json_add_number(p, "tension_max_N", pr->tension_max);
+        bd_json_add_number(p, "tension_min_N", pr->tension_min);
+        bd_json_add_number(p, "tension_final_N", pr->tension);
+        bd_json_add_number(p, "speed_final_mps", pr->speed);
     }
     cJSON *pulleys = cJSON_AddObjectToObject(root, "pulleys");
     for (int i = 0; i < sim->pulley_count; i++) {
         const bd_pulley_body *pb = &sim->pulleys[i];
         cJSON *p = cJSON_AddObjectToObject(pulleys, def->pulleys[i].name);
-        num(p, "omega_final_rad_s", pb->omega);
+        bd_json_add_number(p, "omega_final_rad_s", pb->omega);
         if (def->pulleys[i].has_drive)
-            num(p, "torque_max_Nm", pb->torque_max_abs);
+            bd_json_add_number(p, "torque_max_Nm", pb->torque_max_abs);
         if (def->pulleys[i].has_takeup) {
-            num(p, "travel_min_m", pb->travel_min);
-            num(p, "travel_max_m", pb->travel_max);
+            bd_json_add_number(p, "travel_min_m", pb->travel_min);
+            bd_json_add_number(p, "travel_max_m", pb->travel_max);
         }
     }
     cJSON *en = cJSON_AddObjectToObject(root, "energy");
-    num(en, "kinetic_final_J", sim->energy.kinetic);
-    num(en, "balance_error_rel", sim->energy.balance_error_rel);
+    bd_json_add_number(en, "kinetic_final_J", sim->energy.kinetic);
+    bd_json_add_number(en, "balance_error_rel", sim->energy.balance_error_rel);
     if (def->simulation.stabilize) {
         cJSON *st = cJSON_AddObjectToObject(root, "stabilize");
-        num(st, "steps", sim->stabilize_iterations);
-        num(st, "kinetic_final_J", sim->stabilize_final_kinetic);
+        bd_json_add_number(st, "steps", sim->stabilize_iterations);
+        bd_json_add_number(st, "kinetic_final_J", sim->stabilize_final_kinetic);
     }
     cJSON *w = cJSON_AddArrayToObject(root, "warnings");
     for (int i = 0; i < sim->warning_count; i++)

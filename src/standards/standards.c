@@ -12,6 +12,8 @@
 
 #include <cjson/cJSON.h>
 
+#include "io/json_util.h"
+
 static const double PI = 3.14159265358979323846;
 
 const char *bd_standard_name(bd_standard s)
@@ -675,14 +677,6 @@ void bd_static_print_table(const bd_static_result *r, const bd_model_def *m, FIL
 }
 
 /* a number that JSON can hold (non-finite values become null) */
-static void add_num(cJSON *o, const char *key, double v)
-{
-    if (isfinite(v))
-        cJSON_AddNumberToObject(o, key, v);
-    else
-        cJSON_AddNullToObject(o, key);
-}
-
 static cJSON *string_array(char **items, int count)
 {
     cJSON *a = cJSON_CreateArray();
@@ -699,37 +693,37 @@ char *bd_static_to_json(const bd_static_result *r, const bd_model_def *m)
     /* cli.md `static --json` keys */
     cJSON_AddStringToObject(o, "standard", bd_standard_name(r->standard));
     cJSON *res = cJSON_AddObjectToObject(o, "resistances_N");
-    add_num(res, "main", r->main_N);
-    add_num(res, "secondary", r->secondary_N);
-    add_num(res, "slope", r->slope_N);
-    add_num(res, "total", r->total_N);
-    add_num(o, "effective_tension_N", r->effective_tension_N);
-    add_num(o, "power_kW", r->power_kW);
-    add_num(o, "T1_N", r->T1_N);
-    add_num(o, "T2_N", r->T2_N);
-    add_num(o, "T2_min_slip_N", r->T2_min_slip_N);
-    add_num(o, "T_min_sag_N", r->T_min_sag_N);
-    add_num(o, "takeup_force_N", r->takeup_force_N);
+    bd_json_add_number(res, "main", r->main_N);
+    bd_json_add_number(res, "secondary", r->secondary_N);
+    bd_json_add_number(res, "slope", r->slope_N);
+    bd_json_add_number(res, "total", r->total_N);
+    bd_json_add_number(o, "effective_tension_N", r->effective_tension_N);
+    bd_json_add_number(o, "power_kW", r->power_kW);
+    bd_json_add_number(o, "T1_N", r->T1_N);
+    bd_json_add_number(o, "T2_N", r->T2_N);
+    bd_json_add_number(o, "T2_min_slip_N", r->T2_min_slip_N);
+    bd_json_add_number(o, "T_min_sag_N", r->T_min_sag_N);
+    bd_json_add_number(o, "takeup_force_N", r->takeup_force_N);
     cJSON *spans = cJSON_AddArrayToObject(o, "spans");
     for (int i = 0; i < r->span_count; i++) {
         const bd_static_span *s = &r->spans[i];
         cJSON *js = cJSON_CreateObject();
         cJSON_AddStringToObject(js, "from", m->pulleys[s->pulley].name);
-        add_num(js, "length_m", s->length_m);
-        add_num(js, "T_start_N", s->T_start_N);
-        add_num(js, "T_end_N", s->T_end_N);
+        bd_json_add_number(js, "length_m", s->length_m);
+        bd_json_add_number(js, "T_start_N", s->T_start_N);
+        bd_json_add_number(js, "T_end_N", s->T_end_N);
         /* extra keys */
         cJSON_AddStringToObject(js, "to", m->pulleys[s->to].name);
-        add_num(js, "lift_m", s->lift_m);
-        add_num(js, "slope_deg", s->slope_rad * 180.0 / PI);
+        bd_json_add_number(js, "lift_m", s->lift_m);
+        bd_json_add_number(js, "slope_deg", s->slope_rad * 180.0 / PI);
         cJSON_AddBoolToObject(js, "loaded", s->loaded);
         cJSON_AddBoolToObject(js, "carry", s->carry);
-        add_num(js, "main_N", s->main_N);
-        add_num(js, "secondary_N", s->secondary_N);
-        add_num(js, "slope_N", s->slope_N);
+        bd_json_add_number(js, "main_N", s->main_N);
+        bd_json_add_number(js, "secondary_N", s->secondary_N);
+        bd_json_add_number(js, "slope_N", s->slope_N);
         if (r->standard == BD_STANDARD_CEMA) {
-            add_num(js, "Kx_N_per_m", s->cema_Kx);
-            add_num(js, "Ky", s->cema_Ky);
+            bd_json_add_number(js, "Kx_N_per_m", s->cema_Kx);
+            bd_json_add_number(js, "Ky", s->cema_Ky);
         }
         cJSON_AddItemToArray(spans, js);
     }
@@ -737,29 +731,29 @@ char *bd_static_to_json(const bd_static_result *r, const bd_model_def *m)
 
     /* extra keys */
     cJSON_AddStringToObject(o, "model", m->name);
-    add_num(o, "speed_mps", r->speed_mps);
+    bd_json_add_number(o, "speed_mps", r->speed_mps);
     cJSON_AddBoolToObject(o, "regenerative", r->regenerative);
     cJSON_AddStringToObject(o, "drive", r->drive_pulley >= 0 ? m->pulleys[r->drive_pulley].name : "");
     cJSON_AddNumberToObject(o, "drive_count", r->drive_count);
-    add_num(o, "wrap_angle_deg", r->wrap_angle_rad * 180.0 / PI);
-    add_num(o, "mu", r->mu);
-    add_num(o, "sag_idler_spacing_m", r->sag_spacing_m);
-    add_num(o, "T_max_N", r->T_max_N);
-    add_num(o, "T_min_N", r->T_min_N);
+    bd_json_add_number(o, "wrap_angle_deg", r->wrap_angle_rad * 180.0 / PI);
+    bd_json_add_number(o, "mu", r->mu);
+    bd_json_add_number(o, "sag_idler_spacing_m", r->sag_spacing_m);
+    bd_json_add_number(o, "T_max_N", r->T_max_N);
+    bd_json_add_number(o, "T_min_N", r->T_min_N);
     if (r->safety_factor > 0.0)
-        add_num(o, "safety_factor", r->safety_factor);
+        bd_json_add_number(o, "safety_factor", r->safety_factor);
     if (r->takeup_pulley >= 0)
         cJSON_AddStringToObject(o, "takeup", m->pulleys[r->takeup_pulley].name);
     if (r->standard == BD_STANDARD_CEMA) {
         cJSON *ce = cJSON_AddObjectToObject(o, "cema");
-        add_num(ce, "Kt", r->cema_Kt);
-        add_num(ce, "Ai_N", r->cema_Ai_N);
-        add_num(ce, "C1", r->cema_C1);
+        bd_json_add_number(ce, "Kt", r->cema_Kt);
+        bd_json_add_number(ce, "Ai_N", r->cema_Ai_N);
+        bd_json_add_number(ce, "C1", r->cema_C1);
         cJSON_AddNumberToObject(ce, "iterations", r->cema_iterations);
     } else {
-        add_num(o, "f", r->f);
-        add_num(o, "C", r->C);
-        add_num(o, "conveyor_length_m", r->carry_length_m);
+        bd_json_add_number(o, "f", r->f);
+        bd_json_add_number(o, "C", r->C);
+        bd_json_add_number(o, "conveyor_length_m", r->carry_length_m);
     }
     cJSON_AddItemToObject(o, "notes", string_array(r->notes, r->note_count));
 
