@@ -7,7 +7,10 @@
  * pulleys, idlers reflected to this pulley, shared among the speed drives);
  * the integral stops winding up while the torque is at max_torque.
  * torque: the table, linear between points.
- * motor: an induction motor direct on line by the Kloss formula
+ * motor: an induction motor direct on line by the Kloss formula (the
+ * classical approximation of the induction machine's torque–speed curve
+ * from its breakdown point; not in the seeds — model-format.md `motor` and
+ * issue 4 ask for it; seed 001 fig. 1.10 shows such curves)
  *   T_m = 2·T_b·s·s_b/(s² + s_b²),  s = 1 − ω_m/ω_sync,
  * T_b = breakdown_torque_ratio·T_rated, T_rated = P/ω_rated, and s_b from
  * the rated point: s_b = s_r·(k + √(k² − 1)), k = T_b/T_rated; at the pulley
