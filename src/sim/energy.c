@@ -22,8 +22,6 @@ double bd_energy_potential(const bd_sim *sim)
         if (p->movable)
             e -= bd_takeup_force(sim, p, sim->t) * p->q;
     }
-    for (int i = 0; i < sim->idler_count; i++)
-        e += bd_idler_contact_energy(sim, &sim->idlers[i]);
     return e;
 }
 

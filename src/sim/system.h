@@ -176,7 +176,6 @@ double bd_belt_elastic_energy(const bd_sim *sim);
 void bd_pulley_contact(bd_sim *sim, bd_pulley_body *p, double external_torque);
 void bd_idler_contact(bd_sim *sim, bd_idler *id);
 double bd_pulley_contact_energy(const bd_sim *sim, const bd_pulley_body *p);
-double bd_idler_contact_energy(const bd_sim *sim, const bd_idler *id);
 
 /* drive.c */
 void bd_drive_prepare(bd_sim *sim, bd_pulley_body *p, double reflected_inertia);
