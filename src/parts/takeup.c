@@ -33,9 +33,15 @@ double bd_takeup_advance(bd_sim *sim, bd_pulley_body *p, double *input)
         q_new = q_new < td->travel_min ? td->travel_min : td->travel_max;
         p->qdot = 0.0;
         p->qddot = 0.0;
-        if (!p->at_limit)
-            bd_sim_warn(sim, "takeup '%s' reached the end of its travel (%g m) at t = %.3f s",
-                        p->def->name, q_new, sim->t);
+        /* counted here, said once after the run (run.c): no allocation or
+         * text in the step loop, and one line however often it bangs */
+        if (!p->at_limit) {
+            if (p->limit_hits == 0) {
+                p->limit_first_t = sim->t;
+                p->limit_first_q = q_new;
+            }
+            p->limit_hits++;
+        }
         p->at_limit = 1;
     } else {
         p->at_limit = 0;

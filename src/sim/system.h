@@ -62,6 +62,9 @@ typedef struct bd_pulley_body {
     double bearing_torque;  /* N·m bearing torque this step */
     double force_prev;      /* N takeup force at the previous step */
     int at_limit;           /* takeup carriage at a travel limit */
+    int limit_hits;         /* times it arrived at a limit */
+    double limit_first_t;   /* s, the first arrival */
+    double limit_first_q;   /* m, at which limit */
 } bd_pulley_body;
 
 typedef struct bd_idler {
