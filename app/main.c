@@ -9,6 +9,7 @@
 #include "beltdyn/report.h"
 #include "beltdyn/sim.h"
 #include "beltdyn/standards.h"
+#include "beltdyn/study.h"
 
 static volatile sig_atomic_t interrupted = 0;
 
@@ -25,13 +26,24 @@ static int usage(FILE *f)
             "       beltdyn static MODEL.yaml [--json]\n"
             "       beltdyn run MODEL.yaml [-o DIR] [--quiet] [--hdf5]\n"
             "       beltdyn report DIR\n"
+            "       beltdyn study MODEL.yaml [-o DIR] [--curves LIST] [--times LIST]\n"
+            "                     [--delays LIST] [--after S] [--quiet]\n"
             "\n"
             "  check   read and validate a model; print what was derived\n"
             "  static  design-standard tensions (DIN 22101, ISO 5048, CEMA)\n"
             "  run     transient simulation; writes summary.json, history.csv,\n"
             "          tension.csv and envelope.csv into DIR (default ./out);\n"
             "          --hdf5 also writes the tension field to DIR/tension.h5\n"
-            "  report  plots and report.html from a finished run's DIR\n");
+            "  report  plots and report.html from a finished run's DIR, or the\n"
+            "          start-curve comparison of a study's DIR\n"
+            "  study   start study (docs/starting.md): runs the model once per start\n"
+            "          curve x start time x pre-start delay, overriding every speed\n"
+            "          drive's start; each case in DIR/<case>/ (default ./study),\n"
+            "          the table in DIR/study.csv and study.json and on stdout.\n"
+            "          --curves linear,harrison,nordell,s-curve (default all four)\n"
+            "          --times 10,30 (s)  --delays 0,3 (s; creep speed from the model)\n"
+            "          --after S: run each case to delay + time + S seconds\n"
+            "          (default: the model's simulation.duration)\n");
     return 2;
 }
 
@@ -165,6 +177,90 @@ static int cmd_report(int argc, char **argv)
     return 0;
 }
 
+/* "a,b,c" → numbers; 0 ok, else a message */
+static int parse_list(const char *opt, const char *text, double *out, int *n)
+{
+    char buf[512];
+    snprintf(buf, sizeof buf, "%s", text);
+    *n = 0;
+    for (char *tok = strtok(buf, ","); tok; tok = strtok(NULL, ",")) {
+        char *end;
+        double v = strtod(tok, &end);
+        if (end == tok || *end != '\0' || *n >= BD_STUDY_MAX) {
+            fprintf(stderr, "beltdyn: %s: '%s' is not a list of at most %d numbers\n", opt, text,
+                    BD_STUDY_MAX);
+            return 1;
+        }
+        out[(*n)++] = v;
+    }
+    return *n == 0;
+}
+
+static int parse_curves(const char *text, bd_study_options *o)
+{
+    char buf[512];
+    snprintf(buf, sizeof buf, "%s", text);
+    o->ncurves = 0;
+    for (char *tok = strtok(buf, ","); tok; tok = strtok(NULL, ",")) {
+        if (o->ncurves >= BD_STUDY_MAX
+            || bd_start_curve_from_name(tok, &o->curves[o->ncurves]) != 0) {
+            fprintf(stderr, "beltdyn: --curves: '%s' is not one of linear, harrison, nordell, "
+                    "s-curve\n", tok);
+            return 1;
+        }
+        o->ncurves++;
+    }
+    return o->ncurves == 0;
+}
+
+static int cmd_study(int argc, char **argv)
+{
+    bd_study_options o;
+    bd_study_options_default(&o);
+    o.out_dir = "study";
+    int quiet = 0;
+    for (int i = 0; i < argc; i++) {
+        const char *a = argv[i];
+        int more = i + 1 < argc;
+        if (strcmp(a, "-o") == 0 && more)
+            o.out_dir = argv[++i];
+        else if (strcmp(a, "--curves") == 0 && more) {
+            if (parse_curves(argv[++i], &o))
+                return 2;
+        } else if (strcmp(a, "--times") == 0 && more) {
+            if (parse_list(a, argv[++i], o.times, &o.ntimes))
+                return 2;
+        } else if (strcmp(a, "--delays") == 0 && more) {
+            if (parse_list(a, argv[++i], o.delays, &o.ndelays))
+                return 2;
+        } else if (strcmp(a, "--after") == 0 && more) {
+            int one = 0;
+            if (parse_list(a, argv[++i], &o.after, &one) || one != 1 || !(o.after > 0.0)) {
+                fprintf(stderr, "beltdyn: --after: expected one number of seconds > 0\n");
+                return 2;
+            }
+        } else if (strcmp(a, "--quiet") == 0 || strcmp(a, "-q") == 0)
+            quiet = 1;
+        else if (!o.model_path && a[0] != '-')
+            o.model_path = a;
+        else
+            return usage(stderr);
+    }
+    if (!o.model_path)
+        return usage(stderr);
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_sigint;
+    sigaction(SIGINT, &sa, NULL);
+    o.progress = !quiet && isatty(STDERR_FILENO);
+    o.interrupted = &interrupted;
+    char err[1024] = "";
+    int rc = bd_study_run(&o, stdout, err, sizeof err);
+    if (rc != BD_RUN_OK && err[0])
+        fprintf(stderr, "beltdyn: %s%s\n", rc == BD_RUN_FAILED ? "error: " : "", err);
+    return rc;
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 2)
@@ -178,6 +274,8 @@ int main(int argc, char **argv)
         return cmd_run(argc - 2, argv + 2);
     if (strcmp(cmd, "report") == 0)
         return cmd_report(argc - 2, argv + 2);
+    if (strcmp(cmd, "study") == 0)
+        return cmd_study(argc - 2, argv + 2);
     if (strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0 || strcmp(cmd, "help") == 0) {
         usage(stdout);
         return 0;

@@ -20,7 +20,10 @@ extern "C" {
  * energy}.{png,svg} and DIR/report.html (one file: images embedded, no
  * outside references). Every file is written to a temporary name and
  * renamed when complete. Returns BD_REPORT_OK, or a BD_REPORT_E* code with
- * a one-line message in err (which may be NULL). */
+ * a one-line message in err (which may be NULL).
+ * A start-study directory (study.csv and study.json from `beltdyn study`,
+ * no summary.json) gets the start-curve comparison instead:
+ * DIR/plots/study_{tension,peaks}.{png,svg} and DIR/report.html. */
 int bd_report_write(const char *dir, char *err, size_t errlen);
 
 #ifdef __cplusplus

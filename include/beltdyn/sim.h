@@ -49,6 +49,30 @@ int bd_sim_step(bd_sim *sim, long n, char *err, size_t errlen);
 /* the whole run with outputs; returns one of BD_RUN_*; message in err */
 int bd_sim_run(bd_sim *sim, const bd_run_options *opt, char *err, size_t errlen);
 
+/* what a start study compares (monitor.c), over the run so far. The
+ * tight side is a point of the belt just before a drive pulley's wrap, the
+ * slack side one just after it; with several drives, the extreme over
+ * them. Slip: the drive pulley's surface speed differed from the belt
+ * speed at it by more than 0.05 m/s + 2% of the surface speed for at least
+ * 0.2 s. Belt acceleration: of the belt at the tight-side point, from its
+ * speed averaged over 0.1 s windows. */
+typedef struct bd_run_result {
+    int drives;                    /* number of drive pulleys (0: the drive
+                                      values below are not meaningful) */
+    double tight_max_N, tight_max_t_s;
+    double slack_min_N, slack_min_t_s;
+    double accel_max_mps2, accel_max_t_s;  /* signed, largest magnitude */
+    double torque_max_Nm;          /* largest |drive torque| */
+    int slipped;
+    double slip_t_s;               /* when the first confirmed slip began, or -1 */
+    double slip_longest_s;         /* longest time above the threshold */
+    double slip_speed_max_mps;     /* largest |surface − belt| speed */
+    double travel_range_m;         /* largest (max − min) over the takeups */
+    double tension_max_N, tension_min_N;  /* anywhere in the belt */
+} bd_run_result;
+
+void bd_sim_result(const bd_sim *sim, bd_run_result *r);
+
 /* a few read-outs for tests and tools */
 double bd_sim_time(const bd_sim *sim);
 double bd_sim_time_step(const bd_sim *sim);

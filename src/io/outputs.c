@@ -124,11 +124,8 @@ void bd_outputs_row(bd_outputs *o, bd_sim *sim, double t)
     fprintf(h, "%.6f", t);
     for (int i = 0; i < sim->probe_count; i++) {
         bd_probe *pr = &sim->probes[i];
-        int e = pr->tr.element, j = e + 1 == sim->n ? 0 : e + 1;
-        double g = pr->tr.gamma;
         pr->tension = bd_tracker_tension(sim, &pr->tr);
-        pr->speed = (1.0 - g) * (pr->tr.dir[0] * sim->vx[e] + pr->tr.dir[1] * sim->vy[e])
-                  + g * (pr->tr.dir[0] * sim->vx[j] + pr->tr.dir[1] * sim->vy[j]);
+        pr->speed = bd_tracker_speed(sim, &pr->tr);
         if (pr->tension > pr->tension_max)
             pr->tension_max = pr->tension;
         if (pr->tension < pr->tension_min)
@@ -278,8 +275,16 @@ static int write_summary(bd_outputs *o, const bd_sim *sim, double wall, const ch
         const bd_pulley_body *pb = &sim->pulleys[i];
         cJSON *p = cJSON_AddObjectToObject(pulleys, def->pulleys[i].name);
         bd_json_add_number(p, "omega_final_rad_s", pb->omega);
-        if (def->pulleys[i].has_drive)
+        if (def->pulleys[i].has_drive) {
+            const bd_drive_monitor *m = &pb->mon;
             bd_json_add_number(p, "torque_max_Nm", pb->torque_max_abs);
+            bd_json_add_number(p, "tight_tension_max_N", m->tight_max);
+            bd_json_add_number(p, "tight_tension_max_time_s", m->tight_max_t);
+            bd_json_add_number(p, "slack_tension_min_N", m->slack_min);
+            bd_json_add_number(p, "belt_accel_max_mps2", m->accel_max);
+            bd_json_add_number(p, "slip_longest_s", m->slip_longest);
+            cJSON_AddBoolToObject(p, "slipped", m->slip_first_t >= 0.0);
+        }
         if (def->pulleys[i].has_takeup) {
             bd_json_add_number(p, "travel_min_m", pb->travel_min);
             bd_json_add_number(p, "travel_max_m", pb->travel_max);

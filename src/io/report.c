@@ -2,6 +2,8 @@
 #include "beltdyn/report.h"
 
 #include "io/csv_read.h"
+#include "io/html.h"
+#include "io/study_report.h"
 #include "io/plot.h"
 
 #include <cjson/cJSON.h>
@@ -24,70 +26,6 @@
 
 /* ---- small helpers ---- */
 
-typedef struct strbuf {
-    char *p;
-    size_t n, cap;
-    int oom;
-} strbuf;
-
-static void sb_grow(strbuf *b, size_t more)
-{
-    if (b->oom || b->n + more + 1 <= b->cap) return;
-    size_t cap = b->cap ? b->cap : 65536;
-    while (cap < b->n + more + 1) cap *= 2;
-    char *q = realloc(b->p, cap);
-    if (!q) {
-        b->oom = 1;
-        return;
-    }
-    b->p = q;
-    b->cap = cap;
-}
-
-static void sb_put(strbuf *b, const char *s, size_t len)
-{
-    sb_grow(b, len);
-    if (b->oom) return;
-    memcpy(b->p + b->n, s, len);
-    b->n += len;
-    b->p[b->n] = '\0';
-}
-
-static void sb_puts(strbuf *b, const char *s) { sb_put(b, s, strlen(s)); }
-
-static void sb_printf(strbuf *b, const char *fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 2, 3)))
-#endif
-    ;
-static void sb_printf(strbuf *b, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    int len = vsnprintf(NULL, 0, fmt, ap);
-    va_end(ap);
-    if (len < 0) return;
-    sb_grow(b, (size_t)len);
-    if (b->oom) return;
-    va_start(ap, fmt);
-    vsnprintf(b->p + b->n, (size_t)len + 1, fmt, ap);
-    va_end(ap);
-    b->n += (size_t)len;
-}
-
-/* text with &, <, >, " escaped */
-static void sb_html(strbuf *b, const char *s)
-{
-    for (; s && *s; s++) {
-        switch (*s) {
-        case '&': sb_puts(b, "&amp;"); break;
-        case '<': sb_puts(b, "&lt;"); break;
-        case '>': sb_puts(b, "&gt;"); break;
-        case '"': sb_puts(b, "&quot;"); break;
-        default: sb_put(b, s, 1);
-        }
-    }
-}
 
 static void set_err(char *err, size_t errlen, const char *fmt, ...)
 #if defined(__GNUC__)
@@ -787,30 +725,6 @@ done:
 
 /* ---- report.html ---- */
 
-static const char *css =
-    "body{font-family:'DejaVu Sans',Arial,sans-serif;margin:0;background:#f4f5f7;color:#1a1a1a}"
-    "main{max-width:1240px;margin:0 auto;padding:16px 24px 48px}"
-    "h1{font-size:26px;margin:18px 0 2px}h2{font-size:20px;margin:28px 0 8px;"
-    "border-bottom:2px solid #d0d4da;padding-bottom:4px}"
-    ".sub{color:#555;margin:0 0 14px}"
-    ".cards{display:flex;flex-wrap:wrap;gap:12px}"
-    ".card{background:#fff;border:1px solid #d0d4da;border-left:6px solid #0072b2;"
-    "border-radius:6px;padding:10px 14px;flex:1 1 220px;max-width:calc(25% - 9px);"
-    "box-sizing:border-box}"
-    ".card.bad{border-left-color:#c00000}.card.ok{border-left-color:#009e73}"
-    ".card .k{font-size:13px;color:#555;text-transform:uppercase;letter-spacing:.04em}"
-    ".card .v{font-size:28px;font-weight:bold;margin:2px 0}"
-    ".card .d{font-size:14px;color:#333}"
-    "table{border-collapse:collapse;background:#fff;margin:6px 0 12px;font-size:14px}"
-    "th,td{border:1px solid #d0d4da;padding:4px 10px;text-align:left}"
-    "td.n{text-align:right;font-variant-numeric:tabular-nums}"
-    "th{background:#e9ecf0}"
-    ".warn{background:#fff4e5;border:1px solid #e69f00;border-radius:6px;padding:8px 16px 8px 34px}"
-    ".warn li{margin:4px 0}.none{color:#555}"
-    "figure{background:#fff;border:1px solid #d0d4da;border-radius:6px;margin:14px 0;padding:8px}"
-    "figure img{width:100%;height:auto;display:block}"
-    "figcaption{font-size:14px;color:#333;padding:6px 4px 0}"
-    "nav a{margin-right:14px}";
 
 /* a key like "tension_max_N" split into "tension max" and "N" (unit NULL
  * when the key has no unit suffix) */
@@ -854,21 +768,21 @@ static void key_label2(char *buf, size_t len, const char *parent, const char *ke
 
 static void key_label(char *buf, size_t len, const char *key) { key_label2(buf, len, NULL, key); }
 
-static void html_value(strbuf *b, const cJSON *v)
+static void html_value(bd_strbuf *b, const cJSON *v)
 {
     char num[64];
     if (cJSON_IsNumber(v)) {
         fmt_num(num, sizeof num, v->valuedouble);
-        sb_puts(b, num);
+        bd_sb_puts(b, num);
     } else if (cJSON_IsString(v)) {
-        sb_html(b, v->valuestring);
+        bd_sb_html(b, v->valuestring);
     } else if (cJSON_IsBool(v)) {
-        sb_puts(b, cJSON_IsTrue(v) ? "yes" : "no");
+        bd_sb_puts(b, cJSON_IsTrue(v) ? "yes" : "no");
     } else if (cJSON_IsNull(v)) {
-        sb_puts(b, "—");
+        bd_sb_puts(b, "—");
     } else {
         char *s = cJSON_PrintUnformatted(v);
-        sb_html(b, s ? s : "");
+        bd_sb_html(b, s ? s : "");
         free(s);
     }
 }
@@ -876,7 +790,7 @@ static void html_value(strbuf *b, const cJSON *v)
 static int is_scalar(const cJSON *v) { return !cJSON_IsObject(v) && !cJSON_IsArray(v); }
 
 /* a table of rows (objects) by name or index: one column per key seen */
-static void html_row_table(strbuf *b, const cJSON *rows, const char *first)
+static void html_row_table(bd_strbuf *b, const cJSON *rows, const char *first)
 {
     const char *keys[32];
     int nk = 0;
@@ -890,42 +804,42 @@ static void html_row_table(strbuf *b, const cJSON *rows, const char *first)
             if (k == nk && nk < 32) keys[nk++] = v->string;
         }
     }
-    sb_puts(b, "<table><tr>");
+    bd_sb_puts(b, "<table><tr>");
     if (first) {
-        sb_puts(b, "<th>");
-        sb_html(b, first);
-        sb_puts(b, "</th>");
+        bd_sb_puts(b, "<th>");
+        bd_sb_html(b, first);
+        bd_sb_puts(b, "</th>");
     }
     for (int k = 0; k < nk; k++) {
         char lab[160];
         key_label(lab, sizeof lab, keys[k]);
-        sb_puts(b, "<th>");
-        sb_html(b, lab);
-        sb_puts(b, "</th>");
+        bd_sb_puts(b, "<th>");
+        bd_sb_html(b, lab);
+        bd_sb_puts(b, "</th>");
     }
-    sb_puts(b, "</tr>\n");
+    bd_sb_puts(b, "</tr>\n");
     cJSON_ArrayForEach(row, rows) {
-        sb_puts(b, "<tr>");
+        bd_sb_puts(b, "<tr>");
         if (first) {
-            sb_puts(b, "<th>");
-            sb_html(b, row->string ? row->string : "");
-            sb_puts(b, "</th>");
+            bd_sb_puts(b, "<th>");
+            bd_sb_html(b, row->string ? row->string : "");
+            bd_sb_puts(b, "</th>");
         }
         for (int k = 0; k < nk; k++) {
             const cJSON *c = cJSON_GetObjectItemCaseSensitive(row, keys[k]);
-            sb_puts(b, cJSON_IsNumber(c) ? "<td class=n>" : "<td>");
+            bd_sb_puts(b, cJSON_IsNumber(c) ? "<td class=n>" : "<td>");
             if (c) html_value(b, c);
-            sb_puts(b, "</td>");
+            bd_sb_puts(b, "</td>");
         }
-        sb_puts(b, "</tr>\n");
+        bd_sb_puts(b, "</tr>\n");
     }
-    sb_puts(b, "</table>\n");
+    bd_sb_puts(b, "</table>\n");
 }
 
 /* an object as tables: scalars (and objects of scalars, prefixed) as
  * name/value rows; objects of objects and arrays of objects as their own
  * tables; lists of strings as lists. skip: keys left out */
-static void html_object(strbuf *b, const cJSON *obj, const char *const *skip, int nskip)
+static void html_object(bd_strbuf *b, const cJSON *obj, const char *const *skip, int nskip)
 {
     const cJSON *v;
     int open = 0;
@@ -950,19 +864,19 @@ static void html_object(strbuf *b, const cJSON *obj, const char *const *skip, in
         for (int i = 0; i < ni; i++) {
             char full[300];
             if (!open) {
-                sb_puts(b, "<table><tr><th>quantity</th><th>value</th></tr>\n");
+                bd_sb_puts(b, "<table><tr><th>quantity</th><th>value</th></tr>\n");
                 open = 1;
             }
             key_label2(full, sizeof full, inner[i] != v ? v->string : NULL,
                        inner[i]->string ? inner[i]->string : "");
-            sb_puts(b, "<tr><th>");
-            sb_html(b, full);
-            sb_puts(b, cJSON_IsNumber(inner[i]) ? "</th><td class=n>" : "</th><td>");
+            bd_sb_puts(b, "<tr><th>");
+            bd_sb_html(b, full);
+            bd_sb_puts(b, cJSON_IsNumber(inner[i]) ? "</th><td class=n>" : "</th><td>");
             html_value(b, inner[i]);
-            sb_puts(b, "</td></tr>\n");
+            bd_sb_puts(b, "</td></tr>\n");
         }
     }
-    if (open) sb_puts(b, "</table>\n");
+    if (open) bd_sb_puts(b, "</table>\n");
     /* nested tables */
     cJSON_ArrayForEach(v, obj) {
         int s = 0;
@@ -972,83 +886,40 @@ static void html_object(strbuf *b, const cJSON *obj, const char *const *skip, in
         const cJSON *c = v->child;
         if (!c) continue;
         if (cJSON_IsObject(v) && cJSON_IsObject(c)) {
-            sb_puts(b, "<h3>");
-            sb_html(b, v->string);
-            sb_puts(b, "</h3>\n");
+            bd_sb_puts(b, "<h3>");
+            bd_sb_html(b, v->string);
+            bd_sb_puts(b, "</h3>\n");
             html_row_table(b, v, v->string);
         } else if (cJSON_IsArray(v) && cJSON_IsObject(c)) {
-            sb_puts(b, "<h3>");
-            sb_html(b, v->string);
-            sb_puts(b, "</h3>\n");
+            bd_sb_puts(b, "<h3>");
+            bd_sb_html(b, v->string);
+            bd_sb_puts(b, "</h3>\n");
             html_row_table(b, v, NULL);
         } else if (cJSON_IsArray(v)) {
-            sb_puts(b, "<h3>");
-            sb_html(b, v->string);
-            sb_puts(b, "</h3><ul>\n");
+            bd_sb_puts(b, "<h3>");
+            bd_sb_html(b, v->string);
+            bd_sb_puts(b, "</h3><ul>\n");
             cJSON_ArrayForEach(c, v) {
-                sb_puts(b, "<li>");
+                bd_sb_puts(b, "<li>");
                 html_value(b, c);
-                sb_puts(b, "</li>\n");
+                bd_sb_puts(b, "</li>\n");
             }
-            sb_puts(b, "</ul>\n");
+            bd_sb_puts(b, "</ul>\n");
         }
     }
 }
 
-static void sb_base64(strbuf *b, const unsigned char *d, size_t n)
-{
-    static const char tab[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    sb_grow(b, (n + 2) / 3 * 4);
-    if (b->oom) return;
-    char *o = b->p + b->n;
-    size_t i = 0;
-    for (; i + 2 < n; i += 3) {
-        unsigned v = (unsigned)d[i] << 16 | (unsigned)d[i + 1] << 8 | d[i + 2];
-        *o++ = tab[v >> 18 & 63];
-        *o++ = tab[v >> 12 & 63];
-        *o++ = tab[v >> 6 & 63];
-        *o++ = tab[v & 63];
-    }
-    if (i < n) {
-        unsigned v = (unsigned)d[i] << 16 | (i + 1 < n ? (unsigned)d[i + 1] << 8 : 0u);
-        *o++ = tab[v >> 18 & 63];
-        *o++ = tab[v >> 12 & 63];
-        *o++ = i + 1 < n ? tab[v >> 6 & 63] : '=';
-        *o++ = '=';
-    }
-    b->n = (size_t)(o - b->p);
-    b->p[b->n] = '\0';
-}
-
-static int embed_png(strbuf *b, const char *path)
-{
-    FILE *fp = fopen(path, "rb");
-    if (!fp) return -1;
-    fseek(fp, 0, SEEK_END);
-    long len = ftell(fp);
-    fseek(fp, 0, SEEK_SET);
-    unsigned char *d = len > 0 ? malloc((size_t)len) : NULL;
-    int rc = -1;
-    if (d && fread(d, 1, (size_t)len, fp) == (size_t)len) {
-        sb_puts(b, "data:image/png;base64,");
-        sb_base64(b, d, (size_t)len);
-        rc = 0;
-    }
-    free(d);
-    fclose(fp);
-    return rc;
-}
 
 /* headline card */
-static void card(strbuf *b, const char *cls, const char *key, const char *value, const char *detail)
+static void card(bd_strbuf *b, const char *cls, const char *key, const char *value, const char *detail)
 {
-    sb_printf(b, "<div class=\"card%s%s\"><div class=k>", cls ? " " : "", cls ? cls : "");
-    sb_html(b, key);
-    sb_puts(b, "</div><div class=v>");
-    sb_html(b, value);
-    sb_puts(b, "</div><div class=d>");
-    sb_html(b, detail);
-    sb_puts(b, "</div></div>\n");
+    bd_sb_printf(b, "<div class=\"card%s%s\"><div class=k>", cls ? " " : "", cls ? cls : "");
+    bd_sb_html(b, key);
+    bd_sb_puts(b, "</div><div class=v>");
+    bd_sb_html(b, value);
+    bd_sb_puts(b, "</div><div class=d>");
+    bd_sb_html(b, detail);
+    bd_sb_puts(b, "</div></div>\n");
 }
 
 /* lowest and highest of a history column, or NaN */
@@ -1068,10 +939,10 @@ static void history_range(const char *dir, const char *column, double *lo, doubl
     bd_csv_free(&c);
 }
 
-static void headline(report *r, strbuf *b)
+static void headline(report *r, bd_strbuf *b)
 {
     char v[128], d[LABEL_LEN], lab[160];
-    sb_puts(b, "<div class=cards>\n");
+    bd_sb_puts(b, "<div class=cards>\n");
     double allow = isfinite(r->rated_N) ? r->rated_N / r->safety_factor : NAN;
     if (r->tmax.known) {
         unit u = pick_unit(fabs(r->tmax.value), "N");
@@ -1176,100 +1047,85 @@ static void headline(report *r, strbuf *b)
     snprintf(v, sizeof v, "%d", nw);
     snprintf(lab, sizeof lab, "%s", nw ? "see the list below" : "none");
     card(b, nw ? "bad" : "ok", "warnings", v, lab);
-    sb_puts(b, "</div>\n");
+    bd_sb_puts(b, "</div>\n");
 }
 
 static int write_html(report *r, char *err, size_t errlen)
 {
-    strbuf b = {0};
-    sb_puts(&b, "<!DOCTYPE html>\n<html lang=en><head><meta charset=utf-8>\n"
+    bd_strbuf b = {0};
+    bd_sb_puts(&b, "<!DOCTYPE html>\n<html lang=en><head><meta charset=utf-8>\n"
                 "<meta name=viewport content=\"width=device-width, initial-scale=1\">\n<title>");
-    sb_html(&b, r->model);
-    sb_puts(&b, " — beltdyn report</title>\n<style>");
-    sb_puts(&b, css);
-    sb_puts(&b, "</style></head><body><main>\n<h1>");
-    sb_html(&b, r->model);
-    sb_puts(&b, "</h1>\n<p class=sub>beltdyn transient run");
+    bd_sb_html(&b, r->model);
+    bd_sb_puts(&b, " — beltdyn report</title>\n<style>");
+    bd_sb_puts(&b, bd_html_css);
+    bd_sb_puts(&b, "</style></head><body><main>\n<h1>");
+    bd_sb_html(&b, r->model);
+    bd_sb_puts(&b, "</h1>\n<p class=sub>beltdyn transient run");
     double dur = json_num(r->summary, "duration_s"), len = json_num(r->summary, "belt_length_m");
-    if (isfinite(dur)) sb_printf(&b, " · %.4g s simulated", dur);
-    if (isfinite(len)) sb_printf(&b, " · belt length %.1f m", len);
+    if (isfinite(dur)) bd_sb_printf(&b, " · %.4g s simulated", dur);
+    if (isfinite(len)) bd_sb_printf(&b, " · belt length %.1f m", len);
     double nodes = json_num(r->summary, "nodes");
-    if (isfinite(nodes)) sb_printf(&b, " · %.0f nodes", nodes);
-    sb_puts(&b, "</p>\n<nav>");
-    sb_puts(&b, "<a href=\"#plots\">plots</a><a href=\"#summary\">summary</a>");
+    if (isfinite(nodes)) bd_sb_printf(&b, " · %.0f nodes", nodes);
+    bd_sb_puts(&b, "</p>\n<nav>");
+    bd_sb_puts(&b, "<a href=\"#plots\">plots</a><a href=\"#summary\">summary</a>");
     const cJSON *stat = cJSON_GetObjectItemCaseSensitive(r->summary, "static");
-    if (cJSON_IsObject(stat)) sb_puts(&b, "<a href=\"#static\">static design</a>");
-    sb_puts(&b, "</nav>\n");
+    if (cJSON_IsObject(stat)) bd_sb_puts(&b, "<a href=\"#static\">static design</a>");
+    bd_sb_puts(&b, "</nav>\n");
 
     headline(r, &b);
 
     /* warnings */
     const cJSON *warn = cJSON_GetObjectItemCaseSensitive(r->summary, "warnings");
-    sb_puts(&b, "<h2 id=warnings>Warnings</h2>\n");
+    bd_sb_puts(&b, "<h2 id=warnings>Warnings</h2>\n");
     if (cJSON_GetArraySize(warn) > 0) {
         const cJSON *w;
-        sb_puts(&b, "<ul class=warn>\n");
+        bd_sb_puts(&b, "<ul class=warn>\n");
         cJSON_ArrayForEach(w, warn) {
-            sb_puts(&b, "<li>");
+            bd_sb_puts(&b, "<li>");
             html_value(&b, w);
-            sb_puts(&b, "</li>\n");
+            bd_sb_puts(&b, "</li>\n");
         }
-        sb_puts(&b, "</ul>\n");
+        bd_sb_puts(&b, "</ul>\n");
     } else {
-        sb_puts(&b, "<p class=none>No warnings.</p>\n");
+        bd_sb_puts(&b, "<p class=none>No warnings.</p>\n");
     }
 
     /* plots */
-    sb_puts(&b, "<h2 id=plots>Plots</h2>\n");
-    if (r->nplots == 0) sb_puts(&b, "<p class=none>No data to plot in this run directory.</p>\n");
+    bd_sb_puts(&b, "<h2 id=plots>Plots</h2>\n");
+    if (r->nplots == 0) bd_sb_puts(&b, "<p class=none>No data to plot in this run directory.</p>\n");
     for (int i = 0; i < r->nplots; i++) {
         char png[PATH_LEN];
         if (snprintf(png, sizeof png, "%s/%s.png", r->plots, r->plot[i].name) >= (int)sizeof png)
             continue;
-        sb_printf(&b, "<figure id=\"%s\"><img alt=\"%s\" src=\"", r->plot[i].name, r->plot[i].name);
-        if (embed_png(&b, png)) {
+        bd_sb_printf(&b, "<figure id=\"%s\"><img alt=\"%s\" src=\"", r->plot[i].name, r->plot[i].name);
+        if (bd_sb_embed_png(&b, png)) {
             free(b.p);
             set_err(err, errlen, "%s: cannot read back", png);
             return BD_REPORT_EOUTPUT;
         }
-        sb_puts(&b, "\"><figcaption>");
-        sb_html(&b, r->plot[i].caption);
-        sb_printf(&b, " (also plots/%s.svg)</figcaption></figure>\n", r->plot[i].name);
+        bd_sb_puts(&b, "\"><figcaption>");
+        bd_sb_html(&b, r->plot[i].caption);
+        bd_sb_printf(&b, " (also plots/%s.svg)</figcaption></figure>\n", r->plot[i].name);
     }
 
     /* summary */
-    sb_puts(&b, "<h2 id=summary>Run summary</h2>\n");
+    bd_sb_puts(&b, "<h2 id=summary>Run summary</h2>\n");
     static const char *const skip[3] = {"warnings", "static", "model"};
     html_object(&b, r->summary, skip, 3);
 
     /* static design table */
     if (cJSON_IsObject(stat)) {
-        sb_puts(&b, "<h2 id=static>Static design calculation</h2>\n");
+        bd_sb_puts(&b, "<h2 id=static>Static design calculation</h2>\n");
         html_object(&b, stat, NULL, 0);
     }
-    sb_puts(&b, "</main></body></html>\n");
-    if (b.oom) {
-        free(b.p);
-        set_err(err, errlen, "report.html: out of memory");
-        return BD_REPORT_EOUTPUT;
-    }
-
-    /* to a temporary name, then renamed */
-    char path[PATH_LEN], tmp[PATH_LEN];
-    if (join(path, r->dir, "report.html") || join(tmp, r->dir, "report.html.tmp")) {
+    bd_sb_puts(&b, "</main></body></html>\n");
+    char path[PATH_LEN];
+    if (join(path, r->dir, "report.html")) {
         free(b.p);
         set_err(err, errlen, "%s: path too long", r->dir);
         return BD_REPORT_EOUTPUT;
     }
-    FILE *fp = fopen(tmp, "wb");
-    int ok = fp && fwrite(b.p, 1, b.n, fp) == b.n;
-    if (fp && fclose(fp) != 0) ok = 0;
-    free(b.p);
-    if (!ok || rename(tmp, path) != 0) {
-        set_err(err, errlen, "%s: %s", path, strerror(errno));
-        remove(tmp);
-        return BD_REPORT_EOUTPUT;
-    }
+    if (bd_html_write(&b, path, err, errlen)) return BD_REPORT_EOUTPUT;
     return 0;
 }
 
@@ -1288,10 +1144,10 @@ static int read_summary(report *r, char *err, size_t errlen)
                 strerror(errno));
         return BD_REPORT_EINPUT;
     }
-    strbuf b = {0};
+    bd_strbuf b = {0};
     char chunk[65536];
     size_t got;
-    while ((got = fread(chunk, 1, sizeof chunk, fp)) > 0) sb_put(&b, chunk, got);
+    while ((got = fread(chunk, 1, sizeof chunk, fp)) > 0) bd_sb_put(&b, chunk, got);
     fclose(fp);
     if (b.oom || !b.p) {
         free(b.p);
@@ -1362,6 +1218,11 @@ int bd_report_write(const char *dir, char *err, size_t errlen)
         set_err(err, errlen, "%s: not a directory", dir);
         return BD_REPORT_EINPUT;
     }
+    /* a start study's directory (beltdyn study): its own comparison report */
+    char study_csv[PATH_LEN], summary[PATH_LEN];
+    if (join(study_csv, dir, "study.csv") == 0 && file_exists(study_csv) &&
+        (join(summary, dir, "summary.json") != 0 || !file_exists(summary)))
+        return bd_study_report_write(dir, err, errlen);
     r = calloc(1, sizeof *r);
     if (!r) {
         set_err(err, errlen, "out of memory");

@@ -44,14 +44,29 @@ static double curve_shape(bd_start_curve c, double tau)
     return tau;
 }
 
+/* pre-start (t < delay): the speed rises to creep_speed along the same
+ * curve, over the time the main ramp's mean acceleration would take to
+ * reach it (T·v_creep/v, at most the delay), and is held there. A jump to
+ * creep speed at t = 0 would put the whole torque limit on the belt. */
+static double prestart_speed(const bd_drive_def *d, double t)
+{
+    double tc = d->speed != 0.0 ? d->start_time * fabs(d->creep_speed / d->speed) : 0.0;
+    if (tc > d->start_delay)
+        tc = d->start_delay;
+    if (tc <= 0.0)
+        return d->creep_speed;
+    return d->creep_speed * curve_shape(d->curve, t / tc);
+}
+
+/* the main ramp starts from creep speed after a pre-start, else from rest */
 static double start_speed(const bd_drive_def *d, double t)
 {
-    if (t < d->start_delay)
-        return d->creep_speed;
+    if (d->start_delay > 0.0 && t < d->start_delay)
+        return prestart_speed(d, t);
     if (d->start_time <= 0.0)
         return d->speed;
-    return d->creep_speed + (d->speed - d->creep_speed)
-                                * curve_shape(d->curve, (t - d->start_delay) / d->start_time);
+    double v0 = d->start_delay > 0.0 ? d->creep_speed : 0.0;
+    return v0 + (d->speed - v0) * curve_shape(d->curve, (t - d->start_delay) / d->start_time);
 }
 
 /* target belt speed of a speed drive at time t, stops included */

@@ -433,6 +433,9 @@ int bd_sim_create(const bd_model_def *def, bd_sim **out, bd_diag *diag)
     load_material(sim);
     setup_idlers(sim);
     setup_probes_and_feed(sim);
+    for (int i = 0; i < sim->pulley_count; i++)
+        if (sim->pulleys[i].def->has_drive)
+            bd_monitor_init(sim, &sim->pulleys[i]);
 
     if (bd_time_step_choose(sim, diag)) {
         bd_sim_free(sim);

@@ -76,6 +76,8 @@ int bd_sim_stabilize(bd_sim *sim, FILE *log)
         p->torque_max_abs = 0.0;
         p->integral = 0.0;
         p->limit_hits = 0;
+        if (p->def->has_drive)
+            bd_monitor_reset(sim, p);
     }
     sim->tension_max = -INFINITY;
     sim->tension_min = INFINITY;

@@ -24,8 +24,7 @@ static void material_transport(bd_sim *sim)
     if (sim->has_feed) {
         int e = fd->element, j = e + 1 == sim->n ? 0 : e + 1;
         double g = fd->gamma;
-        double v = (1.0 - g) * (fd->dir[0] * sim->vx[e] + fd->dir[1] * sim->vy[e])
-                 + g * (fd->dir[0] * sim->vx[j] + fd->dir[1] * sim->vy[j]);
+        double v = bd_tracker_speed(sim, fd);
         if (v > 0.0) {
             double dm = sim->material_mpl * v * sim->dt;
             int nodes[2] = {e, j};
@@ -210,6 +209,9 @@ int bd_step_once(bd_sim *sim)
     for (int i = 0; i < sim->probe_count; i++)
         bd_tracker_update(sim, &sim->probes[i].tr);
     sim->t += dt;
+    for (int i = 0; i < sim->pulley_count; i++)
+        if (sim->pulleys[i].def->has_drive)
+            bd_monitor_update(sim, &sim->pulleys[i]);
     sim->steps++;
     return 0;
 }

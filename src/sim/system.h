@@ -19,6 +19,25 @@ typedef struct bd_tracker {
     double gamma;     /* 0..1 position of the foot point on that element */
 } bd_tracker;
 
+/* what a start study asks of a drive pulley (monitor.c), followed every
+ * step at O(1) cost: tension just before and after the wrap, the belt's
+ * acceleration there and whether the pulley slips under the belt */
+typedef struct bd_drive_monitor {
+    bd_tracker tight, slack;     /* belt points arriving at / leaving the wrap */
+    double tight_max, tight_max_t;   /* N, s */
+    double slack_min, slack_min_t;   /* N, s */
+    double win_sum;              /* m/s summed tight-side speed, this window */
+    long win_count;
+    double win_end;              /* s, end of the current window */
+    double win_prev;             /* m/s mean speed of the previous window */
+    int win_have_prev;
+    double accel_max, accel_max_t;   /* m/s², s: largest |window acceleration| */
+    double slip_dv_max;          /* m/s largest |surface − belt| speed */
+    double slip_since;           /* s, start of the current slip, or −1 */
+    double slip_longest;         /* s, longest slip */
+    double slip_first_t;         /* s, when slip was first confirmed, or −1 */
+} bd_drive_monitor;
+
 typedef struct bd_pulley_body {
     const bd_pulley_def *def;
     double radius;          /* m */
@@ -65,6 +84,7 @@ typedef struct bd_pulley_body {
     int limit_hits;         /* times it arrived at a limit */
     double limit_first_t;   /* s, the first arrival */
     double limit_first_q;   /* m, at which limit */
+    bd_drive_monitor mon;   /* drive pulleys only */
 } bd_pulley_body;
 
 typedef struct bd_idler {
@@ -170,6 +190,13 @@ void bd_sim_warn(bd_sim *sim, const char *fmt, ...)
 void bd_tracker_init(const bd_sim *sim, bd_tracker *tr, double s);
 void bd_tracker_update(const bd_sim *sim, bd_tracker *tr);
 double bd_tracker_tension(const bd_sim *sim, const bd_tracker *tr);
+/* belt speed along the path at the tracked point, m/s */
+double bd_tracker_speed(const bd_sim *sim, const bd_tracker *tr);
+
+/* monitor.c: drive monitors (set up in build, reset when a run starts) */
+void bd_monitor_init(bd_sim *sim, bd_pulley_body *p);
+void bd_monitor_reset(bd_sim *sim, bd_pulley_body *p);
+void bd_monitor_update(bd_sim *sim, bd_pulley_body *p);
 
 /* belt_lumped.c: elastic, damping, bending, gravity forces on nodes */
 void bd_belt_forces(bd_sim *sim);

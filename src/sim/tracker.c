@@ -73,3 +73,11 @@ double bd_tracker_tension(const bd_sim *sim, const bd_tracker *tr)
     int b = e == 0 ? n - 1 : e - 1;
     return sim->tension[b] + (g + 0.5) * (sim->tension[e] - sim->tension[b]);
 }
+
+double bd_tracker_speed(const bd_sim *sim, const bd_tracker *tr)
+{
+    int e = tr->element, j = e + 1 == sim->n ? 0 : e + 1;
+    double g = tr->gamma;
+    return (1.0 - g) * (tr->dir[0] * sim->vx[e] + tr->dir[1] * sim->vy[e])
+         + g * (tr->dir[0] * sim->vx[j] + tr->dir[1] * sim->vy[j]);
+}

@@ -1,0 +1,171 @@
+/* Drive monitors: the quantities a start study compares (issue 4), kept
+ * for every drive pulley while the run steps, O(1) per step and without
+ * allocation.
+ *
+ * - tight side: belt tension at a fixed point of the span arriving at the
+ *   drive pulley, MONITOR_OFFSET before the wrap begins (its largest value
+ *   and when); slack side: the same just after the wrap (its lowest).
+ * - belt acceleration: the belt speed at the tight-side point averaged over
+ *   windows of ACCEL_WINDOW; the acceleration is the change between two
+ *   consecutive window means divided by the window. Averaging keeps the
+ *   step-scale ripple of the contacts (idlers, chordal action) out of it,
+ *   which a per-step difference would blow up by 1/Δt.
+ * - slip: the pulley's surface speed ω·R against the belt speed at the
+ *   pulley (the mean of the tight- and slack-side speeds; elastic creep
+ *   makes them differ by ΔT/EA of the speed, a fraction of a percent). The
+ *   drive slips when they differ by more than SLIP_SPEED + SLIP_FRACTION·|ωR|
+ *   for at least SLIP_TIME without a break. */
+#include "sim/system.h"
+
+#include <math.h>
+
+#define MONITOR_OFFSET 0.5   /* m before / after the wrap, at most 1/4 span */
+#define ACCEL_WINDOW 0.1     /* s */
+#define SLIP_SPEED 0.05      /* m/s */
+#define SLIP_FRACTION 0.02   /* of the surface speed */
+#define SLIP_TIME 0.2        /* s */
+
+static double offset_on(const bd_path_segment *span)
+{
+    double d = 0.25 * span->length;
+    return d < MONITOR_OFFSET ? d : MONITOR_OFFSET;
+}
+
+void bd_monitor_init(bd_sim *sim, bd_pulley_body *p)
+{
+    int i = (int)(p - sim->pulleys);
+    int before = (i + sim->pulley_count - 1) % sim->pulley_count;
+    const bd_path_segment *arc = bd_path_arc(&sim->path, i);
+    double s_in = arc->s0 - offset_on(bd_path_span(&sim->path, before));
+    double s_out = arc->s0 + arc->length + offset_on(bd_path_span(&sim->path, i));
+    bd_tracker_init(sim, &p->mon.tight, s_in);
+    bd_tracker_init(sim, &p->mon.slack, s_out);
+    bd_monitor_reset(sim, p);
+}
+
+void bd_monitor_reset(bd_sim *sim, bd_pulley_body *p)
+{
+    bd_drive_monitor *m = &p->mon;
+    m->tight_max = -INFINITY;
+    m->slack_min = INFINITY;
+    m->tight_max_t = m->slack_min_t = 0.0;
+    m->win_sum = 0.0;
+    m->win_count = 0;
+    m->win_end = sim->t + ACCEL_WINDOW;
+    m->win_have_prev = 0;
+    m->accel_max = m->accel_max_t = 0.0;
+    m->slip_dv_max = 0.0;
+    m->slip_since = -1.0;
+    m->slip_longest = 0.0;
+    m->slip_first_t = -1.0;
+}
+
+static void window_acceleration(bd_drive_monitor *m, double v, double t)
+{
+    m->win_sum += v;
+    m->win_count++;
+    if (t < m->win_end)
+        return;
+    double mean = m->win_sum / (double)m->win_count;
+    if (m->win_have_prev) {
+        double a = (mean - m->win_prev) / ACCEL_WINDOW;
+        if (fabs(a) > fabs(m->accel_max)) {
+            m->accel_max = a;
+            /* the difference belongs between the two window centres */
+            m->accel_max_t = m->win_end - ACCEL_WINDOW;
+        }
+    }
+    m->win_prev = mean;
+    m->win_have_prev = 1;
+    m->win_sum = 0.0;
+    m->win_count = 0;
+    m->win_end += ACCEL_WINDOW;
+}
+
+static void slip(bd_drive_monitor *m, double v_surface, double v_belt, double t)
+{
+    double dv = fabs(v_surface - v_belt);
+    if (dv > m->slip_dv_max)
+        m->slip_dv_max = dv;
+    if (dv <= SLIP_SPEED + SLIP_FRACTION * fabs(v_surface)) {
+        m->slip_since = -1.0;
+        return;
+    }
+    if (m->slip_since < 0.0)
+        m->slip_since = t;
+    double lasted = t - m->slip_since;
+    if (lasted > m->slip_longest)
+        m->slip_longest = lasted;
+    if (lasted >= SLIP_TIME && m->slip_first_t < 0.0)
+        m->slip_first_t = m->slip_since;
+}
+
+/* after a step: sim->t is the time the positions belong to */
+void bd_monitor_update(bd_sim *sim, bd_pulley_body *p)
+{
+    bd_drive_monitor *m = &p->mon;
+    bd_tracker_update(sim, &m->tight);
+    bd_tracker_update(sim, &m->slack);
+    double t = sim->t;
+    double T_in = bd_tracker_tension(sim, &m->tight);
+    double T_out = bd_tracker_tension(sim, &m->slack);
+    if (T_in > m->tight_max) {
+        m->tight_max = T_in;
+        m->tight_max_t = t;
+    }
+    if (T_out < m->slack_min) {
+        m->slack_min = T_out;
+        m->slack_min_t = t;
+    }
+    double v_in = bd_tracker_speed(sim, &m->tight);
+    double v_out = bd_tracker_speed(sim, &m->slack);
+    window_acceleration(m, v_in, t);
+    slip(m, p->omega * p->radius, 0.5 * (v_in + v_out), t);
+}
+
+void bd_sim_result(const bd_sim *sim, bd_run_result *r)
+{
+    r->drives = 0;
+    r->tight_max_N = r->tight_max_t_s = 0.0;
+    r->slack_min_N = r->slack_min_t_s = 0.0;
+    r->accel_max_mps2 = r->accel_max_t_s = 0.0;
+    r->torque_max_Nm = 0.0;
+    r->slipped = 0;
+    r->slip_t_s = -1.0;
+    r->slip_longest_s = r->slip_speed_max_mps = 0.0;
+    r->travel_range_m = 0.0;
+    r->tension_max_N = sim->tension_max;
+    r->tension_min_N = sim->tension_min;
+    for (int i = 0; i < sim->pulley_count; i++) {
+        const bd_pulley_body *p = &sim->pulleys[i];
+        if (p->movable && p->travel_max - p->travel_min > r->travel_range_m)
+            r->travel_range_m = p->travel_max - p->travel_min;
+        if (!p->def->has_drive)
+            continue;
+        const bd_drive_monitor *m = &p->mon;
+        int first = r->drives++ == 0;
+        if (first || m->tight_max > r->tight_max_N) {
+            r->tight_max_N = m->tight_max;
+            r->tight_max_t_s = m->tight_max_t;
+        }
+        if (first || m->slack_min < r->slack_min_N) {
+            r->slack_min_N = m->slack_min;
+            r->slack_min_t_s = m->slack_min_t;
+        }
+        if (fabs(m->accel_max) > fabs(r->accel_max_mps2)) {
+            r->accel_max_mps2 = m->accel_max;
+            r->accel_max_t_s = m->accel_max_t;
+        }
+        if (p->torque_max_abs > r->torque_max_Nm)
+            r->torque_max_Nm = p->torque_max_abs;
+        if (m->slip_first_t >= 0.0) {
+            if (!r->slipped || m->slip_first_t < r->slip_t_s)
+                r->slip_t_s = m->slip_first_t;
+            r->slipped = 1;
+        }
+        if (m->slip_longest > r->slip_longest_s)
+            r->slip_longest_s = m->slip_longest;
+        if (m->slip_dv_max > r->slip_speed_max_mps)
+            r->slip_speed_max_mps = m->slip_dv_max;
+    }
+}
