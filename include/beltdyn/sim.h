@@ -61,6 +61,8 @@ typedef struct bd_run_result {
                                       values below are not meaningful) */
     double tight_max_N, tight_max_t_s;
     double slack_min_N, slack_min_t_s;
+    double tight_swing_N;          /* max − min tight-side tension after the
+                                      start curve reached full speed */
     double accel_max_mps2, accel_max_t_s;  /* signed, largest magnitude */
     double torque_max_Nm;          /* largest |drive torque| */
     int slipped;

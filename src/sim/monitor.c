@@ -5,6 +5,10 @@
  * - tight side: belt tension at a fixed point of the span arriving at the
  *   drive pulley, MONITOR_OFFSET before the wrap begins (its largest value
  *   and when); slack side: the same just after the wrap (its lowest).
+ * - swing: the range (max − min) of the tight-side tension once the start
+ *   curve has reached full speed (t ≥ delay + T): the waves the start left
+ *   in the belt. Seed 000 (§4, Fig. 12) judges start curves by it: a curve
+ *   that ends its acceleration abruptly (linear) leaves the largest.
  * - belt acceleration: the belt speed at the tight-side point averaged over
  *   windows of ACCEL_WINDOW; the acceleration is the change between two
  *   consecutive window means divided by the window. Averaging keeps the
@@ -48,6 +52,10 @@ void bd_monitor_reset(bd_sim *sim, bd_pulley_body *p)
     bd_drive_monitor *m = &p->mon;
     m->tight_max = -INFINITY;
     m->slack_min = INFINITY;
+    m->swing_max = -INFINITY;
+    m->swing_min = INFINITY;
+    const bd_drive_def *d = &p->def->drive;
+    m->ramp_end = d->control == BD_CONTROL_SPEED ? d->start_delay + d->start_time : 0.0;
     m->tight_max_t = m->slack_min_t = 0.0;
     m->win_sum = 0.0;
     m->win_count = 0;
@@ -117,6 +125,12 @@ void bd_monitor_update(bd_sim *sim, bd_pulley_body *p)
         m->slack_min = T_out;
         m->slack_min_t = t;
     }
+    if (t >= m->ramp_end) {
+        if (T_in > m->swing_max)
+            m->swing_max = T_in;
+        if (T_in < m->swing_min)
+            m->swing_min = T_in;
+    }
     double v_in = bd_tracker_speed(sim, &m->tight);
     double v_out = bd_tracker_speed(sim, &m->slack);
     window_acceleration(m, v_in, t);
@@ -134,6 +148,7 @@ void bd_sim_result(const bd_sim *sim, bd_run_result *r)
     r->slip_t_s = -1.0;
     r->slip_longest_s = r->slip_speed_max_mps = 0.0;
     r->travel_range_m = 0.0;
+    r->tight_swing_N = 0.0;
     r->tension_max_N = sim->tension_max;
     r->tension_min_N = sim->tension_min;
     for (int i = 0; i < sim->pulley_count; i++) {
@@ -152,6 +167,9 @@ void bd_sim_result(const bd_sim *sim, bd_run_result *r)
             r->slack_min_N = m->slack_min;
             r->slack_min_t_s = m->slack_min_t;
         }
+        double swing = m->swing_max >= m->swing_min ? m->swing_max - m->swing_min : 0.0;
+        if (swing > r->tight_swing_N)
+            r->tight_swing_N = swing;
         if (fabs(m->accel_max) > fabs(r->accel_max_mps2)) {
             r->accel_max_mps2 = m->accel_max;
             r->accel_max_t_s = m->accel_max_t;

@@ -26,6 +26,8 @@ typedef struct bd_drive_monitor {
     bd_tracker tight, slack;     /* belt points arriving at / leaving the wrap */
     double tight_max, tight_max_t;   /* N, s */
     double slack_min, slack_min_t;   /* N, s */
+    double ramp_end;             /* s, when the start curve reaches full speed */
+    double swing_max, swing_min; /* N, tight-side extremes after ramp_end */
     double win_sum;              /* m/s summed tight-side speed, this window */
     long win_count;
     double win_end;              /* s, end of the current window */

@@ -99,7 +99,7 @@ static int write_whole(const char *path, const char *text, char *err, size_t err
 static const char csv_header[] =
     "case,curve,start_time_s,delay_s,creep_speed_mps,status,"
     "tight_tension_max_N,tight_tension_max_time_s,slack_tension_min_N,"
-    "slack_tension_min_time_s,belt_accel_max_mps2,belt_accel_max_time_s,"
+    "slack_tension_min_time_s,tight_tension_swing_N,belt_accel_max_mps2,belt_accel_max_time_s,"
     "takeup_travel_range_m,drive_torque_max_Nm,slipped,slip_longest_s,"
     "slip_speed_max_mps,belt_tension_max_N,belt_tension_min_N,wall_time_s\n";
 
@@ -114,11 +114,12 @@ static char *csv_text(const study_case *c, int n)
         const bd_run_result *r = &c[i].res;
         len += (size_t)snprintf(
             buf + len, cap - len,
-            "%s,%s,%g,%g,%g,%s,%.6g,%.4f,%.6g,%.4f,%.5g,%.4f,%.5g,%.6g,%d,%.4f,%.4g,%.6g,%.6g,"
+            "%s,%s,%g,%g,%g,%s,%.6g,%.4f,%.6g,%.4f,%.6g,%.5g,%.4f,%.5g,%.6g,%d,%.4f,%.4g,%.6g,%.6g,"
             "%.2f\n",
             c[i].name, bd_start_curve_name(c[i].curve), c[i].time, c[i].delay, c[i].creep,
             status_word(c[i].status), r->tight_max_N, r->tight_max_t_s, r->slack_min_N,
-            r->slack_min_t_s, r->accel_max_mps2, r->accel_max_t_s, r->travel_range_m,
+            r->slack_min_t_s, r->tight_swing_N, r->accel_max_mps2, r->accel_max_t_s,
+            r->travel_range_m,
             r->torque_max_Nm, r->slipped, r->slip_longest_s, r->slip_speed_max_mps,
             r->tension_max_N, r->tension_min_N, c[i].wall_s);
     }
@@ -147,6 +148,7 @@ static char *json_text(const bd_model_def *def, const study_case *c, int n)
         bd_json_add_number(o, "tight_tension_max_time_s", r->tight_max_t_s);
         bd_json_add_number(o, "slack_tension_min_N", r->slack_min_N);
         bd_json_add_number(o, "slack_tension_min_time_s", r->slack_min_t_s);
+        bd_json_add_number(o, "tight_tension_swing_N", r->tight_swing_N);
         bd_json_add_number(o, "belt_accel_max_mps2", r->accel_max_mps2);
         bd_json_add_number(o, "belt_accel_max_time_s", r->accel_max_t_s);
         bd_json_add_number(o, "takeup_travel_range_m", r->travel_range_m);
@@ -194,17 +196,18 @@ static int write_tables(const char *dir, const bd_model_def *def, const study_ca
 
 static void table_header(FILE *f)
 {
-    fprintf(f, "%-22s %9s %7s %9s %9s %7s %8s %9s %5s %7s\n", "case", "T_tight", "at",
-            "T_slack", "a_max", "travel", "M_max", "T_belt", "slip", "wall");
-    fprintf(f, "%-22s %9s %7s %9s %9s %7s %8s %9s %5s %7s\n", "", "max [kN]", "[s]",
-            "min [kN]", "[m/s2]", "[m]", "[kN m]", "max [kN]", "", "[s]");
+    fprintf(f, "%-22s %9s %7s %9s %9s %9s %7s %8s %9s %5s %7s\n", "case", "T_tight", "at",
+            "T_slack", "T_tight", "a_max", "travel", "M_max", "T_belt", "slip", "wall");
+    fprintf(f, "%-22s %9s %7s %9s %9s %9s %7s %8s %9s %5s %7s\n", "", "max [kN]", "[s]",
+            "min [kN]", "swing[kN]", "[m/s2]", "[m]", "[kN m]", "max [kN]", "", "[s]");
 }
 
 static void table_row(FILE *f, const study_case *c)
 {
     const bd_run_result *r = &c->res;
-    fprintf(f, "%-22s %9.2f %7.2f %9.2f %9.3f %7.3f %8.2f %9.2f %5s %7.1f%s%s\n", c->name,
-            r->tight_max_N / 1e3, r->tight_max_t_s, r->slack_min_N / 1e3, r->accel_max_mps2,
+    fprintf(f, "%-22s %9.2f %7.2f %9.2f %9.2f %9.3f %7.3f %8.2f %9.2f %5s %7.1f%s%s\n",
+            c->name, r->tight_max_N / 1e3, r->tight_max_t_s, r->slack_min_N / 1e3,
+            r->tight_swing_N / 1e3, r->accel_max_mps2,
             r->travel_range_m, r->torque_max_Nm / 1e3, r->tension_max_N / 1e3,
             r->slipped ? "yes" : "no", c->wall_s, c->status == BD_RUN_OK ? "" : "  ",
             c->status == BD_RUN_OK ? "" : status_word(c->status));

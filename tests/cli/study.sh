@@ -25,8 +25,9 @@ head -1 "$work/st/study.csv" | grep -q '^case,curve,start_time_s,delay_s,' || fa
 awk -F, 'NR > 1 {
   if ($6 != "completed") { print "case " $1 " status " $6; bad = 1 }
   if (!($7 > $9 && $9 > 0)) { print "case " $1 ": tight " $7 " slack " $9; bad = 1 }
-  if ($15 != 0) { print "case " $1 " slipped"; bad = 1 }
-  if (!($14 > 0)) { print "case " $1 ": no drive torque"; bad = 1 }
+  if (!($11 > 0 && $11 < $7)) { print "case " $1 ": swing " $11; bad = 1 }
+  if ($16 != 0) { print "case " $1 " slipped"; bad = 1 }
+  if (!($15 > 0)) { print "case " $1 ": no drive torque"; bad = 1 }
 } END { exit bad }' "$work/st/study.csv" || fail "study.csv values"
 python3 -c "import json,sys; d=json.load(open(sys.argv[1])); assert abs(d['duration_s'] - 2.5) < 0.01" "$work/st/linear_T1_d0.5/summary.json" || fail "duration not delay+time+after"
 python3 -c "import json,sys; d=json.load(open(sys.argv[1])); assert len(d['cases'])==4" \
