@@ -144,6 +144,8 @@ typedef struct bd_pulley_def {
     double inertia;           /* kg·m² about the axle */
     bd_friction friction;     /* belt-pulley */
     double bearing_damping;   /* N·m·s, viscous bearing torque per rad/s */
+    double velocity_threshold;/* m/s, seed-004 friction threshold (axial) */
+    double force_threshold;   /* N, seed-004 tension threshold (axial) */
     int has_drive;
     bd_drive_def drive;
     int has_takeup;

@@ -124,11 +124,8 @@ void bd_outputs_row(bd_outputs *o, bd_sim *sim, double t)
     fprintf(h, "%.6f", t);
     for (int i = 0; i < sim->probe_count; i++) {
         bd_probe *pr = &sim->probes[i];
-        int e = pr->tr.element, j = e + 1 == sim->n ? 0 : e + 1;
-        double g = pr->tr.gamma;
         pr->tension = bd_tracker_tension(sim, &pr->tr);
-        pr->speed = (1.0 - g) * (pr->tr.dir[0] * sim->vx[e] + pr->tr.dir[1] * sim->vy[e])
-                  + g * (pr->tr.dir[0] * sim->vx[j] + pr->tr.dir[1] * sim->vy[j]);
+        pr->speed = bd_tracker_speed(sim, &pr->tr);
         if (pr->tension > pr->tension_max)
             pr->tension_max = pr->tension;
         if (pr->tension < pr->tension_min)

@@ -18,6 +18,8 @@
  *   belt_mass_per_length: 0 (no centrifugal tension), velocity_threshold:
  *   1e-3 m/s, force_threshold: 1e-3 N, bearing_damping: 0
  *   (see bd_drive_default);
+ * - pulleys accept velocity_threshold (1e-3 m/s) and force_threshold
+ *   (1e-3 N) for the seed-004 law of the axial formulation;
  * - takeup.travel is [min, max] with min <= 0 <= max;
  * - an explicit takeup `force` is accepted for a gravity takeup and
  *   replaces mass*gravity;
@@ -781,6 +783,8 @@ static const field pulley_fields[] = {
     NONNEG("inertia", bd_pulley_def, inertia, 0),
     MAP("friction", bd_pulley_def, friction, 0, &friction_fs),
     NONNEG("bearing_damping", bd_pulley_def, bearing_damping, 0),
+    POS("velocity_threshold", bd_pulley_def, velocity_threshold, 0),
+    POS("force_threshold", bd_pulley_def, force_threshold, 0),
     MAP("drive", bd_pulley_def, drive, 0, &drive_fs),
     MAP("takeup", bd_pulley_def, takeup, 0, &takeup_fs),
 };
