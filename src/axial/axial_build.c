@@ -68,34 +68,54 @@ static double loaded_length(const bd_sim *sim, double a, double b)
     return overlap(a, b, from, to, sim->path.length, NULL, NULL);
 }
 
-/* node path coordinates: pulley nodes at mid-wrap, equal elements between */
+/* node path coordinates: pulley nodes at mid-wrap; between two of them
+ * (half a wrap, a span, half a wrap) equal elements of about the target
+ * length, unless that would put a node inside a wrap: then nodes at the
+ * two tangent points and equal elements along the span. Either way the
+ * belt on a wrap belongs to the two elements of its pulley node. */
+static int piece_stations(const bd_path *path, int j, double target, double *s)
+{
+    const int np = path->pulley_count;
+    const bd_path_segment *arc = bd_path_arc(path, j);
+    const bd_path_segment *next = bd_path_arc(path, (j + 1) % np);
+    double a1 = 0.5 * arc->length, a2 = 0.5 * next->length;
+    double span = bd_path_span(path, j)->length, len = a1 + span + a2;
+    /* the arc of pulley 0 ends the loop: its middle is at −arc/2 */
+    double start = j == 0 ? -a1 : arc->s0 + a1;
+    int n = (int)lround(len / target);
+    if (n < 1)
+        n = 1;
+    if (len / n >= (a1 > a2 ? a1 : a2) * (1.0 - 1e-12)) {
+        for (int k = 0; k < n; k++)
+            if (s)
+                s[k] = start + k * len / n;
+        return n;
+    }
+    int m = (int)lround(span / target);
+    if (m < 1)
+        m = 1;
+    if (s) {
+        s[0] = start;
+        for (int k = 0; k <= m; k++)
+            s[k + 1] = start + a1 + k * span / m;
+    }
+    return m + 2;
+}
+
 static int place_stations(bd_sim *sim, double target, int **pulley_node_out)
 {
     const bd_path *path = &sim->path;
     const int np = path->pulley_count;
     double L = path->length;
-    int *count = bd_xcalloc((size_t)np, sizeof *count);
-    double *start = bd_xcalloc((size_t)np, sizeof *start);
-    double *len = bd_xcalloc((size_t)np, sizeof *len);
     int n = 0;
-    for (int j = 0; j < np; j++) {
-        const bd_path_segment *arc = bd_path_arc(path, j);
-        const bd_path_segment *next = bd_path_arc(path, (j + 1) % np);
-        /* the arc of pulley 0 ends the loop: its middle is at −arc/2 */
-        start[j] = j == 0 ? -0.5 * arc->length : arc->s0 + 0.5 * arc->length;
-        len[j] = 0.5 * arc->length + bd_path_span(path, j)->length + 0.5 * next->length;
-        count[j] = (int)lround(len[j] / target);
-        if (count[j] < 1)
-            count[j] = 1;
-        n += count[j];
-    }
+    for (int j = 0; j < np; j++)
+        n += piece_stations(path, j, target, NULL);
     double *s = bd_xcalloc((size_t)n, sizeof *s);
     int *pnode = bd_xcalloc((size_t)np, sizeof *pnode);
     int at = 0;
     for (int j = 0; j < np; j++) {
         pnode[j] = at;
-        for (int k = 0; k < count[j]; k++)
-            s[at++] = start[j] + k * len[j] / count[j];
+        at += piece_stations(path, j, target, s + at);
     }
     /* rotate so that node 0 is the first at s ≥ 0: s rises along the nodes */
     int r = 0;
@@ -111,9 +131,6 @@ static int place_stations(bd_sim *sim, double target, int **pulley_node_out)
     for (int j = 0; j < np; j++)
         pnode[j] = (pnode[j] - r + n) % n;
     free(s);
-    free(count);
-    free(start);
-    free(len);
     *pulley_node_out = pnode;
     return n;
 }
@@ -131,28 +148,34 @@ static void alloc_arrays(bd_sim *sim)
     sim->seg_hint = bd_xcalloc(n, sizeof(int));
 }
 
-/* weight of belt and material, ∫ m'·g dy, over the two halves of every
- * element: h1[e] over its first half, h2[e] over its second */
-static void element_weights(bd_sim *sim, double *h1, double *h2)
+/* weight of belt and material along the path from a to b, ∫ m'·g dy
+ * (negative when b < a) */
+static double weight_between(const bd_sim *sim, double a, double b)
 {
     const double g = sim->gravity, mL = sim->def->material.mass_per_length;
-    for (int e = 0; e < sim->n; e++) {
-        double s0 = sim->s_node0[e], ds = sim->ax.s_len[e] / WEIGHT_SAMPLES;
-        double p[2], t[2], yprev;
-        bd_path_point(&sim->path, s0, p, t);
+    double ds = (b - a) / WEIGHT_SAMPLES, w = 0.0;
+    double p[2], t[2], yprev;
+    bd_path_point(&sim->path, a, p, t);
+    yprev = p[1];
+    for (int k = 0; k < WEIGHT_SAMPLES; k++) {
+        double lo = a + k * ds;
+        bd_path_point(&sim->path, lo + ds, p, t);
+        double on = 0.0;
+        if (mL > 0.0 && sim->def->material.initially_loaded && ds != 0.0)
+            on = loaded_length(sim, ds > 0.0 ? lo : lo + ds, ds > 0.0 ? lo + ds : lo) / fabs(ds);
+        w += (sim->belt_mpl + mL * on) * g * (p[1] - yprev);
         yprev = p[1];
-        h1[e] = h2[e] = 0.0;
-        for (int k = 0; k < WEIGHT_SAMPLES; k++) {
-            bd_path_point(&sim->path, s0 + (k + 1) * ds, p, t);
-            double a = s0 + k * ds;
-            double mpl = sim->belt_mpl + (mL > 0.0 ? mL * loaded_length(sim, a, a + ds) / ds : 0.0);
-            double w = mpl * g * (p[1] - yprev);
-            if (2 * k < WEIGHT_SAMPLES)
-                h1[e] += w;
-            else
-                h2[e] += w;
-            yprev = p[1];
-        }
+    }
+    return w;
+}
+
+/* the weight over the two halves of every element */
+static void element_weights(bd_sim *sim, double *h1, double *h2)
+{
+    for (int e = 0; e < sim->n; e++) {
+        double s0 = sim->s_node0[e], half = 0.5 * sim->ax.s_len[e];
+        h1[e] = weight_between(sim, s0, s0 + half);
+        h2[e] = weight_between(sim, s0 + half, s0 + 2.0 * half);
     }
 }
 
@@ -207,11 +230,36 @@ static void setup_pulleys(bd_sim *sim, const int *pnode)
             const bd_path_segment *out = bd_path_span(&sim->path, i);
             p->c_in = in->dir[0] * a[0] + in->dir[1] * a[1];
             p->c_out = out->dir[0] * a[0] + out->dir[1] * a[1];
-            /* the wrapped belt hangs on the pulley: its weight along the axis */
+            /* the wrapped belt hangs on the pulley: its weight along the
+             * axis; and the belt pulls at the tangent points, where the
+             * tension differs from its elements' (at their middles) by the
+             * weight in between: both are constant forces on the carriage */
             double m_wrap = sim->belt_mpl * arc->length
-                          + sim->def->material.mass_per_length
-                                * loaded_length(sim, arc->s0, arc->s0 + arc->length);
-            p->wrap_pull = -m_wrap * sim->gravity * a[1];
+                          + (sim->def->material.initially_loaded
+                                 ? sim->def->material.mass_per_length
+                                       * loaded_length(sim, arc->s0, arc->s0 + arc->length)
+                                 : 0.0);
+            int n = sim->n, e_in = (p->node + n - 1) % n;
+            double L = sim->path.length;
+            double mid_in = sim->s_node0[e_in] + 0.5 * sim->ax.s_len[e_in];
+            double mid_out = sim->s_node0[p->node] + 0.5 * sim->ax.s_len[p->node];
+            double a0 = arc->s0, a1 = arc->s0 + arc->length;
+            /* unwrap the arc next to the node */
+            while (a0 - sim->s_node0[p->node] > 0.5 * L) {
+                a0 -= L;
+                a1 -= L;
+            }
+            while (sim->s_node0[p->node] - a0 > 0.5 * L) {
+                a0 += L;
+                a1 += L;
+            }
+            if (mid_in - a0 > 0.5 * L)
+                mid_in -= L;
+            if (mid_out - a1 < -0.5 * L)
+                mid_out += L;
+            double w_in = weight_between(sim, mid_in, a0);    /* T(a0) = T_in + w_in */
+            double w_out = weight_between(sim, a1, mid_out);  /* T(a1) = T_out − w_out */
+            p->wrap_pull = -m_wrap * sim->gravity * a[1] - w_out * p->c_out - w_in * p->c_in;
         }
     }
 }
