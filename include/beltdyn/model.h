@@ -95,6 +95,7 @@ typedef struct bd_transmission_def {
     double velocity_threshold;     /* m/s, tanh friction regularisation */
     double force_threshold;        /* N, tanh tension regularisation */
     double bearing_damping;        /* N·m·s per rad/s, motor sheave */
+    double center_distance;        /* m between sheave axes; 0 = 3·(r_m + r_p) */
 } bd_transmission_def;
 
 typedef struct bd_drive_def {

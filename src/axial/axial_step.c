@@ -230,5 +230,5 @@ double bd_axial_potential(const bd_sim *sim)
         if (p->movable)
             e -= (bd_takeup_force(sim, p, sim->t) + p->wrap_pull) * p->q;
     }
-    return e;
+    return e + bd_transmissions_potential(sim);
 }

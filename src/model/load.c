@@ -16,8 +16,9 @@
  *   pretension and span_stiffness; the optional keys default to belt: flat,
  *   sheave_angle_deg: 38 (a common V-belt groove), friction: 0.5,
  *   belt_mass_per_length: 0 (no centrifugal tension), velocity_threshold:
- *   1e-3 m/s, force_threshold: 1e-3 N, bearing_damping: 0
- *   (see bd_drive_default);
+ *   1e-3 m/s, force_threshold: 1e-3 N, bearing_damping: 0,
+ *   center_distance: 3·(motor_sheave_radius + pulley_sheave_radius)
+ *   (see bd_drive_default and parts/transmission.c);
  * - pulleys accept velocity_threshold (1e-3 m/s) and force_threshold
  *   (1e-3 N) for the seed-004 law of the axial formulation;
  * - takeup.travel is [min, max] with min <= 0 <= max;
@@ -652,6 +653,7 @@ static const field transmission_fields[] = {
     POS("velocity_threshold", bd_transmission_def, velocity_threshold, 0),
     POS("force_threshold", bd_transmission_def, force_threshold, 0),
     NONNEG("bearing_damping", bd_transmission_def, bearing_damping, 0),
+    POS("center_distance", bd_transmission_def, center_distance, 0),
 };
 FIELDSET(transmission_fs, transmission_fields, NULL);
 

@@ -373,6 +373,7 @@ static int finish_create(bd_sim *sim, bd_sim **out, bd_diag *diag)
         return 1;
     }
     prepare_drives(sim);
+    bd_transmissions_tune(sim);
     bd_sim_start_at_rest(sim);
     sim->tension_max = -INFINITY;
     sim->tension_min = INFINITY;

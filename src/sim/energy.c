@@ -26,7 +26,7 @@ double bd_energy_potential(const bd_sim *sim)
     }
     for (int i = 0; i < sim->idler_count; i++)
         e += bd_idler_contact_energy(sim, &sim->idlers[i]);
-    return e;
+    return e + bd_transmissions_potential(sim);
 }
 
 /* the largest |E_k + E_p + E_d − E_in − E_0| / max(|E_0|, E_in, max E_k, 1 J)

@@ -106,8 +106,10 @@ static int check_elements(bd_sim *sim)
 double bd_pulley_external_torque(bd_sim *sim, bd_pulley_body *p)
 {
     double T_drive = 0.0;
-    if (p->def->has_drive && !sim->friction_off)
-        T_drive = p->trans ? bd_transmission_torque(sim, p) : bd_drive_torque(sim, p);
+    if (p->trans)
+        T_drive = bd_transmission_torque(sim, p);
+    else if (p->def->has_drive && !sim->friction_off)
+        T_drive = bd_drive_torque(sim, p);
     p->drive_torque = T_drive;
     if (fabs(T_drive) > p->torque_max_abs)
         p->torque_max_abs = fabs(T_drive);

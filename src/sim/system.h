@@ -279,6 +279,13 @@ double bd_transmission_torque(bd_sim *sim, bd_pulley_body *p);
 void bd_transmission_advance(bd_sim *sim, bd_pulley_body *p, double omega_old, double *ke,
                              double *w_nc);
 void bd_transmissions_free(bd_sim *sim);
+/* after the drives are prepared: the speed loops of transmission drives */
+void bd_transmissions_tune(bd_sim *sim);
+/* elastic energy of the transmissions' spans, J */
+double bd_transmissions_potential(const bd_sim *sim);
+/* motor sheave speed (rad/s) and the belt's slip on both sheaves (m/s) */
+void bd_transmission_state(const bd_pulley_body *p, double *w_motor, double *slip_motor,
+                           double *slip_pulley);
 
 /* tracker.c: belt speed at a tracked point, m/s along the travel */
 double bd_tracker_speed(const bd_sim *sim, const bd_tracker *tr);
