@@ -67,6 +67,7 @@ typedef struct bd_transmission {
     double Q_m;           /* N·m drive torque on the motor sheave this step */
     double torque_p;      /* N·m mean torque of the sheave on the pulley, last step */
     double ke;            /* J, kinetic energy at the end of the last step */
+    double slip_max;      /* m/s, largest |slip| on either sheave so far */
 } bd_transmission;
 
 /* the belt's end-of-sub-step velocities on both wraps and the frictions,
@@ -263,6 +264,11 @@ void bd_transmission_advance(bd_sim *sim, bd_pulley_body *p, double omega_old, d
         tr->w_m = w_new;
         tr->x_m += h * tr->v_m;
         tr->x_p += h * tr->v_p;
+        double s_m = fabs(tr->v_m - tr->r_m * tr->w_m), s_p = fabs(tr->v_p - tr->r_p * w_p);
+        if (s_m > tr->slip_max)
+            tr->slip_max = s_m;
+        if (s_p > tr->slip_max)
+            tr->slip_max = s_p;
         if (k == sub - 1)
             tr->ke = 0.5 * (m * (vm * vm + vp * vp) + J * wm * wm);
     }
@@ -298,4 +304,9 @@ void bd_transmission_state(const bd_pulley_body *p, double *w_motor, double *sli
     *w_motor = tr->w_m;
     *slip_motor = tr->v_m - tr->r_m * tr->w_m;
     *slip_pulley = tr->v_p - tr->r_p * p->omega;
+}
+
+double bd_transmission_slip_max(const bd_pulley_body *p)
+{
+    return p->trans->slip_max;
 }

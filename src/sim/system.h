@@ -286,6 +286,8 @@ double bd_transmissions_potential(const bd_sim *sim);
 /* motor sheave speed (rad/s) and the belt's slip on both sheaves (m/s) */
 void bd_transmission_state(const bd_pulley_body *p, double *w_motor, double *slip_motor,
                            double *slip_pulley);
+/* largest slip of the belt on either sheave so far, m/s */
+double bd_transmission_slip_max(const bd_pulley_body *p);
 
 /* tracker.c: belt speed at a tracked point, m/s along the travel */
 double bd_tracker_speed(const bd_sim *sim, const bd_tracker *tr);
