@@ -95,6 +95,7 @@ typedef struct bd_transmission_def {
     double velocity_threshold;     /* m/s, tanh friction regularisation */
     double force_threshold;        /* N, tanh tension regularisation */
     double bearing_damping;        /* N·m·s per rad/s, motor sheave */
+    double center_distance;        /* m between sheave axes; 0 = 3·(r_m + r_p) */
 } bd_transmission_def;
 
 typedef struct bd_drive_def {
@@ -144,6 +145,8 @@ typedef struct bd_pulley_def {
     double inertia;           /* kg·m² about the axle */
     bd_friction friction;     /* belt-pulley */
     double bearing_damping;   /* N·m·s, viscous bearing torque per rad/s */
+    double velocity_threshold;/* m/s, seed-004 friction threshold (axial) */
+    double force_threshold;   /* N, seed-004 tension threshold (axial) */
     int has_drive;
     bd_drive_def drive;
     int has_takeup;

@@ -24,8 +24,7 @@ static void element_forces(bd_sim *sim)
     double *ux = sim->ux, *uy = sim->uy, *len = sim->len, *tension = sim->tension;
     /* the extremes of this step, for the run's record and divergence check;
      * a NaN anywhere makes the sum NaN */
-    double hi = -INFINITY, lo = INFINITY, sum = 0.0;
-    int ihi = 0, ilo = 0;
+    bd_extremes ext = {-INFINITY, INFINITY, 0.0, 0, 0};
     for (int e = 0; e < n; e++) {
         int j = e + 1 == n ? 0 : e + 1;
         double dx = x[j] - x[e], dy = y[j] - y[e];
@@ -39,15 +38,7 @@ static void element_forces(bd_sim *sim)
         uy[e] = ey;
         len[e] = l;
         tension[e] = T;
-        sum += T;
-        if (T > hi) {
-            hi = T;
-            ihi = e;
-        }
-        if (T < lo) {
-            lo = T;
-            ilo = e;
-        }
+        bd_extremes_add(&ext, T, e);
         fx[e] += T * ex;
         fy[e] += T * ey;
         fx[j] -= T * ex;
@@ -57,11 +48,7 @@ static void element_forces(bd_sim *sim)
         fnx[j] -= Td * ex;
         fny[j] -= Td * ey;
     }
-    sim->step_tension_max = hi;
-    sim->step_tension_min = lo;
-    sim->step_element_max = ihi;
-    sim->step_element_min = ilo;
-    sim->step_tension_sum = sum;
+    bd_extremes_store(sim, &ext);
 }
 
 static void bending_forces(bd_sim *sim)
@@ -105,6 +92,8 @@ void bd_belt_forces(bd_sim *sim)
 
 double bd_belt_elastic_energy(const bd_sim *sim)
 {
+    if (sim->axial)
+        return bd_axial_elastic_energy(sim);
     const int n = sim->n;
     double e = 0.0;
     for (int i = 0; i < n; i++) {
@@ -120,4 +109,13 @@ double bd_belt_elastic_energy(const bd_sim *sim)
         }
     }
     return e;
+}
+
+void bd_extremes_store(bd_sim *sim, const bd_extremes *x)
+{
+    sim->step_tension_max = x->hi;
+    sim->step_tension_min = x->lo;
+    sim->step_element_max = x->ihi;
+    sim->step_element_min = x->ilo;
+    sim->step_tension_sum = x->sum;
 }

@@ -16,8 +16,11 @@
  *   pretension and span_stiffness; the optional keys default to belt: flat,
  *   sheave_angle_deg: 38 (a common V-belt groove), friction: 0.5,
  *   belt_mass_per_length: 0 (no centrifugal tension), velocity_threshold:
- *   1e-3 m/s, force_threshold: 1e-3 N, bearing_damping: 0
- *   (see bd_drive_default);
+ *   1e-3 m/s, force_threshold: 1e-3 N, bearing_damping: 0,
+ *   center_distance: 3·(motor_sheave_radius + pulley_sheave_radius)
+ *   (see bd_drive_default and parts/transmission.c);
+ * - pulleys accept velocity_threshold (1e-3 m/s) and force_threshold
+ *   (1e-3 N) for the seed-004 law of the axial formulation;
  * - takeup.travel is [min, max] with min <= 0 <= max;
  * - an explicit takeup `force` is accepted for a gravity takeup and
  *   replaces mass*gravity;
@@ -650,6 +653,7 @@ static const field transmission_fields[] = {
     POS("velocity_threshold", bd_transmission_def, velocity_threshold, 0),
     POS("force_threshold", bd_transmission_def, force_threshold, 0),
     NONNEG("bearing_damping", bd_transmission_def, bearing_damping, 0),
+    POS("center_distance", bd_transmission_def, center_distance, 0),
 };
 FIELDSET(transmission_fs, transmission_fields, NULL);
 
@@ -781,6 +785,8 @@ static const field pulley_fields[] = {
     NONNEG("inertia", bd_pulley_def, inertia, 0),
     MAP("friction", bd_pulley_def, friction, 0, &friction_fs),
     NONNEG("bearing_damping", bd_pulley_def, bearing_damping, 0),
+    POS("velocity_threshold", bd_pulley_def, velocity_threshold, 0),
+    POS("force_threshold", bd_pulley_def, force_threshold, 0),
     MAP("drive", bd_pulley_def, drive, 0, &drive_fs),
     MAP("takeup", bd_pulley_def, takeup, 0, &takeup_fs),
 };

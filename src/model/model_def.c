@@ -157,6 +157,8 @@ bd_pulley_def bd_pulley_default(void)
     p.wrap = 1;
     p.friction.mu_static = 0.35;
     p.friction.mu_dynamic = 0.30;
+    p.velocity_threshold = 1e-3;
+    p.force_threshold = 1e-3;
     p.drive = bd_drive_default();
     p.takeup = bd_takeup_default();
     return p;

@@ -45,7 +45,7 @@ static double default_element_length(const bd_model_def *def)
     return 2.0 * r * sin(PI / 12.0);
 }
 
-static void *xcalloc(size_t n, size_t size)
+void *bd_xcalloc(size_t n, size_t size)
 {
     void *p = calloc(n ? n : 1, size);
     if (!p) {
@@ -55,52 +55,58 @@ static void *xcalloc(size_t n, size_t size)
     return p;
 }
 
+/* what every formulation's pulley body takes from its definition */
+void bd_pulley_body_init(bd_sim *sim, bd_pulley_body *p, const bd_pulley_def *pd)
+{
+    p->def = pd;
+    p->radius = pd->radius;
+    p->wrap = pd->wrap;
+    p->mu_s = pd->friction.mu_static;
+    p->mu_d = pd->friction.mu_dynamic;
+    p->bearing_damping = pd->bearing_damping;
+    p->inertia = pd->inertia + (pd->has_drive ? pd->drive.inertia : 0.0);
+    /* a massless pulley would have an undefined speed when the belt
+     * slips on it everywhere: floor its inertia at 1% of the inertia of
+     * the belt wrapped on it (documented in docs/physics.md) */
+    double floor_inertia = 0.01 * sim->belt_mpl * PI * pd->radius * pd->radius * pd->radius;
+    if (p->inertia < floor_inertia)
+        p->inertia = floor_inertia;
+    p->cx = pd->x;
+    p->cy = pd->y;
+    if (pd->has_takeup) {
+        p->axis[0] = pd->takeup.axis[0];
+        p->axis[1] = pd->takeup.axis[1];
+        p->movable = pd->takeup.type != BD_TAKEUP_FIXED;
+        p->carriage_mass = pd->mass + pd->takeup.mass;
+        if (p->movable && p->carriage_mass <= 0.0)
+            p->carriage_mass = 1e-3 * sim->belt_mpl * pd->radius;
+        p->force_prev = bd_table_eval(&pd->takeup.force, 0.0);
+    }
+}
+
 static void setup_pulleys(bd_sim *sim, const bd_layout *lay)
 {
     const bd_model_def *def = sim->def;
     sim->pulley_count = def->pulley_count;
-    sim->pulleys = xcalloc((size_t)def->pulley_count, sizeof *sim->pulleys);
+    sim->pulleys = bd_xcalloc((size_t)def->pulley_count, sizeof *sim->pulleys);
     for (int i = 0; i < def->pulley_count; i++) {
         const bd_pulley_def *pd = &def->pulleys[i];
         bd_pulley_body *p = &sim->pulleys[i];
-        p->def = pd;
-        p->radius = pd->radius;
-        p->wrap = pd->wrap;
-        p->mu_s = pd->friction.mu_static;
-        p->mu_d = pd->friction.mu_dynamic;
-        p->bearing_damping = pd->bearing_damping;
-        p->inertia = pd->inertia + (pd->has_drive ? pd->drive.inertia : 0.0);
-        /* a massless pulley would have an undefined speed when the belt
-         * slips on it everywhere: floor its inertia at 1% of the inertia of
-         * the belt wrapped on it (documented in docs/physics.md) */
-        double floor_inertia = 0.01 * sim->belt_mpl * PI * pd->radius * pd->radius * pd->radius;
-        if (p->inertia < floor_inertia)
-            p->inertia = floor_inertia;
-        p->cx = pd->x;
-        p->cy = pd->y;
-        if (pd->has_takeup) {
-            p->axis[0] = pd->takeup.axis[0];
-            p->axis[1] = pd->takeup.axis[1];
-            if (i == lay->takeup) {
-                p->cx += lay->takeup_shift * p->axis[0];
-                p->cy += lay->takeup_shift * p->axis[1];
-            }
-            p->movable = pd->takeup.type != BD_TAKEUP_FIXED;
-            p->carriage_mass = pd->mass + pd->takeup.mass;
-            if (p->movable && p->carriage_mass <= 0.0)
-                p->carriage_mass = 1e-3 * sim->belt_mpl * pd->radius;
-            p->force_prev = bd_table_eval(&pd->takeup.force, 0.0);
+        bd_pulley_body_init(sim, p, pd);
+        if (i == lay->takeup) {
+            p->cx += lay->takeup_shift * p->axis[0];
+            p->cy += lay->takeup_shift * p->axis[1];
         }
         /* contact: stiff and linearly implicit (pulley_contact.c) */
         p->k_contact = 100.0 * sim->k_axial;
         double wrap = bd_path_wrap_angle(&sim->path, i);
         p->win_max = (int)ceil((wrap + 0.5) * pd->radius / sim->l0) + 16;
-        p->c_node = xcalloc((size_t)p->win_max, sizeof *p->c_node);
-        p->c_normal = xcalloc((size_t)p->win_max, sizeof *p->c_normal);
-        p->c_tx = xcalloc((size_t)p->win_max, sizeof *p->c_tx);
-        p->c_ty = xcalloc((size_t)p->win_max, sizeof *p->c_ty);
-        p->c_f = xcalloc((size_t)p->win_max, sizeof *p->c_f);
-        p->c_slip = xcalloc((size_t)p->win_max, sizeof *p->c_slip);
+        p->c_node = bd_xcalloc((size_t)p->win_max, sizeof *p->c_node);
+        p->c_normal = bd_xcalloc((size_t)p->win_max, sizeof *p->c_normal);
+        p->c_tx = bd_xcalloc((size_t)p->win_max, sizeof *p->c_tx);
+        p->c_ty = bd_xcalloc((size_t)p->win_max, sizeof *p->c_ty);
+        p->c_f = bd_xcalloc((size_t)p->win_max, sizeof *p->c_f);
+        p->c_slip = bd_xcalloc((size_t)p->win_max, sizeof *p->c_slip);
         /* window: nodes lying on its arc */
         const bd_path_segment *arc = bd_path_arc(&sim->path, i);
         int first = -1, count = 0;
@@ -117,31 +123,38 @@ static void setup_pulleys(bd_sim *sim, const bd_layout *lay)
     }
 }
 
+int bd_idler_set_layout(bd_sim *sim, int k, double *spacing)
+{
+    const bd_model_def *def = sim->def;
+    const bd_idler_set_def *set = &def->idler_sets[k];
+    const bd_path_segment *sp = bd_path_span(&sim->path, set->span);
+    sim->idlers_per_set[k] = 0;
+    *spacing = set->spacing;
+    if (fabs(sp->dir[0]) < 1e-6) {
+        bd_sim_warn(sim, "idlers on span '%s': the span is vertical; no idlers placed",
+                    def->pulleys[set->span].name);
+        return 0;
+    }
+    /* the closest spacing to the given one that fits the span evenly
+     * (documented in docs/model-format.md) */
+    int count = (int)lround(sp->length / set->spacing) - 1;
+    if (count < 0)
+        count = 0;
+    sim->idlers_per_set[k] = count;
+    *spacing = sp->length / (count + 1);
+    return count;
+}
+
 static void setup_idlers(bd_sim *sim)
 {
     const bd_model_def *def = sim->def;
     int total = 0;
-    sim->idlers_per_set = xcalloc((size_t)def->idler_set_count, sizeof *sim->idlers_per_set);
-    sim->idler_spacing = xcalloc((size_t)def->idler_set_count, sizeof *sim->idler_spacing);
-    for (int k = 0; k < def->idler_set_count; k++) {
-        const bd_idler_set_def *set = &def->idler_sets[k];
-        const bd_path_segment *sp = bd_path_span(&sim->path, set->span);
-        if (fabs(sp->dir[0]) < 1e-6) {
-            bd_sim_warn(sim, "idlers on span '%s': the span is vertical; no idlers placed",
-                        def->pulleys[set->span].name);
-            continue;
-        }
-        /* the closest spacing to the given one that fits the span evenly
-         * (documented in docs/model-format.md) */
-        int count = (int)lround(sp->length / set->spacing) - 1;
-        if (count < 0)
-            count = 0;
-        sim->idlers_per_set[k] = count;
-        sim->idler_spacing[k] = sp->length / (count + 1);
-        total += count;
-    }
+    sim->idlers_per_set = bd_xcalloc((size_t)def->idler_set_count, sizeof *sim->idlers_per_set);
+    sim->idler_spacing = bd_xcalloc((size_t)def->idler_set_count, sizeof *sim->idler_spacing);
+    for (int k = 0; k < def->idler_set_count; k++)
+        total += bd_idler_set_layout(sim, k, &sim->idler_spacing[k]);
     sim->idler_count = total;
-    sim->idlers = xcalloc((size_t)total, sizeof *sim->idlers);
+    sim->idlers = bd_xcalloc((size_t)total, sizeof *sim->idlers);
     int at = 0;
     for (int k = 0; k < def->idler_set_count; k++) {
         const bd_idler_set_def *set = &def->idler_sets[k];
@@ -180,7 +193,7 @@ static void setup_probes_and_feed(bd_sim *sim)
     const bd_model_def *def = sim->def;
     const bd_simulation_def *sd = &def->simulation;
     sim->probe_count = sd->probe_count;
-    sim->probes = xcalloc((size_t)sd->probe_count, sizeof *sim->probes);
+    sim->probes = bd_xcalloc((size_t)sd->probe_count, sizeof *sim->probes);
     for (int i = 0; i < sd->probe_count; i++) {
         bd_probe *pr = &sim->probes[i];
         bd_tracker_init(sim, &pr->tr, bd_path_span_s(&sim->path, sd->probes[i].span,
@@ -352,30 +365,46 @@ static void prepare_drives(bd_sim *sim)
     }
 }
 
+/* every formulation: time step, drives (and transmissions), rest */
+static int finish_create(bd_sim *sim, bd_sim **out, bd_diag *diag)
+{
+    if (bd_time_step_choose(sim, diag) || bd_transmissions_create(sim, diag)) {
+        bd_sim_free(sim);
+        return 1;
+    }
+    prepare_drives(sim);
+    bd_transmissions_tune(sim);
+    bd_sim_start_at_rest(sim);
+    sim->tension_max = -INFINITY;
+    sim->tension_min = INFINITY;
+    for (int i = 0; i < sim->pulley_count; i++) {
+        sim->pulleys[i].travel_min = 0.0;
+        sim->pulleys[i].travel_max = 0.0;
+    }
+    *out = sim;
+    return 0;
+}
+
 int bd_sim_create(const bd_model_def *def, bd_sim **out, bd_diag *diag)
 {
     *out = NULL;
-    /* parsed, but not simulated by this version: say so rather than ignore */
-    int unsupported = 0;
     if (def->belt.formulation == BD_FORMULATION_AXIAL) {
-        bd_diag_error(diag, def->source, def->belt.mark,
-                      "belt.formulation: 'axial' is not available in this version of beltdyn; "
-                      "use 'discrete'");
-        unsupported = 1;
-    }
-    for (int i = 0; i < def->pulley_count; i++)
-        if (def->pulleys[i].has_drive && def->pulleys[i].drive.has_transmission) {
-            bd_diag_error(diag, def->source, def->pulleys[i].drive.mark,
-                          "pulleys[%d].drive.transmission: belt transmissions are not available "
-                          "in this version of beltdyn", i);
-            unsupported = 1;
+        bd_sim *sim = bd_xcalloc(1, sizeof *sim);
+        sim->def = def;
+        sim->axial = 1;
+        sim->gravity = def->gravity;
+        sim->EA = def->belt.axial_stiffness;
+        sim->belt_mpl = def->belt.mass_per_length;
+        if (bd_axial_build(sim, diag)) {
+            bd_sim_free(sim);
+            return 1;
         }
-    if (unsupported)
-        return 1;
+        return finish_create(sim, out, diag);
+    }
     bd_path given;
     if (bd_path_build(def, &given, diag))
         return 1;
-    bd_sim *sim = xcalloc(1, sizeof *sim);
+    bd_sim *sim = bd_xcalloc(1, sizeof *sim);
     sim->def = def;
     sim->gravity = def->gravity;
     sim->EA = def->belt.axial_stiffness;
@@ -406,22 +435,22 @@ int bd_sim_create(const bd_model_def *def, bd_sim **out, bd_diag *diag)
     sim->k_bend = sim->EI / sim->l0;
 
     size_t n = (size_t)sim->n;
-    sim->x = xcalloc(n, sizeof(double));
-    sim->y = xcalloc(n, sizeof(double));
-    sim->vx = xcalloc(n, sizeof(double));
-    sim->vy = xcalloc(n, sizeof(double));
-    sim->fx = xcalloc(n, sizeof(double));
-    sim->fy = xcalloc(n, sizeof(double));
-    sim->fnx = xcalloc(n, sizeof(double));
-    sim->fny = xcalloc(n, sizeof(double));
-    sim->mass = xcalloc(n, sizeof(double));
-    sim->material = xcalloc(n, sizeof(double));
-    sim->tension = xcalloc(n, sizeof(double));
-    sim->ux = xcalloc(n, sizeof(double));
-    sim->uy = xcalloc(n, sizeof(double));
-    sim->len = xcalloc(n, sizeof(double));
-    sim->s_node0 = xcalloc(n, sizeof(double));
-    sim->seg_hint = xcalloc(n, sizeof(int));
+    sim->x = bd_xcalloc(n, sizeof(double));
+    sim->y = bd_xcalloc(n, sizeof(double));
+    sim->vx = bd_xcalloc(n, sizeof(double));
+    sim->vy = bd_xcalloc(n, sizeof(double));
+    sim->fx = bd_xcalloc(n, sizeof(double));
+    sim->fy = bd_xcalloc(n, sizeof(double));
+    sim->fnx = bd_xcalloc(n, sizeof(double));
+    sim->fny = bd_xcalloc(n, sizeof(double));
+    sim->mass = bd_xcalloc(n, sizeof(double));
+    sim->material = bd_xcalloc(n, sizeof(double));
+    sim->tension = bd_xcalloc(n, sizeof(double));
+    sim->ux = bd_xcalloc(n, sizeof(double));
+    sim->uy = bd_xcalloc(n, sizeof(double));
+    sim->len = bd_xcalloc(n, sizeof(double));
+    sim->s_node0 = bd_xcalloc(n, sizeof(double));
+    sim->seg_hint = bd_xcalloc(n, sizeof(int));
 
     for (int i = 0; i < sim->n; i++)
         sim->s_node0[i] = lay.s[i];
@@ -437,20 +466,7 @@ int bd_sim_create(const bd_model_def *def, bd_sim **out, bd_diag *diag)
         if (sim->pulleys[i].def->has_drive)
             bd_monitor_init(sim, &sim->pulleys[i]);
 
-    if (bd_time_step_choose(sim, diag)) {
-        bd_sim_free(sim);
-        return 1;
-    }
-    prepare_drives(sim);
-    bd_sim_start_at_rest(sim);
-    sim->tension_max = -INFINITY;
-    sim->tension_min = INFINITY;
-    for (int i = 0; i < sim->pulley_count; i++) {
-        sim->pulleys[i].travel_min = 0.0;
-        sim->pulleys[i].travel_max = 0.0;
-    }
-    *out = sim;
-    return 0;
+    return finish_create(sim, out, diag);
 }
 
 void bd_sim_free(bd_sim *sim)
@@ -473,6 +489,8 @@ void bd_sim_free(bd_sim *sim)
     free(sim->len);
     free(sim->s_node0);
     free(sim->seg_hint);
+    bd_axial_free(sim);
+    bd_transmissions_free(sim);
     for (int i = 0; i < sim->pulley_count; i++) {
         bd_pulley_body *p = &sim->pulleys[i];
         free(p->c_node);

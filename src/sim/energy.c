@@ -10,6 +10,8 @@
 
 double bd_energy_potential(const bd_sim *sim)
 {
+    if (sim->axial)
+        return bd_axial_potential(sim);
     double g = sim->gravity;
     double e = 0.0;
     for (int i = 0; i < sim->n; i++)
@@ -22,7 +24,7 @@ double bd_energy_potential(const bd_sim *sim)
         if (p->movable)
             e -= bd_takeup_force(sim, p, sim->t) * p->q;
     }
-    return e;
+    return e + bd_transmissions_potential(sim);
 }
 
 /* the largest |E_k + E_p + E_d − E_in − E_0| / max(|E_0|, E_in, max E_k, 1 J)
@@ -47,6 +49,11 @@ void bd_energy_update_balance(bd_sim *sim)
 double bd_element_s(const bd_sim *sim, int e)
 {
     static const double TWO_PI = 6.283185307179586;
+    if (sim->axial) {
+        /* stations are fixed on the path */
+        double s = sim->s_node0[e] + 0.5 * sim->ax.s_len[e];
+        return s < sim->path.length ? s : s - sim->path.length;
+    }
     int j = e + 1 == sim->n ? 0 : e + 1;
     double mx = 0.5 * (sim->x[e] + sim->x[j]), my = 0.5 * (sim->y[e] + sim->y[j]);
     int nseg = sim->path.segment_count;
@@ -87,5 +94,7 @@ double bd_element_s(const bd_sim *sim, int e)
 double bd_element_speed(const bd_sim *sim, int e)
 {
     int j = e + 1 == sim->n ? 0 : e + 1;
+    if (sim->axial)
+        return 0.5 * (sim->vx[e] + sim->vx[j]);
     return 0.5 * (sim->ux[e] * (sim->vx[e] + sim->vx[j]) + sim->uy[e] * (sim->vy[e] + sim->vy[j]));
 }

@@ -101,22 +101,32 @@ static int check_elements(bd_sim *sim)
     return 0;
 }
 
+/* the drive's torque (through its transmission, if any) and the bearing's */
+double bd_pulley_external_torque(bd_sim *sim, bd_pulley_body *p)
+{
+    double T_drive = 0.0;
+    if (p->trans)
+        T_drive = bd_transmission_torque(sim, p);
+    else if (p->def->has_drive && !sim->friction_off)
+        T_drive = bd_drive_torque(sim, p);
+    p->drive_torque = T_drive;
+    if (fabs(T_drive) > p->torque_max_abs)
+        p->torque_max_abs = fabs(T_drive);
+    p->bearing_torque = -p->bearing_damping * p->omega;
+    return T_drive + p->bearing_torque;
+}
+
 /* forces at t: belt, then pulleys (normal + stick–slip), then idlers */
 static int compute_forces(bd_sim *sim)
 {
+    if (sim->axial)
+        return bd_axial_forces(sim);
     bd_belt_forces(sim);
     if (check_elements(sim))
         return 1;
     for (int i = 0; i < sim->pulley_count; i++) {
         bd_pulley_body *p = &sim->pulleys[i];
-        double T_drive = 0.0;
-        if (p->def->has_drive && !sim->friction_off)
-            T_drive = bd_drive_torque(sim, p);
-        p->drive_torque = T_drive;
-        if (fabs(T_drive) > p->torque_max_abs)
-            p->torque_max_abs = fabs(T_drive);
-        p->bearing_torque = -p->bearing_damping * p->omega;
-        bd_pulley_contact(sim, p, T_drive + p->bearing_torque);
+        bd_pulley_contact(sim, p, bd_pulley_external_torque(sim, p));
     }
     for (int i = 0; i < sim->idler_count; i++)
         bd_idler_contact(sim, &sim->idlers[i]);
@@ -142,9 +152,38 @@ void bd_sim_start_at_rest(bd_sim *sim)
         sim->idlers[i].omega = -sim->idlers[i].alpha * h;
 }
 
+/* pulleys: rotation (eqs 4.62, 4.67), their transmissions, and takeup
+ * carriages (4.64–4.65) */
+void bd_pulleys_advance(bd_sim *sim, double *ke, double *w_nc)
+{
+    const double dt = sim->dt;
+    bd_energy *en = &sim->energy;
+    for (int i = 0; i < sim->pulley_count; i++) {
+        bd_pulley_body *p = &sim->pulleys[i];
+        double w_mid = p->omega + 0.5 * p->alpha * dt;
+        *ke += 0.5 * p->inertia * w_mid * w_mid;
+        *w_nc += (p->torque_friction + p->bearing_torque) * w_mid * dt;
+        double w_old = p->omega;
+        p->omega += p->alpha * dt;
+        if (p->trans)
+            bd_transmission_advance(sim, p, w_old, ke, w_nc);
+        else
+            en->input += p->drive_torque * w_mid * dt;
+        if (p->movable) {
+            double qdot_old = p->qdot;
+            p->q_step_start = p->q;
+            *w_nc += bd_takeup_advance(sim, p, &en->input);
+            double qm = 0.5 * (qdot_old + p->qdot);
+            *ke += 0.5 * p->carriage_mass * qm * qm;
+        }
+    }
+}
+
 /* one step; returns 0 or 1 (failed, message in sim->fail_msg) */
 int bd_step_once(bd_sim *sim)
 {
+    if (sim->axial)
+        return bd_axial_step(sim);
     const double dt = sim->dt;
     bd_energy *en = &sim->energy;
 
@@ -174,21 +213,7 @@ int bd_step_once(bd_sim *sim)
     w_nc *= dt;
     ke *= 0.5;
 
-    /* pulleys: rotation (eqs 4.62, 4.67) and takeup carriages (4.64–4.65) */
-    for (int i = 0; i < sim->pulley_count; i++) {
-        bd_pulley_body *p = &sim->pulleys[i];
-        double w_mid = p->omega + 0.5 * p->alpha * dt;
-        ke += 0.5 * p->inertia * w_mid * w_mid;
-        w_nc += (p->torque_friction + p->bearing_torque) * w_mid * dt;
-        en->input += p->drive_torque * w_mid * dt;
-        p->omega += p->alpha * dt;
-        if (p->movable) {
-            double qdot_old = p->qdot;
-            w_nc += bd_takeup_advance(sim, p, &en->input);
-            double qm = 0.5 * (qdot_old + p->qdot);
-            ke += 0.5 * p->carriage_mass * qm * qm;
-        }
-    }
+    bd_pulleys_advance(sim, &ke, &w_nc);
     /* idlers (eq 4.69) */
     for (int i = 0; i < sim->idler_count; i++) {
         bd_idler *id = &sim->idlers[i];

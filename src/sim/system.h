@@ -8,6 +8,9 @@
 #include "beltdyn/model.h"
 #include "beltdyn/sim.h"
 #include "model/path.h"
+#include "contact/belt_pulley_law.h"
+
+struct bd_transmission;
 
 /* a tracker follows which belt element is currently over a fixed point of
  * the path (idler, probe, feed point): the belt moves through it */
@@ -87,6 +90,15 @@ typedef struct bd_pulley_body {
     double limit_first_t;   /* s, the first arrival */
     double limit_first_q;   /* m, at which limit */
     bd_drive_monitor mon;   /* drive pulleys only */
+    /* axial formulation (src/axial/): the pulley acts on one belt node */
+    int node;               /* the belt node on its wrap */
+    double c_in, c_out;     /* u_in·a, u_out·a: spans along the takeup axis */
+    double wrap_pull;       /* N, weight of the wrapped belt along the axis */
+    double q_step_start;    /* m, carriage travel at the start of the step */
+    bd_bpl law;             /* seed-004 law of its wrap */
+    double belt_force;      /* N, its friction force on the belt this step */
+    int slack_warned;       /* a belt end lost tension (warned once) */
+    struct bd_transmission *trans; /* belt transmission to its drive, or NULL */
 } bd_pulley_body;
 
 typedef struct bd_idler {
@@ -119,8 +131,31 @@ typedef struct bd_energy {
     double balance_error_rel; /* largest so far */
 } bd_energy;
 
+/* the axial (1D) belt (src/axial/): nodes are stations fixed on the path;
+ * each carries the belt's displacement u along the path (vx holds its
+ * velocity, fx its force; vy, fy stay 0). Element e joins node e to e+1. */
+/* m/s: the axial belt's rolling resistance fades to zero below this speed
+ * (as the discrete idlers' does, idler_contact.c) */
+#define BD_AXIAL_ROLLING_SPEED 0.01
+
+typedef struct bd_axial {
+    double *u;          /* [n] m displacement along the path */
+    double *gap;        /* [n] m, l − l0 of element e at u = 0 (with takeup travel) */
+    double *gap_rate;   /* [n] m/s its rate (takeup motion), 0 elsewhere */
+    double *k;          /* [n] N/m, EA/l0 of element e */
+    double *c;          /* [n] N·s/m, its dashpot */
+    double *l0;         /* [n] m, its unstretched length */
+    double *s_len;      /* [n] m, its length along the initial path */
+    double *f_const;    /* [n] N, gravity along the path on node i */
+    double *resist;     /* [n] N, rolling resistance on node i at speed */
+    int feed_node;      /* node at the feed point, -1 = none */
+    double min_mass;    /* kg, lightest node without material */
+} bd_axial;
+
 struct bd_sim {
     const bd_model_def *def;
+    int axial;             /* 1: belt.formulation axial (the bd_axial below) */
+    bd_axial ax;
     bd_path path;
     double gravity;
 
@@ -181,7 +216,34 @@ struct bd_sim {
     int warning_count;
 };
 
+/* element tension extremes of one step (a NaN anywhere makes sum NaN) */
+typedef struct bd_extremes {
+    double hi, lo, sum;
+    int ihi, ilo;
+} bd_extremes;
+
+static inline void bd_extremes_add(bd_extremes *x, double T, int e)
+{
+    x->sum += T;
+    if (T > x->hi) {
+        x->hi = T;
+        x->ihi = e;
+    }
+    if (T < x->lo) {
+        x->lo = T;
+        x->ilo = e;
+    }
+}
+
+/* store a step's extremes in sim->step_tension_* */
+void bd_extremes_store(bd_sim *sim, const bd_extremes *x);
+
 /* build.c */
+void bd_pulley_body_init(bd_sim *sim, bd_pulley_body *p, const bd_pulley_def *pd);
+/* idlers of set k that fit its span evenly (0 on a vertical span, with a
+ * warning) and their actual spacing */
+int bd_idler_set_layout(bd_sim *sim, int k, double *spacing);
+void *bd_xcalloc(size_t n, size_t size);
 void bd_sim_warn(bd_sim *sim, const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 2, 3)))
@@ -222,8 +284,41 @@ double bd_energy_potential(const bd_sim *sim);
 void bd_energy_update_balance(bd_sim *sim);
 
 /* step.c */
+/* the drive (or transmission) and bearing torque on pulley p this step */
+double bd_pulley_external_torque(bd_sim *sim, bd_pulley_body *p);
+/* pulley rotations and takeup carriages to the next step; adds their
+ * kinetic energy to *ke and their non-conservative work to *w_nc */
+void bd_pulleys_advance(bd_sim *sim, double *ke, double *w_nc);
 int bd_step_once(bd_sim *sim);
 void bd_sim_start_at_rest(bd_sim *sim);
+
+/* axial formulation (src/axial/) */
+int bd_axial_build(bd_sim *sim, bd_diag *diag);
+void bd_axial_free(bd_sim *sim);
+int bd_axial_forces(bd_sim *sim);
+int bd_axial_step(bd_sim *sim);
+double bd_axial_potential(const bd_sim *sim);
+double bd_axial_elastic_energy(const bd_sim *sim);
+double bd_axial_stable_step(const bd_sim *sim);
+
+/* parts/transmission.c: belt transmissions of drives (seed 004) */
+int bd_transmissions_create(bd_sim *sim, bd_diag *diag);
+/* torque of the transmission on its pulley this step */
+double bd_transmission_torque(bd_sim *sim, bd_pulley_body *p);
+/* advance the transmission over the step in which its pulley went from
+ * omega_old to p->omega; books its energy */
+void bd_transmission_advance(bd_sim *sim, bd_pulley_body *p, double omega_old, double *ke,
+                             double *w_nc);
+void bd_transmissions_free(bd_sim *sim);
+/* after the drives are prepared: the speed loops of transmission drives */
+void bd_transmissions_tune(bd_sim *sim);
+/* elastic energy of the transmissions' spans, J */
+double bd_transmissions_potential(const bd_sim *sim);
+/* motor sheave speed (rad/s) and the belt's slip on both sheaves (m/s) */
+void bd_transmission_state(const bd_pulley_body *p, double *w_motor, double *slip_motor,
+                           double *slip_pulley);
+/* largest slip of the belt on either sheave so far, m/s */
+double bd_transmission_slip_max(const bd_pulley_body *p);
 
 /* output helpers: Eulerian path coordinate of element e's midpoint */
 double bd_element_s(const bd_sim *sim, int e);

@@ -23,8 +23,15 @@ const char *bd_time_step_limit_name(bd_time_step_limit kind)
     return "?";
 }
 
+static int check_user_step(bd_sim *sim, bd_diag *diag);
+
 int bd_time_step_choose(bd_sim *sim, bd_diag *diag)
 {
+    if (sim->axial) {
+        sim->dt_limit = bd_axial_stable_step(sim);
+        sim->limit_kind = BD_LIMIT_AXIAL;
+        return check_user_step(sim, diag);
+    }
     double m = sim->belt_mpl * sim->l0;   /* lightest node: no material */
     double w_axial = 4.0 * sim->k_axial;
     double w_bend = 16.0 * sim->k_bend / (sim->l0 * sim->l0);
@@ -35,7 +42,12 @@ int bd_time_step_choose(bd_sim *sim, bd_diag *diag)
     sim->limit_kind = BD_LIMIT_AXIAL;
     if (w_bend > w_axial)
         sim->limit_kind = BD_LIMIT_BENDING;
+    return check_user_step(sim, diag);
+}
 
+/* a given step must be stable; else 0.8 × the limit */
+static int check_user_step(bd_sim *sim, bd_diag *diag)
+{
     double user = sim->def->simulation.time_step;
     if (user > 0.0) {
         if (user > sim->dt_limit) {

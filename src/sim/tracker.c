@@ -33,11 +33,23 @@ void bd_tracker_init(const bd_sim *sim, bd_tracker *tr, double s)
             hi = mid - 1;
     }
     tr->element = lo;
+    if (sim->axial) {
+        /* fixed stations: the point's place between its two nodes */
+        double rel = s - sim->s_node0[lo];
+        if (rel < 0.0) {
+            tr->element = sim->n - 1;
+            rel = s + L - sim->s_node0[sim->n - 1];
+        }
+        tr->gamma = rel / sim->ax.s_len[tr->element];
+        return;
+    }
     bd_tracker_update(sim, tr);
 }
 
 void bd_tracker_update(const bd_sim *sim, bd_tracker *tr)
 {
+    if (sim->axial)
+        return;
     int n = sim->n;
     int e = tr->element;
     double g = foot_gamma(sim, e, tr->p);
@@ -74,10 +86,14 @@ double bd_tracker_tension(const bd_sim *sim, const bd_tracker *tr)
     return sim->tension[b] + (g + 0.5) * (sim->tension[e] - sim->tension[b]);
 }
 
+/* belt speed at the tracked point along the travel, m/s: the nodes'
+ * velocities interpolated (the axial belt's are along the path already) */
 double bd_tracker_speed(const bd_sim *sim, const bd_tracker *tr)
 {
     int e = tr->element, j = e + 1 == sim->n ? 0 : e + 1;
     double g = tr->gamma;
+    if (sim->axial)
+        return (1.0 - g) * sim->vx[e] + g * sim->vx[j];
     return (1.0 - g) * (tr->dir[0] * sim->vx[e] + tr->dir[1] * sim->vy[e])
          + g * (tr->dir[0] * sim->vx[j] + tr->dir[1] * sim->vy[j]);
 }

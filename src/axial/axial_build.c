@@ -1,0 +1,479 @@
+/* The axial (1D) belt: building it from the model (model-format.md
+ * `formulation: axial`; docs/physics.md §11).
+ *
+ * Nodes are stations fixed on the initial path; each carries the belt's
+ * displacement u along the path. One node sits at the middle of every
+ * pulley's wrap and stands for the belt on that wrap (seed 004: the wrap has
+ * no compliance, its two ends move together); between two pulley nodes the
+ * path is cut into equal elements of about `element_length`, independent of
+ * the pulley radii. Node masses are the belt (and material) on half of each
+ * adjacent element plus the idlers' rotating mass I/r² spread along their
+ * span; gravity acts along the path; idler rolling resistance is spread
+ * along the span in proportion to the belt's weight on it.
+ *
+ * The belt starts at its at-rest tension T(s) = T_c + W(s), W the weight of
+ * belt and material integrated along the path from the drive pulley, T_c
+ * from the takeup's force balance or the installed tension (as layout.c
+ * does for the discrete belt). Each element's unstretched length is set so
+ * that it carries exactly that tension, which makes the start an exact
+ * equilibrium of the discrete equations. */
+#include "sim/system.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* samples per element of the weight integral */
+#define WEIGHT_SAMPLES 8
+
+/* overlap of [a, b] with [c, d] on the loop of length L (each shorter than
+ * L); the first overlapping piece's bounds in *lo, *hi */
+static double overlap(double a, double b, double c, double d, double L, double *lo, double *hi)
+{
+    double total = 0.0;
+    for (int k = -1; k <= 1; k++) {
+        double l = a > c + k * L ? a : c + k * L;
+        double h = b < d + k * L ? b : d + k * L;
+        if (h > l) {
+            if (total == 0.0 && lo) {
+                *lo = l;
+                *hi = h;
+            }
+            total += h - l;
+        }
+    }
+    return total;
+}
+
+/* where the belt carries material at rest: from the feed point to the start
+ * of the discharge pulley's wrap (as layout.c) */
+static int loaded_zone(const bd_sim *sim, double *from, double *to)
+{
+    const bd_material_def *mat = &sim->def->material;
+    if (!mat->present)
+        return 0;
+    double L = sim->path.length;
+    double s_feed = bd_path_span_s(&sim->path, mat->feed_span, mat->feed_at);
+    double s_dis = bd_path_arc(&sim->path, mat->discharge)->s0;
+    *from = s_feed;
+    *to = s_feed + fmod(s_dis - s_feed + 2.0 * L, L);
+    return 1;
+}
+
+static double loaded_length(const bd_sim *sim, double a, double b)
+{
+    double from, to;
+    if (!loaded_zone(sim, &from, &to))
+        return 0.0;
+    return overlap(a, b, from, to, sim->path.length, NULL, NULL);
+}
+
+/* node path coordinates: pulley nodes at mid-wrap; between two of them
+ * (half a wrap, a span, half a wrap) equal elements of about the target
+ * length, unless that would put a node inside a wrap: then nodes at the
+ * two tangent points and equal elements along the span. Either way the
+ * belt on a wrap belongs to the two elements of its pulley node. */
+static int piece_stations(const bd_path *path, int j, double target, double *s)
+{
+    const int np = path->pulley_count;
+    const bd_path_segment *arc = bd_path_arc(path, j);
+    const bd_path_segment *next = bd_path_arc(path, (j + 1) % np);
+    double a1 = 0.5 * arc->length, a2 = 0.5 * next->length;
+    double span = bd_path_span(path, j)->length, len = a1 + span + a2;
+    /* the arc of pulley 0 ends the loop: its middle is at −arc/2 */
+    double start = j == 0 ? -a1 : arc->s0 + a1;
+    int n = (int)lround(len / target);
+    if (n < 1)
+        n = 1;
+    if (len / n >= (a1 > a2 ? a1 : a2) * (1.0 - 1e-12)) {
+        for (int k = 0; k < n; k++)
+            if (s)
+                s[k] = start + k * len / n;
+        return n;
+    }
+    int m = (int)lround(span / target);
+    if (m < 1)
+        m = 1;
+    if (s) {
+        s[0] = start;
+        for (int k = 0; k <= m; k++)
+            s[k + 1] = start + a1 + k * span / m;
+    }
+    return m + 2;
+}
+
+static int place_stations(bd_sim *sim, double target, int **pulley_node_out)
+{
+    const bd_path *path = &sim->path;
+    const int np = path->pulley_count;
+    double L = path->length;
+    int n = 0;
+    for (int j = 0; j < np; j++)
+        n += piece_stations(path, j, target, NULL);
+    double *s = bd_xcalloc((size_t)n, sizeof *s);
+    int *pnode = bd_xcalloc((size_t)np, sizeof *pnode);
+    int at = 0;
+    for (int j = 0; j < np; j++) {
+        pnode[j] = at;
+        at += piece_stations(path, j, target, s + at);
+    }
+    /* rotate so that node 0 is the first at s ≥ 0: s rises along the nodes */
+    int r = 0;
+    while (r < n && s[r] < 0.0)
+        r++;
+    r %= n;
+    sim->n = n;
+    sim->s_node0 = bd_xcalloc((size_t)n, sizeof *sim->s_node0);
+    for (int i = 0; i < n; i++) {
+        double si = s[(i + r) % n];
+        sim->s_node0[i] = si < 0.0 ? si + L : si;
+    }
+    for (int j = 0; j < np; j++)
+        pnode[j] = (pnode[j] - r + n) % n;
+    free(s);
+    *pulley_node_out = pnode;
+    return n;
+}
+
+static void alloc_arrays(bd_sim *sim)
+{
+    size_t n = (size_t)sim->n;
+    double **d[] = {&sim->x, &sim->y, &sim->vx, &sim->vy, &sim->fx, &sim->fy, &sim->fnx,
+                    &sim->fny, &sim->mass, &sim->material, &sim->tension, &sim->ux, &sim->uy,
+                    &sim->len, &sim->ax.u, &sim->ax.gap, &sim->ax.gap_rate, &sim->ax.k,
+                    &sim->ax.c, &sim->ax.l0, &sim->ax.s_len, &sim->ax.f_const,
+                    &sim->ax.resist};
+    for (size_t i = 0; i < sizeof d / sizeof d[0]; i++)
+        *d[i] = bd_xcalloc(n, sizeof(double));
+    sim->seg_hint = bd_xcalloc(n, sizeof(int));
+}
+
+/* weight of belt and material along the path from a to b, ∫ m'·g dy
+ * (negative when b < a) */
+static double weight_between(const bd_sim *sim, double a, double b)
+{
+    const double g = sim->gravity, mL = sim->def->material.mass_per_length;
+    double ds = (b - a) / WEIGHT_SAMPLES, w = 0.0;
+    double p[2], t[2], yprev;
+    bd_path_point(&sim->path, a, p, t);
+    yprev = p[1];
+    for (int k = 0; k < WEIGHT_SAMPLES; k++) {
+        double lo = a + k * ds;
+        bd_path_point(&sim->path, lo + ds, p, t);
+        double on = 0.0;
+        if (mL > 0.0 && sim->def->material.initially_loaded && ds != 0.0)
+            on = loaded_length(sim, ds > 0.0 ? lo : lo + ds, ds > 0.0 ? lo + ds : lo) / fabs(ds);
+        w += (sim->belt_mpl + mL * on) * g * (p[1] - yprev);
+        yprev = p[1];
+    }
+    return w;
+}
+
+/* the weight over the two halves of every element */
+static void element_weights(bd_sim *sim, double *h1, double *h2)
+{
+    for (int e = 0; e < sim->n; e++) {
+        double s0 = sim->s_node0[e], half = 0.5 * sim->ax.s_len[e];
+        h1[e] = weight_between(sim, s0, s0 + half);
+        h2[e] = weight_between(sim, s0 + half, s0 + 2.0 * half);
+    }
+}
+
+/* the tension level T_c: the takeup pulley's force balance along its axis,
+ *   F + (m_p·g + wrap weight)·(−a_y) + T_out·(u_out·a) − T_in·(u_in·a) = 0,
+ * with T_in, T_out the tensions of its two elements; or the installed
+ * tension without a takeup (model-format.md `initial_tension`) */
+static int tension_level(bd_sim *sim, const double *W_mid, double *Tc, bd_diag *diag)
+{
+    const bd_model_def *def = sim->def;
+    *Tc = def->belt.initial_tension;
+    for (int i = 0; i < sim->pulley_count; i++) {
+        const bd_pulley_body *p = &sim->pulleys[i];
+        if (!p->movable)
+            continue;
+        int e_out = p->node, e_in = (p->node + sim->n - 1) % sim->n;
+        double F = bd_table_eval(&p->def->takeup.force, 0.0);
+        double pull = F - p->def->mass * sim->gravity * p->axis[1] + p->wrap_pull;
+        double denom = p->c_out - p->c_in;
+        if (fabs(denom) < 1e-6) {
+            bd_diag_error(diag, def->source, p->def->takeup.mark,
+                          "pulleys[%d] '%s': takeup axis is perpendicular to the belt's pull "
+                          "on the pulley; it cannot set the tension", i, p->def->name);
+            return 1;
+        }
+        *Tc = -(pull + W_mid[e_out] * p->c_out - W_mid[e_in] * p->c_in) / denom;
+        return 0;
+    }
+    return 0;
+}
+
+static void setup_pulleys(bd_sim *sim, const int *pnode)
+{
+    const bd_model_def *def = sim->def;
+    const int np = def->pulley_count;
+    sim->pulley_count = np;
+    sim->pulleys = bd_xcalloc((size_t)np, sizeof *sim->pulleys);
+    for (int i = 0; i < np; i++) {
+        const bd_pulley_def *pd = &def->pulleys[i];
+        bd_pulley_body *p = &sim->pulleys[i];
+        bd_pulley_body_init(sim, p, pd);
+        p->node = pnode[i];
+        const bd_path_segment *arc = bd_path_arc(&sim->path, i);
+        p->law.f = pd->friction.mu_dynamic;
+        p->law.theta = bd_path_wrap_angle(&sim->path, i);
+        p->law.rho = sim->belt_mpl;
+        p->law.v_thr = pd->velocity_threshold;
+        p->law.f_thr = pd->force_threshold;
+        if (pd->has_takeup) {
+            const double *a = p->axis;
+            const bd_path_segment *in = bd_path_span(&sim->path, (i + np - 1) % np);
+            const bd_path_segment *out = bd_path_span(&sim->path, i);
+            p->c_in = in->dir[0] * a[0] + in->dir[1] * a[1];
+            p->c_out = out->dir[0] * a[0] + out->dir[1] * a[1];
+            /* the wrapped belt hangs on the pulley: its weight along the
+             * axis; and the belt pulls at the tangent points, where the
+             * tension differs from its elements' (at their middles) by the
+             * weight in between: both are constant forces on the carriage */
+            double m_wrap = sim->belt_mpl * arc->length
+                          + (sim->def->material.initially_loaded
+                                 ? sim->def->material.mass_per_length
+                                       * loaded_length(sim, arc->s0, arc->s0 + arc->length)
+                                 : 0.0);
+            int n = sim->n, e_in = (p->node + n - 1) % n;
+            double L = sim->path.length;
+            double mid_in = sim->s_node0[e_in] + 0.5 * sim->ax.s_len[e_in];
+            double mid_out = sim->s_node0[p->node] + 0.5 * sim->ax.s_len[p->node];
+            double a0 = arc->s0, a1 = arc->s0 + arc->length;
+            /* unwrap the arc next to the node */
+            while (a0 - sim->s_node0[p->node] > 0.5 * L) {
+                a0 -= L;
+                a1 -= L;
+            }
+            while (sim->s_node0[p->node] - a0 > 0.5 * L) {
+                a0 += L;
+                a1 += L;
+            }
+            if (mid_in - a0 > 0.5 * L)
+                mid_in -= L;
+            if (mid_out - a1 < -0.5 * L)
+                mid_out += L;
+            double w_in = weight_between(sim, mid_in, a0);    /* T(a0) = T_in + w_in */
+            double w_out = weight_between(sim, a1, mid_out);  /* T(a1) = T_out − w_out */
+            p->wrap_pull = -m_wrap * sim->gravity * a[1] - w_out * p->c_out - w_in * p->c_in;
+        }
+    }
+}
+
+/* idlers: rotating mass I/r² and rolling resistance spread along their span */
+static void spread_idlers(bd_sim *sim)
+{
+    const bd_model_def *def = sim->def;
+    double L = sim->path.length, mL = def->material.mass_per_length;
+    sim->idlers_per_set = bd_xcalloc((size_t)def->idler_set_count, sizeof *sim->idlers_per_set);
+    sim->idler_spacing = bd_xcalloc((size_t)def->idler_set_count, sizeof *sim->idler_spacing);
+    for (int k = 0; k < def->idler_set_count; k++) {
+        const bd_idler_set_def *set = &def->idler_sets[k];
+        int count = bd_idler_set_layout(sim, k, &sim->idler_spacing[k]);
+        if (count == 0)
+            continue;
+        const bd_path_segment *sp = bd_path_span(&sim->path, set->span);
+        double inertia = set->inertia > 0.0 ? set->inertia : 1e-6;
+        double mass_per_m = count * inertia / (set->radius * set->radius) / sp->length;
+        /* the idlers carry the weight on count·spacing of the span */
+        double cover = count * sim->idler_spacing[k] / sp->length;
+        double rr = set->rolling_resistance * sim->gravity * fabs(sp->dir[0]) * cover;
+        for (int i = 0; i < sim->n; i++) {
+            int b = (i + sim->n - 1) % sim->n;
+            double a = sim->s_node0[i] - 0.5 * sim->ax.s_len[b];
+            double z = sim->s_node0[i] + 0.5 * sim->ax.s_len[i];
+            double lo = 0.0, hi = 0.0;
+            double on = overlap(a, z, sp->s0, sp->s0 + sp->length, L, &lo, &hi);
+            if (on <= 0.0)
+                continue;
+            sim->mass[i] += mass_per_m * on;
+            sim->ax.resist[i] += rr * (sim->belt_mpl * on + mL * loaded_length(sim, lo, hi));
+        }
+    }
+}
+
+int bd_axial_build(bd_sim *sim, bd_diag *diag)
+{
+    const bd_model_def *def = sim->def;
+    if (bd_path_build(def, &sim->path, diag))
+        return 1;
+    double target = def->belt.element_length > 0.0 ? def->belt.element_length : 1.0;
+    int *pnode;
+    place_stations(sim, target, &pnode);
+    const int n = sim->n;
+    alloc_arrays(sim);
+    double L = sim->path.length;
+    for (int e = 0; e < n; e++) {
+        int j = e + 1 == n ? 0 : e + 1;
+        double ds = sim->s_node0[j] - sim->s_node0[e];
+        sim->ax.s_len[e] = ds > 0.0 ? ds : ds + L;
+    }
+    setup_pulleys(sim, pnode);
+    free(pnode);
+
+    /* at-rest tension: weights integrated from the (first) drive pulley's
+     * node, so that the net weight of an inclined load sits on a pulley */
+    double *h1 = bd_xcalloc((size_t)n, sizeof *h1), *h2 = bd_xcalloc((size_t)n, sizeof *h2);
+    double *W_mid = bd_xcalloc((size_t)n, sizeof *W_mid);
+    element_weights(sim, h1, h2);
+    int origin = sim->pulleys[0].node;
+    for (int i = 0; i < sim->pulley_count; i++)
+        if (def->pulleys[i].has_drive) {
+            origin = sim->pulleys[i].node;
+            break;
+        }
+    double W = 0.0;
+    for (int k = 0; k < n; k++) {
+        int e = (origin + k) % n;
+        W_mid[e] = W + h1[e];
+        W += h1[e] + h2[e];
+    }
+    double Tc;
+    if (tension_level(sim, W_mid, &Tc, diag)) {
+        free(h1);
+        free(h2);
+        free(W_mid);
+        return 1;
+    }
+    int rest = def->simulation.initial_state == BD_INITIAL_REST;
+    double EA = sim->EA, zeta = def->belt.damping_ratio, l0_sum = 0.0;
+    for (int e = 0; e < n; e++) {
+        double T = rest ? 0.0 : Tc + W_mid[e];
+        double l0 = sim->ax.s_len[e] / (1.0 + T / EA);
+        sim->ax.l0[e] = l0;
+        sim->ax.gap[e] = sim->ax.s_len[e] - l0;
+        sim->ax.k[e] = EA / l0;
+        /* seed 001 eq 4.3 per element: c = 2ζ·√(k·m_e) */
+        sim->ax.c[e] = 2.0 * zeta * sqrt(sim->ax.k[e] * sim->belt_mpl * l0);
+        sim->tension[e] = T;
+        l0_sum += l0;
+    }
+    sim->l0 = l0_sum / n;
+    sim->k_axial = EA / sim->l0;
+
+    /* nodes: mass, gravity along the path, position */
+    double mL = def->material.mass_per_length;
+    for (int i = 0; i < n; i++) {
+        int b = (i + n - 1) % n;
+        double a = sim->s_node0[i] - 0.5 * sim->ax.s_len[b];
+        double z = sim->s_node0[i] + 0.5 * sim->ax.s_len[i];
+        double on = def->material.initially_loaded ? loaded_length(sim, a, z) : 0.0;
+        sim->material[i] = mL * on;
+        sim->mass[i] = sim->belt_mpl * (z - a) + sim->material[i];
+        sim->ax.f_const[i] = -(h2[b] + h1[i]);
+        double p[2], t[2];
+        bd_path_point(&sim->path, sim->s_node0[i], p, t);
+        sim->x[i] = p[0];
+        sim->y[i] = p[1];
+    }
+    free(h1);
+    free(h2);
+    free(W_mid);
+    if (def->material.present && !def->material.initially_loaded)
+        bd_sim_warn(sim, "material.initially_loaded: false is not modelled by the axial "
+                    "formulation: the belt carries no material during the run");
+    sim->ax.min_mass = INFINITY;
+    for (int i = 0; i < n; i++)
+        if (sim->mass[i] - sim->material[i] < sim->ax.min_mass)
+            sim->ax.min_mass = sim->mass[i] - sim->material[i];
+    spread_idlers(sim);
+    for (int e = 0; e < n; e++) {
+        int j = e + 1 == n ? 0 : e + 1;
+        double dx = sim->x[j] - sim->x[e], dy = sim->y[j] - sim->y[e];
+        sim->len[e] = hypot(dx, dy);
+        sim->ux[e] = sim->len[e] > 0.0 ? dx / sim->len[e] : 1.0;
+        sim->uy[e] = sim->len[e] > 0.0 ? dy / sim->len[e] : 0.0;
+    }
+
+    /* probes and the feed point: trackers fixed on the path */
+    sim->probe_count = def->simulation.probe_count;
+    sim->probes = bd_xcalloc((size_t)sim->probe_count, sizeof *sim->probes);
+    for (int i = 0; i < sim->probe_count; i++) {
+        bd_probe *pr = &sim->probes[i];
+        const bd_probe_def *pd = &def->simulation.probes[i];
+        bd_tracker_init(sim, &pr->tr, bd_path_span_s(&sim->path, pd->span, pd->at));
+        pr->tension_max = -INFINITY;
+        pr->tension_min = INFINITY;
+    }
+    sim->ax.feed_node = -1;
+    if (def->material.present && def->material.initially_loaded) {
+        sim->material_mpl = mL;
+        sim->discharge_pulley = def->material.discharge;
+        sim->has_feed = def->material.feeding;
+        bd_tracker_init(sim, &sim->feed,
+                        bd_path_span_s(&sim->path, def->material.feed_span, def->material.feed_at));
+        if (sim->has_feed)
+            sim->ax.feed_node = sim->feed.gamma < 0.5 ? sim->feed.element
+                                                      : (sim->feed.element + 1) % n;
+    }
+    return 0;
+}
+
+/* Gershgorin bound of the highest frequency, node by node: a node between
+ * elements a and b has ω² ≤ 2·(k_a + k_b)/m (plus k·|u·a| where an element
+ * pulls a takeup carriage) and damping 2·(c_a + c_b) + the slope of the
+ * rolling resistance; a carriage ω² ≤ Σ (k·c² + 2·k·|c|)/M. The step for
+ * each is (2/ω)·(√(1+ζ²) − ζ) (timestep.c). */
+static double mode_step(double K, double C, double m)
+{
+    if (K <= 0.0 || m <= 0.0)
+        return INFINITY;
+    double w = sqrt(K / m), z = C / (2.0 * m * w);
+    return 2.0 / w * (sqrt(1.0 + z * z) - z);
+}
+
+double bd_axial_stable_step(const bd_sim *sim)
+{
+    const int n = sim->n;
+    const bd_axial *ax = &sim->ax;
+    double dt = INFINITY;
+    for (int i = 0; i < n; i++) {
+        int b = i == 0 ? n - 1 : i - 1;
+        double K = 2.0 * (ax->k[b] + ax->k[i]);
+        double C = 2.0 * (ax->c[b] + ax->c[i]) + ax->resist[i] / BD_AXIAL_ROLLING_SPEED;
+        for (int p = 0; p < sim->pulley_count; p++) {
+            const bd_pulley_body *pb = &sim->pulleys[p];
+            if (!pb->movable)
+                continue;
+            int e_in = (pb->node + n - 1) % n;
+            if (i == e_in || i == (e_in + 1) % n)
+                K += ax->k[e_in] * fabs(pb->c_in);
+            if (i == pb->node || i == (pb->node + 1) % n)
+                K += ax->k[pb->node] * fabs(pb->c_out);
+        }
+        double d = mode_step(K, C, sim->mass[i] - sim->material[i]);
+        if (d < dt)
+            dt = d;
+    }
+    for (int p = 0; p < sim->pulley_count; p++) {
+        const bd_pulley_body *pb = &sim->pulleys[p];
+        if (!pb->movable)
+            continue;
+        double ki = ax->k[(pb->node + n - 1) % n], ko = ax->k[pb->node];
+        double K = ki * (pb->c_in * pb->c_in + 2.0 * fabs(pb->c_in))
+                 + ko * (pb->c_out * pb->c_out + 2.0 * fabs(pb->c_out));
+        double d = mode_step(K, 0.0, pb->carriage_mass);
+        if (d < dt)
+            dt = d;
+    }
+    return dt;
+}
+
+void bd_axial_free(bd_sim *sim)
+{
+    bd_axial *ax = &sim->ax;
+    free(ax->u);
+    free(ax->gap);
+    free(ax->gap_rate);
+    free(ax->k);
+    free(ax->c);
+    free(ax->l0);
+    free(ax->s_len);
+    free(ax->f_const);
+    free(ax->resist);
+    memset(ax, 0, sizeof *ax);
+}

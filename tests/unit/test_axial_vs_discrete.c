@@ -1,0 +1,125 @@
+/* Acceptance (issue 5): the same conveyor start run with the discrete belt
+ * (seed 001, default element length) and with the axial belt (seed 004,
+ * 2 m elements) agrees on the peak drive torque and the peak tight-side
+ * tension within 5%. The conveyor: 100 m, horizontal, head drive with an
+ * S-curve start to 2 m/s in 4 s, a constant-force takeup at the tail, carry
+ * idlers every 1.5 m and return idlers every 3 m with rolling resistance.
+ * The two models differ in what the axial one leaves out (sag between
+ * idlers, bending over the pulleys, the polygon of chords on each wrap,
+ * idler spin-up by friction), which the 5% of the issue covers.
+ *
+ * Both peaks are taken from the signals averaged over 0.2 s. The discrete
+ * default element is the chord of a 30° arc, so the belt runs over each
+ * pulley as a polygon with a speed ripple of 1 − cos 15° = 3.4% at the
+ * chord-passing frequency v/l (≥ 4 Hz above 1 m/s; docs/model-format.md,
+ * chordal action), which the speed controller answers with torque spikes
+ * of ±40% that are an artefact of the discretization, not of the conveyor;
+ * the 0.2 s average (about what a drive's torque display shows) removes
+ * them and leaves the start transient (4 s). The raw peaks are printed.
+ * The drive inertia (200 kg·m² at the pulley: motor and gearbox) is a
+ * typical one. Speed is not a test: bench/bench_axial_10km.c times both. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sim/system.h"
+#include "testlib.h"
+
+static const char *model_fmt =
+    "name: start %s\n"
+    "belt: {mass_per_length: 20, axial_stiffness: 5.0e6, damping_ratio: 0.05,\n"
+    "       formulation: %s%s}\n"
+    "pulleys:\n"
+    "  - name: tail\n"
+    "    x: 0\n"
+    "    y: 0\n"
+    "    radius: 0.5\n"
+    "    wrap: cw\n"
+    "    mass: 300\n"
+    "    takeup: {type: constant_force, mass: 500, force: 30000, axis: [-1, 0]}\n"
+    "  - name: head\n"
+    "    x: 100\n"
+    "    y: 0\n"
+    "    radius: 0.5\n"
+    "    wrap: cw\n"
+    "    mass: 500\n"
+    "    friction: {static: 0.4, dynamic: 0.35}\n"
+    "    drive: {control: speed, speed: 2.0, start: {curve: s-curve, time: 4}, inertia: 200}\n"
+    "idlers:\n"
+    "  - {span: tail, spacing: 1.5, rolling_resistance: 0.03}\n"
+    "  - {span: head, spacing: 3.0, rolling_resistance: 0.03}\n"
+    "simulation:\n"
+    "  probes:\n"
+    "    - {name: tight, span: tail, at: 0.9}\n";
+
+#define T_END 6.0
+#define WINDOW 0.2
+
+typedef struct peaks {
+    double torque, tight;          /* of the 0.2 s averages */
+    double torque_raw, tight_raw;  /* of the step values */
+} peaks;
+
+/* largest mean of a[k..k+w) */
+static double peak_of_mean(const double *a, long n, long w)
+{
+    double sum = 0.0, best = -INFINITY;
+    for (long k = 0; k < n; k++) {
+        sum += a[k];
+        if (k >= w)
+            sum -= a[k - w];
+        if (k >= w - 1 && sum / (double)w > best)
+            best = sum / (double)w;
+    }
+    return best;
+}
+
+static peaks run(const char *formulation, const char *extra)
+{
+    char yaml[4096];
+    snprintf(yaml, sizeof yaml, model_fmt, formulation, formulation, extra);
+    bd_model_def def;
+    bd_sim *sim;
+    bd_test_make_sim(yaml, &def, &sim);
+    peaks pk = {0.0, 0.0, 0.0, 0.0};
+    long steps = (long)ceil(T_END / sim->dt), k = 0;
+    double *torque = calloc((size_t)steps, sizeof *torque);
+    double *tight = calloc((size_t)steps, sizeof *tight);
+    char err[512];
+    for (; k < steps; k++) {
+        if (bd_sim_step(sim, 1, err, sizeof err)) {
+            fprintf(stderr, "%s run failed: %s\n", formulation, err);
+            CHECK(0);
+            break;
+        }
+        torque[k] = sim->pulleys[1].drive_torque;
+        tight[k] = bd_tracker_tension(sim, &sim->probes[0].tr);
+    }
+    long w = lround(WINDOW / sim->dt);
+    pk.torque = peak_of_mean(torque, k, w);
+    pk.tight = peak_of_mean(tight, k, w);
+    pk.torque_raw = peak_of_mean(torque, k, 1);
+    pk.tight_raw = peak_of_mean(tight, k, 1);
+    printf("%-8s n = %5d, dt = %.3g s: peak torque %.1f N m (raw %.1f), peak tight-side "
+           "tension %.1f N (raw %.1f)\n", formulation, sim->n, sim->dt, pk.torque,
+           pk.torque_raw, pk.tight, pk.tight_raw);
+    free(torque);
+    free(tight);
+    bd_sim_free(sim);
+    bd_model_def_free(&def);
+    return pk;
+}
+
+int main(void)
+{
+    peaks d = run("discrete", "");
+    peaks a = run("axial", ", element_length: 2.0");
+    printf("axial - discrete: torque %+.2f%%, tension %+.2f%%\n",
+           100.0 * (a.torque / d.torque - 1.0), 100.0 * (a.tight / d.tight - 1.0));
+    CHECK_REL(a.torque, d.torque, 0.05);
+    CHECK_REL(a.tight, d.tight, 0.05);
+    /* the tension has no controller in the loop: even raw it agrees */
+    CHECK_REL(a.tight_raw, d.tight_raw, 0.05);
+    return bd_test_finish("axial_vs_discrete");
+}
