@@ -45,25 +45,44 @@ static double overlap(double a, double b, double c, double d, double L, double *
     return total;
 }
 
-/* where the belt carries material at rest: from the feed point to the start
- * of the discharge pulley's wrap (as layout.c) */
-static int loaded_zone(const bd_sim *sim, double *from, double *to)
+/* the region that can carry material, from the feed point to the start of
+ * the discharge pulley's wrap (as layout.c), and the part of it loaded at
+ * t = 0: all of it, or (initially_loaded: false) none, the head front at the
+ * feed point. A free front rides with the belt (axial_step.c). */
+static void init_load(bd_sim *sim)
 {
     const bd_material_def *mat = &sim->def->material;
+    bd_axial *ax = &sim->ax;
     if (!mat->present)
-        return 0;
+        return;
     double L = sim->path.length;
-    double s_feed = bd_path_span_s(&sim->path, mat->feed_span, mat->feed_at);
     double s_dis = bd_path_arc(&sim->path, mat->discharge)->s0;
-    *from = s_feed;
-    *to = s_feed + fmod(s_dis - s_feed + 2.0 * L, L);
+    ax->s_feed = bd_path_span_s(&sim->path, mat->feed_span, mat->feed_at);
+    ax->load_len = fmod(s_dis - ax->s_feed + 2.0 * L, L);
+    ax->d_tail = 0.0;
+    ax->d_head = mat->initially_loaded ? ax->load_len : 0.0;
+    /* an empty belt that is not fed stays empty */
+    ax->head_free = !mat->initially_loaded && mat->feeding;
+    ax->tail_free = !mat->feeding && mat->initially_loaded;
+}
+
+/* the loaded region on the loop, [from, to] with from in [0, L); or with
+ * `full` all that can be loaded; 0 when empty */
+static int loaded_zone(const bd_sim *sim, int full, double *from, double *to)
+{
+    const bd_axial *ax = &sim->ax;
+    double d0 = full ? 0.0 : ax->d_tail, d1 = full ? ax->load_len : ax->d_head;
+    if (!sim->def->material.present || d1 <= d0)
+        return 0;
+    *from = fmod(ax->s_feed + d0, sim->path.length);
+    *to = *from + (d1 - d0);
     return 1;
 }
 
-static double loaded_length(const bd_sim *sim, double a, double b)
+static double loaded_length(const bd_sim *sim, int full, double a, double b)
 {
     double from, to;
-    if (!loaded_zone(sim, &from, &to))
+    if (!loaded_zone(sim, full, &from, &to))
         return 0.0;
     return overlap(a, b, from, to, sim->path.length, NULL, NULL);
 }
@@ -161,8 +180,9 @@ static double weight_between(const bd_sim *sim, double a, double b)
         double lo = a + k * ds;
         bd_path_point(&sim->path, lo + ds, p, t);
         double on = 0.0;
-        if (mL > 0.0 && sim->def->material.initially_loaded && ds != 0.0)
-            on = loaded_length(sim, ds > 0.0 ? lo : lo + ds, ds > 0.0 ? lo + ds : lo) / fabs(ds);
+        if (mL > 0.0 && ds != 0.0)
+            on = loaded_length(sim, 0, ds > 0.0 ? lo : lo + ds, ds > 0.0 ? lo + ds : lo)
+               / fabs(ds);
         w += (sim->belt_mpl + mL * on) * g * (p[1] - yprev);
         yprev = p[1];
     }
@@ -235,10 +255,8 @@ static void setup_pulleys(bd_sim *sim, const int *pnode)
              * tension differs from its elements' (at their middles) by the
              * weight in between: both are constant forces on the carriage */
             double m_wrap = sim->belt_mpl * arc->length
-                          + (sim->def->material.initially_loaded
-                                 ? sim->def->material.mass_per_length
-                                       * loaded_length(sim, arc->s0, arc->s0 + arc->length)
-                                 : 0.0);
+                          + sim->def->material.mass_per_length
+                                * loaded_length(sim, 0, arc->s0, arc->s0 + arc->length);
             int n = sim->n, e_in = (p->node + n - 1) % n;
             double L = sim->path.length;
             double mid_in = sim->s_node0[e_in] + 0.5 * sim->ax.s_len[e_in];
@@ -264,11 +282,19 @@ static void setup_pulleys(bd_sim *sim, const int *pnode)
     }
 }
 
-/* idlers: rotating mass I/r² and rolling resistance spread along their span */
+/* the path interval [a, z] of node i's half elements */
+static void node_range(const bd_sim *sim, int i, double *a, double *z)
+{
+    int b = i == 0 ? sim->n - 1 : i - 1;
+    *a = sim->s_node0[i] - 0.5 * sim->ax.s_len[b];
+    *z = sim->s_node0[i] + 0.5 * sim->ax.s_len[i];
+}
+
+/* idlers: rotating mass I/r² spread along their span */
 static void spread_idlers(bd_sim *sim)
 {
     const bd_model_def *def = sim->def;
-    double L = sim->path.length, mL = def->material.mass_per_length;
+    double L = sim->path.length;
     sim->idlers_per_set = bd_xcalloc((size_t)def->idler_set_count, sizeof *sim->idlers_per_set);
     sim->idler_spacing = bd_xcalloc((size_t)def->idler_set_count, sizeof *sim->idler_spacing);
     for (int k = 0; k < def->idler_set_count; k++) {
@@ -279,21 +305,57 @@ static void spread_idlers(bd_sim *sim)
         const bd_path_segment *sp = bd_path_span(&sim->path, set->span);
         double inertia = set->inertia > 0.0 ? set->inertia : 1e-6;
         double mass_per_m = count * inertia / (set->radius * set->radius) / sp->length;
+        for (int i = 0; i < sim->n; i++) {
+            double a, z;
+            node_range(sim, i, &a, &z);
+            sim->mass[i] += mass_per_m * overlap(a, z, sp->s0, sp->s0 + sp->length, L, NULL, NULL);
+        }
+    }
+}
+
+/* the idlers' rolling resistance on node i, spread along their span in
+ * proportion to the weight on it: the loaded region now, or (`full`) all
+ * that can be loaded */
+static double node_resist(const bd_sim *sim, int i, int full)
+{
+    const bd_model_def *def = sim->def;
+    double L = sim->path.length, mL = def->material.mass_per_length, a, z, R = 0.0;
+    node_range(sim, i, &a, &z);
+    for (int k = 0; k < def->idler_set_count; k++) {
+        int count = sim->idlers_per_set[k];
+        if (count == 0)
+            continue;
+        const bd_idler_set_def *set = &def->idler_sets[k];
+        const bd_path_segment *sp = bd_path_span(&sim->path, set->span);
         /* the idlers carry the weight on count·spacing of the span */
         double cover = count * sim->idler_spacing[k] / sp->length;
         double rr = set->rolling_resistance * sim->gravity * fabs(sp->dir[0]) * cover;
-        for (int i = 0; i < sim->n; i++) {
-            int b = (i + sim->n - 1) % sim->n;
-            double a = sim->s_node0[i] - 0.5 * sim->ax.s_len[b];
-            double z = sim->s_node0[i] + 0.5 * sim->ax.s_len[i];
-            double lo = 0.0, hi = 0.0;
-            double on = overlap(a, z, sp->s0, sp->s0 + sp->length, L, &lo, &hi);
-            if (on <= 0.0)
-                continue;
-            sim->mass[i] += mass_per_m * on;
-            sim->ax.resist[i] += rr * (sim->belt_mpl * on + mL * loaded_length(sim, lo, hi));
-        }
+        double lo = 0.0, hi = 0.0;
+        double on = overlap(a, z, sp->s0, sp->s0 + sp->length, L, &lo, &hi);
+        if (on > 0.0)
+            R += rr * (sim->belt_mpl * on + mL * loaded_length(sim, full, lo, hi));
     }
+    return R;
+}
+
+/* node i's share of the loaded region: its material (the node's mass
+ * changes with it), the weight along the path over its half elements and
+ * the rolling resistance. The build and a moving load front (axial_step.c)
+ * both set a node's load here. */
+void bd_axial_node_load(bd_sim *sim, int i)
+{
+    int b = i == 0 ? sim->n - 1 : i - 1;
+    double a, z;
+    node_range(sim, i, &a, &z);
+    double m = sim->def->material.mass_per_length * loaded_length(sim, 0, a, z);
+    sim->mass[i] += m - sim->material[i];
+    sim->material[i] = m;
+    /* the same halves as element_weights */
+    double sb = sim->s_node0[b], hb = 0.5 * sim->ax.s_len[b];
+    double si = sim->s_node0[i], hi = 0.5 * sim->ax.s_len[i];
+    sim->ax.f_const[i] = -(weight_between(sim, sb + hb, sb + 2.0 * hb)
+                           + weight_between(sim, si, si + hi));
+    sim->ax.resist[i] = node_resist(sim, i, 0);
 }
 
 int bd_axial_build(bd_sim *sim, bd_diag *diag)
@@ -312,6 +374,7 @@ int bd_axial_build(bd_sim *sim, bd_diag *diag)
         double ds = sim->s_node0[j] - sim->s_node0[e];
         sim->ax.s_len[e] = ds > 0.0 ? ds : ds + L;
     }
+    init_load(sim);
     setup_pulleys(sim, pnode);
     free(pnode);
 
@@ -355,32 +418,28 @@ int bd_axial_build(bd_sim *sim, bd_diag *diag)
     sim->l0 = l0_sum / n;
     sim->k_axial = EA / sim->l0;
 
-    /* nodes: mass, gravity along the path, position */
-    double mL = def->material.mass_per_length;
+    free(h1);
+    free(h2);
+    free(W_mid);
+    /* nodes: mass of the belt and the idlers, then the load; position */
     for (int i = 0; i < n; i++) {
-        int b = (i + n - 1) % n;
-        double a = sim->s_node0[i] - 0.5 * sim->ax.s_len[b];
-        double z = sim->s_node0[i] + 0.5 * sim->ax.s_len[i];
-        double on = def->material.initially_loaded ? loaded_length(sim, a, z) : 0.0;
-        sim->material[i] = mL * on;
-        sim->mass[i] = sim->belt_mpl * (z - a) + sim->material[i];
-        sim->ax.f_const[i] = -(h2[b] + h1[i]);
+        double a, z;
+        node_range(sim, i, &a, &z);
+        sim->mass[i] = sim->belt_mpl * (z - a);
         double p[2], t[2];
         bd_path_point(&sim->path, sim->s_node0[i], p, t);
         sim->x[i] = p[0];
         sim->y[i] = p[1];
     }
-    free(h1);
-    free(h2);
-    free(W_mid);
-    if (def->material.present && !def->material.initially_loaded)
-        bd_sim_warn(sim, "material.initially_loaded: false is not modelled by the axial "
-                    "formulation: the belt carries no material during the run");
-    sim->ax.min_mass = INFINITY;
-    for (int i = 0; i < n; i++)
-        if (sim->mass[i] - sim->material[i] < sim->ax.min_mass)
-            sim->ax.min_mass = sim->mass[i] - sim->material[i];
     spread_idlers(sim);
+    /* the lightest node carries no material: load leaving a node never
+     * takes it below this, and the stable step is taken with it */
+    sim->ax.min_mass = INFINITY;
+    for (int i = 0; i < n; i++) {
+        if (sim->mass[i] < sim->ax.min_mass)
+            sim->ax.min_mass = sim->mass[i];
+        bd_axial_node_load(sim, i);
+    }
     for (int e = 0; e < n; e++) {
         int j = e + 1 == n ? 0 : e + 1;
         double dx = sim->x[j] - sim->x[e], dy = sim->y[j] - sim->y[e];
@@ -400,8 +459,8 @@ int bd_axial_build(bd_sim *sim, bd_diag *diag)
         pr->tension_min = INFINITY;
     }
     sim->ax.feed_node = -1;
-    if (def->material.present && def->material.initially_loaded) {
-        sim->material_mpl = mL;
+    if (def->material.present) {
+        sim->material_mpl = def->material.mass_per_length;
         sim->discharge_pulley = def->material.discharge;
         sim->has_feed = def->material.feeding;
         bd_tracker_init(sim, &sim->feed,
@@ -409,6 +468,8 @@ int bd_axial_build(bd_sim *sim, bd_diag *diag)
         if (sim->has_feed)
             sim->ax.feed_node = sim->feed.gamma < 0.5 ? sim->feed.element
                                                       : (sim->feed.element + 1) % n;
+        sim->ax.e_tail = sim->feed.element;
+        sim->ax.e_head = sim->feed.element;
     }
     return 0;
 }
@@ -434,7 +495,8 @@ double bd_axial_stable_step(const bd_sim *sim)
     for (int i = 0; i < n; i++) {
         int b = i == 0 ? n - 1 : i - 1;
         double K = 2.0 * (ax->k[b] + ax->k[i]);
-        double C = 2.0 * (ax->c[b] + ax->c[i]) + ax->resist[i] / BD_AXIAL_ROLLING_SPEED;
+        /* the rolling resistance's slope with the most load the node can carry */
+        double C = 2.0 * (ax->c[b] + ax->c[i]) + node_resist(sim, i, 1) / BD_AXIAL_ROLLING_SPEED;
         for (int p = 0; p < sim->pulley_count; p++) {
             const bd_pulley_body *pb = &sim->pulleys[p];
             if (!pb->movable)

@@ -168,6 +168,82 @@ static void takeup_geometry(bd_sim *sim)
     }
 }
 
+/* the element holding path point s, searched from *e; and the node whose
+ * half elements hold it */
+static int front_node(const bd_sim *sim, double s, int *e)
+{
+    const int n = sim->n;
+    const double L = sim->path.length, *s0 = sim->s_node0, *len = sim->ax.s_len;
+    for (int it = 0; it < n; it++) {
+        double rel = s - s0[*e];
+        rel -= L * floor(rel / L + 0.5);   /* into [−L/2, L/2) */
+        if (rel < 0.0)
+            *e = *e == 0 ? n - 1 : *e - 1;
+        else if (rel >= len[*e])
+            *e = *e + 1 == n ? 0 : *e + 1;
+        else
+            return rel < 0.5 * len[*e] ? *e : (*e + 1 == n ? 0 : *e + 1);
+    }
+    return *e;
+}
+
+/* a node's load after a front moved in it; the material that arrives rides
+ * in at belt speed (the node's velocity stays) and brings its kinetic
+ * energy ½Δm·v² and the change −ΔW·u of the gravity potential, booked as
+ * input; material that leaves takes them away, booked as dissipated */
+static void reload_node(bd_sim *sim, int i)
+{
+    double m0 = sim->material[i], w0 = sim->ax.f_const[i];
+    bd_axial_node_load(sim, i);
+    double dm = sim->material[i] - m0, dw = sim->ax.f_const[i] - w0;
+    double de = 0.5 * dm * sim->vx[i] * sim->vx[i] - dw * sim->ax.u[i];
+    if (dm >= 0.0)
+        sim->energy.input += de;
+    else
+        sim->energy.dissipated -= de;
+}
+
+/* a free front moves with the belt, ds/dt = v interpolated between the
+ * nodes of its element, within [lo, hi] from the feed point; the nodes it
+ * passed through get their new load (at most two: a step crosses at most
+ * one station). Returns 1 when it reached hi. */
+static int move_front(bd_sim *sim, double *d, int *e, double lo, double hi)
+{
+    const int n = sim->n;
+    const double L = sim->path.length, s_feed = sim->ax.s_feed;
+    int k0 = front_node(sim, s_feed + *d, e);
+    int j = *e + 1 == n ? 0 : *e + 1;
+    double rel = s_feed + *d - sim->s_node0[*e];
+    rel -= L * floor(rel / L);
+    double g = rel / sim->ax.s_len[*e];
+    double v = (1.0 - g) * sim->vx[*e] + g * sim->vx[j];
+    double d_new = *d + v * sim->dt;
+    d_new = d_new < lo ? lo : (d_new > hi ? hi : d_new);
+    if (d_new == *d)
+        return d_new >= hi;
+    *d = d_new;
+    int k1 = front_node(sim, s_feed + *d, e);
+    /* walk from the node behind to the one ahead */
+    int from = v >= 0.0 ? k0 : k1, to = v >= 0.0 ? k1 : k0;
+    for (int i = from;; i = i + 1 == n ? 0 : i + 1) {
+        reload_node(sim, i);
+        if (i == to)
+            break;
+    }
+    return d_new >= hi;
+}
+
+/* the load fronts (docs/physics.md §11): the head rides with the belt until
+ * it reaches the discharge pulley, the tail once feeding has stopped */
+static void move_load_fronts(bd_sim *sim)
+{
+    bd_axial *ax = &sim->ax;
+    if (ax->head_free && move_front(sim, &ax->d_head, &ax->e_head, ax->d_tail, ax->load_len))
+        ax->head_free = 0;
+    if (ax->tail_free)
+        move_front(sim, &ax->d_tail, &ax->e_tail, 0.0, ax->d_head);
+}
+
 int bd_axial_step(bd_sim *sim)
 {
     const double dt = sim->dt;
@@ -197,6 +273,8 @@ int bd_axial_step(bd_sim *sim)
     en->kinetic = ke;
     if (ke > en->max_kinetic)
         en->max_kinetic = ke;
+    if (sim->material_mpl > 0.0)
+        move_load_fronts(sim);
     sim->t += dt;
     sim->steps++;
     return 0;

@@ -150,6 +150,14 @@ typedef struct bd_axial {
     double *resist;     /* [n] N, rolling resistance on node i at speed */
     int feed_node;      /* node at the feed point, -1 = none */
     double min_mass;    /* kg, lightest node without material */
+    /* the loaded region [s_feed + d_tail, s_feed + d_head] along the path
+     * (docs/physics.md §11): a free front rides with the belt, a pinned one
+     * stays at the feed point (tail, while feeding) or the discharge (head) */
+    double s_feed;      /* m, path coordinate of the feed point */
+    double load_len;    /* m, feed point → discharge pulley */
+    double d_tail, d_head; /* m from the feed point, 0 ≤ d_tail ≤ d_head ≤ load_len */
+    int tail_free, head_free;
+    int e_tail, e_head; /* element holding each front (a search hint) */
 } bd_axial;
 
 struct bd_sim {
@@ -300,6 +308,9 @@ int bd_axial_step(bd_sim *sim);
 double bd_axial_potential(const bd_sim *sim);
 double bd_axial_elastic_energy(const bd_sim *sim);
 double bd_axial_stable_step(const bd_sim *sim);
+/* node i's material, mass, gravity along the path and rolling resistance
+ * for the loaded region in sim->ax (axial_build.c) */
+void bd_axial_node_load(bd_sim *sim, int i);
 
 /* parts/transmission.c: belt transmissions of drives (seed 004) */
 int bd_transmissions_create(bd_sim *sim, bd_diag *diag);
