@@ -97,12 +97,12 @@ static void pulley_law(bd_sim *sim, bd_pulley_body *p)
     p->torque_friction = -R * F;
     p->torque_external = Q;
     p->alpha = (Q - R * F) / p->inertia;
+    /* recorded here, said after the run (bd_sim_report_events) */
     if ((T_in <= 0.0 || T_out <= 0.0) && !p->slack_warned && !sim->friction_off) {
         p->slack_warned = 1;
-        bd_sim_warn(sim, "pulley '%s': a belt end lost its tension at t = %.3f s (%s side, "
-                    "%.0f N); the belt-pulley law (seed 004) holds only while both ends are "
-                    "in tension", p->def->name, sim->t, T_in <= 0.0 ? "arriving" : "leaving",
-                    T_in <= 0.0 ? T_in : T_out);
+        p->slack_t = sim->t;
+        p->slack_arriving = T_in <= 0.0;
+        p->slack_tension = T_in <= 0.0 ? T_in : T_out;
     }
     if (p->movable) {
         /* the belt's pull on the carriage along its axis, and its dashpot part */

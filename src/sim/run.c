@@ -37,6 +37,25 @@ static void energy_start(bd_sim *sim)
     en->initial = en->potential;
 }
 
+/* events the step loop only records (no text or allocation there) become
+ * warnings: a takeup at the end of its travel, a slack belt end at an axial
+ * pulley. Saying them twice is harmless (bd_sim_warn drops repeats). */
+void bd_sim_report_events(bd_sim *sim)
+{
+    for (int i = 0; i < sim->pulley_count; i++) {
+        const bd_pulley_body *p = &sim->pulleys[i];
+        if (p->limit_hits > 0)
+            bd_sim_warn(sim, "takeup '%s' reached the end of its travel (%g m) at t = %.3f s%s",
+                        p->def->name, p->limit_first_q, p->limit_first_t,
+                        p->limit_hits > 1 ? " and again later" : "");
+        if (p->slack_warned)
+            bd_sim_warn(sim, "pulley '%s': a belt end lost its tension at t = %.3f s (%s side, "
+                        "%.0f N); the belt-pulley law (seed 004) holds only while both ends "
+                        "are in tension", p->def->name, p->slack_t,
+                        p->slack_arriving ? "arriving" : "leaving", p->slack_tension);
+    }
+}
+
 int bd_sim_run(bd_sim *sim, const bd_run_options *opt, char *err, size_t errlen)
 {
     double wall0 = wall_seconds();
@@ -95,13 +114,7 @@ int bd_sim_run(bd_sim *sim, const bd_run_options *opt, char *err, size_t errlen)
         snprintf(err, errlen, "%s", sim->fail_msg);
     else if (status == BD_RUN_INTERRUPTED)
         snprintf(err, errlen, "interrupted at t = %.4f s; outputs written up to that time", sim->t);
-    for (int i = 0; i < sim->pulley_count; i++) {
-        const bd_pulley_body *p = &sim->pulleys[i];
-        if (p->limit_hits > 0)
-            bd_sim_warn(sim, "takeup '%s' reached the end of its travel (%g m) at t = %.3f s%s",
-                        p->def->name, p->limit_first_q, p->limit_first_t,
-                        p->limit_hits > 1 ? " and again later" : "");
-    }
+    bd_sim_report_events(sim);
     if (sim->tension_min < 0.0)
         bd_sim_warn(sim, "the belt is in compression (lowest tension %.0f N at t = %.3f s, "
                     "s = %.2f m): raise the takeup force", sim->tension_min, sim->tension_min_t,

@@ -97,7 +97,10 @@ typedef struct bd_pulley_body {
     double q_step_start;    /* m, carriage travel at the start of the step */
     bd_bpl law;             /* seed-004 law of its wrap */
     double belt_force;      /* N, its friction force on the belt this step */
-    int slack_warned;       /* a belt end lost tension (warned once) */
+    int slack_warned;       /* a belt end lost tension (recorded once) */
+    int slack_arriving;     /* it was the arriving end */
+    double slack_t;         /* s, when */
+    double slack_tension;   /* N, its tension then */
     struct bd_transmission *trans; /* belt transmission to its drive, or NULL */
 } bd_pulley_body;
 
@@ -245,6 +248,9 @@ static inline void bd_extremes_add(bd_extremes *x, double T, int e)
 
 /* store a step's extremes in sim->step_tension_* */
 void bd_extremes_store(bd_sim *sim, const bd_extremes *x);
+
+/* run.c: turn the events the step recorded into warnings */
+void bd_sim_report_events(bd_sim *sim);
 
 /* build.c */
 void bd_pulley_body_init(bd_sim *sim, bd_pulley_body *p, const bd_pulley_def *pd);

@@ -102,6 +102,7 @@ static void slack_warning(void)
     make("0.25, formulation: axial", "rest", &def, &sim);
     CHECK(bd_test_run_to(sim, 0.05) == 0);
     int found = 0;
+    bd_sim_report_events(sim);
     for (int i = 0; i < sim->warning_count; i++)
         found |= strstr(sim->warnings[i], "lost its tension") != NULL;
     CHECK(found);
