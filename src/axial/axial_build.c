@@ -157,14 +157,11 @@ static int place_stations(bd_sim *sim, double target, int **pulley_node_out)
 static void alloc_arrays(bd_sim *sim)
 {
     size_t n = (size_t)sim->n;
-    double **d[] = {&sim->x, &sim->y, &sim->vx, &sim->vy, &sim->fx, &sim->fy, &sim->fnx,
-                    &sim->fny, &sim->mass, &sim->material, &sim->tension, &sim->ux, &sim->uy,
-                    &sim->len, &sim->ax.u, &sim->ax.gap, &sim->ax.gap_rate, &sim->ax.k,
-                    &sim->ax.c, &sim->ax.l0, &sim->ax.s_len, &sim->ax.f_const,
-                    &sim->ax.resist};
+    bd_alloc_node_arrays(sim);
+    double **d[] = {&sim->ax.u, &sim->ax.gap, &sim->ax.gap_rate, &sim->ax.k, &sim->ax.c,
+                    &sim->ax.l0, &sim->ax.s_len, &sim->ax.f_const, &sim->ax.resist};
     for (size_t i = 0; i < sizeof d / sizeof d[0]; i++)
         *d[i] = bd_xcalloc(n, sizeof(double));
-    sim->seg_hint = bd_xcalloc(n, sizeof(int));
 }
 
 /* weight of belt and material along the path from a to b, ∫ m'·g dy
@@ -448,23 +445,9 @@ int bd_axial_build(bd_sim *sim, bd_diag *diag)
         sim->uy[e] = sim->len[e] > 0.0 ? dy / sim->len[e] : 0.0;
     }
 
-    /* probes and the feed point: trackers fixed on the path */
-    sim->probe_count = def->simulation.probe_count;
-    sim->probes = bd_xcalloc((size_t)sim->probe_count, sizeof *sim->probes);
-    for (int i = 0; i < sim->probe_count; i++) {
-        bd_probe *pr = &sim->probes[i];
-        const bd_probe_def *pd = &def->simulation.probes[i];
-        bd_tracker_init(sim, &pr->tr, bd_path_span_s(&sim->path, pd->span, pd->at));
-        pr->tension_max = -INFINITY;
-        pr->tension_min = INFINITY;
-    }
+    bd_setup_probes_and_feed(sim);
     sim->ax.feed_node = -1;
     if (def->material.present) {
-        sim->material_mpl = def->material.mass_per_length;
-        sim->discharge_pulley = def->material.discharge;
-        sim->has_feed = def->material.feeding;
-        bd_tracker_init(sim, &sim->feed,
-                        bd_path_span_s(&sim->path, def->material.feed_span, def->material.feed_at));
         if (sim->has_feed)
             sim->ax.feed_node = sim->feed.gamma < 0.5 ? sim->feed.element
                                                       : (sim->feed.element + 1) % n;

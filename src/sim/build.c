@@ -188,7 +188,22 @@ static void setup_idlers(bd_sim *sim)
     }
 }
 
-static void setup_probes_and_feed(bd_sim *sim)
+/* the per-node and per-element arrays both belt formulations keep (zeroed;
+ * s_node0 is each builder's own: the axial one sets it before it knows n) */
+void bd_alloc_node_arrays(bd_sim *sim)
+{
+    size_t n = (size_t)sim->n;
+    double **d[] = {&sim->x,    &sim->y,   &sim->vx,       &sim->vy,      &sim->fx,
+                    &sim->fy,   &sim->fnx, &sim->fny,      &sim->mass,    &sim->material,
+                    &sim->tension, &sim->ux, &sim->uy,     &sim->len};
+    for (size_t i = 0; i < sizeof d / sizeof d[0]; i++)
+        *d[i] = bd_xcalloc(n, sizeof(double));
+    sim->seg_hint = bd_xcalloc(n, sizeof(int));
+}
+
+/* probes and the feed point: trackers fixed on the path (both belt
+ * formulations) */
+void bd_setup_probes_and_feed(bd_sim *sim)
 {
     const bd_model_def *def = sim->def;
     const bd_simulation_def *sd = &def->simulation;
@@ -434,24 +449,8 @@ int bd_sim_create(const bd_model_def *def, bd_sim **out, bd_diag *diag)
     /* seed 001 eq 4.11: k_θ = EI/l */
     sim->k_bend = sim->EI / sim->l0;
 
-    size_t n = (size_t)sim->n;
-    sim->x = bd_xcalloc(n, sizeof(double));
-    sim->y = bd_xcalloc(n, sizeof(double));
-    sim->vx = bd_xcalloc(n, sizeof(double));
-    sim->vy = bd_xcalloc(n, sizeof(double));
-    sim->fx = bd_xcalloc(n, sizeof(double));
-    sim->fy = bd_xcalloc(n, sizeof(double));
-    sim->fnx = bd_xcalloc(n, sizeof(double));
-    sim->fny = bd_xcalloc(n, sizeof(double));
-    sim->mass = bd_xcalloc(n, sizeof(double));
-    sim->material = bd_xcalloc(n, sizeof(double));
-    sim->tension = bd_xcalloc(n, sizeof(double));
-    sim->ux = bd_xcalloc(n, sizeof(double));
-    sim->uy = bd_xcalloc(n, sizeof(double));
-    sim->len = bd_xcalloc(n, sizeof(double));
-    sim->s_node0 = bd_xcalloc(n, sizeof(double));
-    sim->seg_hint = bd_xcalloc(n, sizeof(int));
-
+    bd_alloc_node_arrays(sim);
+    sim->s_node0 = bd_xcalloc((size_t)sim->n, sizeof *sim->s_node0);
     for (int i = 0; i < sim->n; i++)
         sim->s_node0[i] = lay.s[i];
     setup_pulleys(sim, &lay);
@@ -461,7 +460,7 @@ int bd_sim_create(const bd_model_def *def, bd_sim **out, bd_diag *diag)
     bd_layout_free(&lay);
     load_material(sim);
     setup_idlers(sim);
-    setup_probes_and_feed(sim);
+    bd_setup_probes_and_feed(sim);
     for (int i = 0; i < sim->pulley_count; i++)
         if (sim->pulleys[i].def->has_drive)
             bd_monitor_init(sim, &sim->pulleys[i]);

@@ -253,6 +253,8 @@ void bd_extremes_store(bd_sim *sim, const bd_extremes *x);
 void bd_sim_report_events(bd_sim *sim);
 
 /* build.c */
+void bd_alloc_node_arrays(bd_sim *sim);
+void bd_setup_probes_and_feed(bd_sim *sim);
 void bd_pulley_body_init(bd_sim *sim, bd_pulley_body *p, const bd_pulley_def *pd);
 /* idlers of set k that fit its span evenly (0 on a vertical span, with a
  * warning) and their actual spacing */
