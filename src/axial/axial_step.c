@@ -16,10 +16,7 @@
 #include "sim/system.h"
 
 #include <math.h>
-#include <stdio.h>
 
-#define DIVERGED_STRAIN 1.0
-#define REVERSED_STRAIN (-0.9)
 
 static void element_pass(bd_sim *sim)
 {
@@ -40,39 +37,6 @@ static void element_pass(bd_sim *sim)
         fn[j] -= Td;
     }
     bd_extremes_store(sim, &ext);
-}
-
-static int check_elements(bd_sim *sim)
-{
-    double hi = sim->step_tension_max, lo = sim->step_tension_min;
-    double EA = sim->EA;
-    if (!(sim->step_tension_sum == sim->step_tension_sum) || hi > DIVERGED_STRAIN * EA
-        || lo < REVERSED_STRAIN * EA) {
-        int e = lo < REVERSED_STRAIN * EA ? sim->step_element_min : sim->step_element_max;
-        for (int k = 0; k < sim->n; k++)
-            if (!(sim->tension[k] == sim->tension[k])) {
-                e = k;
-                break;
-            }
-        snprintf(sim->fail_msg, sizeof sim->fail_msg,
-                 "the simulation diverged at t = %.6f s (step %ld): axial belt element %d at "
-                 "s = %.3f m has strain %.3g%s; the time step %.3g s is too large for the "
-                 "forces acting, or the model is unstable",
-                 sim->t, sim->steps, e, bd_element_s(sim, e), sim->tension[e] / EA,
-                 sim->tension[e] < 0.0 ? " (element reversed)" : "", sim->dt);
-        return 1;
-    }
-    if (hi > sim->tension_max) {
-        sim->tension_max = hi;
-        sim->tension_max_t = sim->t;
-        sim->tension_max_s = bd_element_s(sim, sim->step_element_max);
-    }
-    if (lo < sim->tension_min) {
-        sim->tension_min = lo;
-        sim->tension_min_t = sim->t;
-        sim->tension_min_s = bd_element_s(sim, sim->step_element_min);
-    }
-    return 0;
 }
 
 /* the seed-004 law at pulley p, implicit in the pulley's and the belt
@@ -127,7 +91,7 @@ int bd_axial_forces(bd_sim *sim)
         fn[i] = r;
     }
     element_pass(sim);
-    if (check_elements(sim))
+    if (bd_check_elements(sim))
         return 1;
     int fd = sim->ax.feed_node;
     if (fd >= 0 && sim->has_feed && v[fd] > 0.0) {

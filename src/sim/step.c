@@ -63,7 +63,9 @@ static void material_discharge(bd_sim *sim)
     }
 }
 
-static int check_elements(bd_sim *sim)
+/* after the element pass of either belt formulation: stop a diverged run
+ * with when, where and why; keep the run's tension extremes */
+int bd_check_elements(bd_sim *sim)
 {
     double hi = sim->step_tension_max, lo = sim->step_tension_min;
     int ihi = sim->step_element_max, ilo = sim->step_element_min;
@@ -79,12 +81,15 @@ static int check_elements(bd_sim *sim)
     if (!(hi == hi) || !(lo == lo) || hi > DIVERGED_STRAIN * sim->EA
         || lo < REVERSED_STRAIN * sim->EA) {
         int e = (!(hi == hi) || hi > DIVERGED_STRAIN * sim->EA) ? ihi : ilo;
-        double strain = (sim->len[e] - sim->l0) / sim->l0;
+        /* the axial belt's elements differ in l0; its tension says the strain */
+        double strain = sim->axial ? sim->tension[e] / sim->EA
+                                   : (sim->len[e] - sim->l0) / sim->l0;
         snprintf(sim->fail_msg, sizeof sim->fail_msg,
-                 "the simulation diverged at t = %.6f s (step %ld): belt element %d at "
+                 "the simulation diverged at t = %.6f s (step %ld): %sbelt element %d at "
                  "s = %.3f m (x = %.3f, y = %.3f) has strain %.3g%s; the time step %.3g s "
                  "is too large for the forces acting, or the model is unstable",
-                 sim->t, sim->steps, e, bd_element_s(sim, e), sim->x[e], sim->y[e], strain,
+                 sim->t, sim->steps, sim->axial ? "axial " : "", e, bd_element_s(sim, e),
+                 sim->x[e], sim->y[e], strain,
                  strain < 0.0 ? " (element reversed)" : "", sim->dt);
         return 1;
     }
@@ -122,7 +127,7 @@ static int compute_forces(bd_sim *sim)
     if (sim->axial)
         return bd_axial_forces(sim);
     bd_belt_forces(sim);
-    if (check_elements(sim))
+    if (bd_check_elements(sim))
         return 1;
     for (int i = 0; i < sim->pulley_count; i++) {
         bd_pulley_body *p = &sim->pulleys[i];

@@ -249,6 +249,9 @@ static inline void bd_extremes_add(bd_extremes *x, double T, int e)
 /* store a step's extremes in sim->step_tension_* */
 void bd_extremes_store(bd_sim *sim, const bd_extremes *x);
 
+/* step.c: divergence check and tension extremes after an element pass */
+int bd_check_elements(bd_sim *sim);
+
 /* run.c: turn the events the step recorded into warnings */
 void bd_sim_report_events(bd_sim *sim);
 
