@@ -281,8 +281,7 @@ static int write_summary(bd_outputs *o, const bd_sim *sim, double wall, const ch
             bd_json_add_number(p, "tight_tension_max_N", m->tight_max);
             bd_json_add_number(p, "tight_tension_max_time_s", m->tight_max_t);
             bd_json_add_number(p, "slack_tension_min_N", m->slack_min);
-            bd_json_add_number(p, "tight_tension_swing_N",
-                               m->swing_max >= m->swing_min ? m->swing_max - m->swing_min : 0.0);
+            bd_json_add_number(p, "tight_tension_swing_N", bd_monitor_swing(m));
             bd_json_add_number(p, "belt_accel_max_mps2", m->accel_max);
             bd_json_add_number(p, "slip_longest_s", m->slip_longest);
             cJSON_AddBoolToObject(p, "slipped", m->slip_first_t >= 0.0);

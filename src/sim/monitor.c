@@ -137,6 +137,12 @@ void bd_monitor_update(bd_sim *sim, bd_pulley_body *p)
     slip(m, p->omega * p->radius, 0.5 * (v_in + v_out), t);
 }
 
+/* tight-side tension range after the ramp; 0 while the ramp runs */
+double bd_monitor_swing(const bd_drive_monitor *m)
+{
+    return m->swing_max >= m->swing_min ? m->swing_max - m->swing_min : 0.0;
+}
+
 void bd_sim_result(const bd_sim *sim, bd_run_result *r)
 {
     r->drives = 0;
@@ -167,7 +173,7 @@ void bd_sim_result(const bd_sim *sim, bd_run_result *r)
             r->slack_min_N = m->slack_min;
             r->slack_min_t_s = m->slack_min_t;
         }
-        double swing = m->swing_max >= m->swing_min ? m->swing_max - m->swing_min : 0.0;
+        double swing = bd_monitor_swing(m);
         if (swing > r->tight_swing_N)
             r->tight_swing_N = swing;
         if (fabs(m->accel_max) > fabs(r->accel_max_mps2)) {

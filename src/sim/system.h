@@ -279,6 +279,7 @@ double bd_tracker_speed(const bd_sim *sim, const bd_tracker *tr);
 /* monitor.c: drive monitors (set up in build, reset when a run starts) */
 void bd_monitor_init(bd_sim *sim, bd_pulley_body *p);
 void bd_monitor_reset(bd_sim *sim, bd_pulley_body *p);
+double bd_monitor_swing(const bd_drive_monitor *m);
 void bd_monitor_update(bd_sim *sim, bd_pulley_body *p);
 
 /* belt_lumped.c: elastic, damping, bending, gravity forces on nodes */
