@@ -4,7 +4,7 @@
  * complete; an interrupted or failed run still renames its CSVs, which are
  * valid up to the last complete row. */
 #include "io/outputs.h"
-#include "io/json_util.h"
+#include "base/json_util.h"
 
 #include <cjson/cJSON.h>
 #include <errno.h>

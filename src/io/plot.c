@@ -1,5 +1,6 @@
 /* cairo plotting layer: layout, axes, ticks, lines, legend, colour map */
 #include "io/plot.h"
+#include "base/constants.h"
 
 #include <cairo.h>
 #include <cairo-svg.h>
@@ -19,7 +20,6 @@
 #define FS_LEGEND 13.0
 #define LEGEND_ROW 20.0
 #define MAX_TICKS 16
-#define M_PI_VALUE 3.14159265358979323846
 #define LONG_MIN_GUARD LONG_MIN
 
 static const bd_rgb grid_rgb = {0.88, 0.88, 0.88};
@@ -468,7 +468,7 @@ static void draw_line_series(cairo_t *cr, const xform *t, const bd_plot_series *
         /* a single point: draw a dot */
         if (s->n == 1 && isfinite(s->x[0]) && isfinite(s->y[0])) {
             cairo_new_path(cr);
-            cairo_arc(cr, px(t, s->x[0]), py(t, s->y[0]), 3.0, 0.0, 2.0 * M_PI_VALUE);
+            cairo_arc(cr, px(t, s->x[0]), py(t, s->y[0]), 3.0, 0.0, 2.0 * BD_PI);
             cairo_fill(cr);
         }
     }
@@ -604,7 +604,7 @@ static void draw_colorbar(cairo_t *cr, const layout *L, int p, const bd_plot_map
         set_rgb(cr, text_rgb);
         cairo_save(cr);
         cairo_translate(cr, x + w + 8.0 + maxw + 12.0 + FS_LABEL * 0.8, 0.5 * (top + bot));
-        cairo_rotate(cr, -M_PI_VALUE / 2.0);
+        cairo_rotate(cr, -BD_PI / 2.0);
         draw_text(cr, 0.0, 0.0, 0.5, 0.5, m->label);
         cairo_restore(cr);
     }
@@ -653,11 +653,11 @@ static void draw_marker(cairo_t *cr, const xform *t, const bd_plot_marker *m)
     cairo_new_path(cr);
     cairo_set_line_width(cr, 4.0);
     cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
-    cairo_arc(cr, X, Y, 8.0, 0.0, 2.0 * M_PI_VALUE);
+    cairo_arc(cr, X, Y, 8.0, 0.0, 2.0 * BD_PI);
     cairo_stroke(cr);
     cairo_set_line_width(cr, 2.0);
     cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
-    cairo_arc(cr, X, Y, 8.0, 0.0, 2.0 * M_PI_VALUE);
+    cairo_arc(cr, X, Y, 8.0, 0.0, 2.0 * BD_PI);
     cairo_stroke(cr);
     if (!m->label) return;
     /* the label in a white box, on the side with room */
@@ -793,7 +793,7 @@ static void render(cairo_t *cr, const bd_plot_figure *f)
         if (a->ylabel) {
             cairo_save(cr);
             cairo_translate(cr, 16.0 + FS_LABEL * 0.5, 0.5 * (t.y0 + t.y1));
-            cairo_rotate(cr, -M_PI_VALUE / 2.0);
+            cairo_rotate(cr, -BD_PI / 2.0);
             draw_text(cr, 0.0, 0.0, 0.5, 0.5, a->ylabel);
             cairo_restore(cr);
         }

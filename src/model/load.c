@@ -38,10 +38,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "base/constants.h"
 
 #define PATH_LEN 256
 #define MAX_FIELDS 16
-#define DEG_TO_RAD (3.14159265358979323846 / 180.0)
+#define DEG_TO_RAD BD_DEG
 
 /* enums are stored through int pointers */
 _Static_assert(sizeof(bd_drive_control) == sizeof(int), "enum size");

@@ -1,6 +1,7 @@
 /* model definitions: diagnostics, tables, the defaults of model-format.md,
  * and init/free of a whole model description */
 #include "beltdyn/model.h"
+#include "base/constants.h"
 
 #include <math.h>
 #include <stdarg.h>
@@ -131,7 +132,7 @@ bd_drive_def bd_drive_default(void)
     d.stop_mode = BD_STOP_NONE;
     /* transmission defaults for its optional keys (see load.c) */
     d.transmission.v_belt = 0;
-    d.transmission.sheave_angle = 38.0 * 3.14159265358979323846 / 180.0;
+    d.transmission.sheave_angle = 38.0 * BD_DEG;
     d.transmission.friction = 0.5;
     d.transmission.velocity_threshold = 1e-3;
     d.transmission.force_threshold = 1e-3;

@@ -10,12 +10,12 @@
  * the span runs forward; its length is √(L² - k²). Same senses give the
  * external tangent, opposite senses the crossed one. */
 #include "model/path.h"
+#include "base/constants.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-static const double TWO_PI = 6.283185307179586;
 
 /* angle swept from direction din to dout turning in sense w (±1), in [0, 2π) */
 static double turn_angle(const double din[2], const double dout[2], int w)
@@ -23,11 +23,11 @@ static double turn_angle(const double din[2], const double dout[2], int w)
     double a = atan2(dout[1], dout[0]) - atan2(din[1], din[0]);
     a *= (double)w;
     while (a < 0.0)
-        a += TWO_PI;
-    while (a >= TWO_PI)
-        a -= TWO_PI;
+        a += BD_TWO_PI;
+    while (a >= BD_TWO_PI)
+        a -= BD_TWO_PI;
     /* a numerically straight-through pulley wraps 0, not 2π */
-    if (a > TWO_PI - 1e-12)
+    if (a > BD_TWO_PI - 1e-12)
         a = 0.0;
     return a;
 }

@@ -38,11 +38,11 @@
  * (the pulley sheave's friction is implicit in the pulley's inertia too,
  * so a gripping belt does not ring against the lagged torque). */
 #include "sim/system.h"
+#include "base/constants.h"
 
 #include <math.h>
 #include <stdlib.h>
 
-static const double PI = 3.14159265358979323846;
 
 /* span damping: a ratio of the motor sheave's torsional mode on its two
  * spans, and the belt mass on a wrap floored at a fraction of the motor
@@ -168,15 +168,15 @@ int bd_transmissions_create(bd_sim *sim, bd_diag *diag)
         tr->T0 = td->pretension;
         double f = td->v_belt ? bd_bpl_vbelt_friction(td->friction, td->sheave_angle)
                               : td->friction;
-        bd_bpl law = {f, PI, td->belt_mass_per_length, td->velocity_threshold,
+        bd_bpl law = {f, BD_PI, td->belt_mass_per_length, td->velocity_threshold,
                       td->force_threshold};
         /* open belt: the smaller sheave has the smaller wrap */
         double C = td->center_distance > 0.0 ? td->center_distance : 3.0 * (tr->r_m + tr->r_p);
         double d = (tr->r_p - tr->r_m) / C;
         d = d > 0.99 ? 0.99 : (d < -0.99 ? -0.99 : d);
         tr->law_m = tr->law_p = law;
-        tr->law_m.theta = PI - 2.0 * asin(d);
-        tr->law_p.theta = PI + 2.0 * asin(d);
+        tr->law_m.theta = BD_PI - 2.0 * asin(d);
+        tr->law_p.theta = BD_PI + 2.0 * asin(d);
         tr->m_w = td->belt_mass_per_length * tr->law_m.theta * tr->r_m;
         double floor_m = WRAP_MASS_FLOOR * tr->J_m / (tr->r_m * tr->r_m);
         if (tr->m_w < floor_m)

@@ -4,6 +4,7 @@
 #include "sim/system.h"
 #include "sim/layout.h"
 #include "sim/timestep.h"
+#include "base/constants.h"
 
 #include <math.h>
 #include <stdarg.h>
@@ -11,7 +12,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const double PI = 3.14159265358979323846;
 
 void bd_sim_warn(bd_sim *sim, const char *fmt, ...)
 {
@@ -42,7 +42,7 @@ static double default_element_length(const bd_model_def *def)
     for (int i = 0; i < def->pulley_count; i++)
         if (def->pulleys[i].radius < r)
             r = def->pulleys[i].radius;
-    return 2.0 * r * sin(PI / 12.0);
+    return 2.0 * r * sin(BD_PI / 12.0);
 }
 
 void *bd_xcalloc(size_t n, size_t size)
@@ -68,7 +68,7 @@ void bd_pulley_body_init(bd_sim *sim, bd_pulley_body *p, const bd_pulley_def *pd
     /* a massless pulley would have an undefined speed when the belt
      * slips on it everywhere: floor its inertia at 1% of the inertia of
      * the belt wrapped on it (documented in docs/physics.md) */
-    double floor_inertia = 0.01 * sim->belt_mpl * PI * pd->radius * pd->radius * pd->radius;
+    double floor_inertia = 0.01 * sim->belt_mpl * BD_PI * pd->radius * pd->radius * pd->radius;
     if (p->inertia < floor_inertia)
         p->inertia = floor_inertia;
     p->cx = pd->x;

@@ -1,6 +1,7 @@
 /* `beltdyn check`: what was derived from the model */
 #include "sim/system.h"
 #include "sim/timestep.h"
+#include "base/constants.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -39,7 +40,7 @@ void bd_sim_describe(const bd_sim *sim, FILE *f)
         const bd_pulley_body *p = &sim->pulleys[i];
         const bd_path_segment *sp = bd_path_span(&sim->path, i);
         fprintf(f, "  %-12s wrap %6.1f deg, span after it %.3f m, inertia %.4g kg m2%s%s\n",
-                p->def->name, bd_path_wrap_angle(&sim->path, i) * 180.0 / 3.14159265358979,
+                p->def->name, bd_path_wrap_angle(&sim->path, i) * 180.0 / BD_PI,
                 sp->length, p->inertia, p->def->has_drive ? ", drive" : "",
                 p->def->has_takeup ? ", takeup" : "");
     }

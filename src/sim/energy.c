@@ -5,6 +5,7 @@
  * energy and the work of dissipative forces and drives are booked in the
  * step (step.c). */
 #include "sim/system.h"
+#include "base/constants.h"
 
 #include <math.h>
 
@@ -48,7 +49,6 @@ void bd_energy_update_balance(bd_sim *sim)
  * path, searched from the segment it was on last time */
 double bd_element_s(const bd_sim *sim, int e)
 {
-    static const double TWO_PI = 6.283185307179586;
     if (sim->axial) {
         /* stations are fixed on the path */
         double s = sim->s_node0[e] + 0.5 * sim->ax.s_len[e];
@@ -67,11 +67,11 @@ double bd_element_s(const bd_sim *sim, int e)
             double sense = g->sweep >= 0.0 ? 1.0 : -1.0;
             double rel = sense * (atan2(my - g->centre[1], mx - g->centre[0]) - g->angle0);
             /* put the gap outside the arc half before, half after it */
-            double gap = 0.5 * (TWO_PI - fabs(g->sweep));
+            double gap = 0.5 * (BD_TWO_PI - fabs(g->sweep));
             while (rel < -gap)
-                rel += TWO_PI;
-            while (rel >= TWO_PI - gap)
-                rel -= TWO_PI;
+                rel += BD_TWO_PI;
+            while (rel >= BD_TWO_PI - gap)
+                rel -= BD_TWO_PI;
             u = rel * g->radius;
         }
         if (u < 0.0 && it < 5)

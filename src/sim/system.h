@@ -8,7 +8,7 @@
 #include "beltdyn/model.h"
 #include "beltdyn/sim.h"
 #include "model/path.h"
-#include "contact/belt_pulley_law.h"
+#include "laws/belt_pulley_law.h"
 
 struct bd_transmission;
 
@@ -294,7 +294,6 @@ double bd_pulley_contact_energy(const bd_sim *sim, const bd_pulley_body *p);
 /* drive.c */
 void bd_drive_prepare(bd_sim *sim, bd_pulley_body *p, double reflected_inertia);
 double bd_drive_torque(const bd_sim *sim, bd_pulley_body *p);
-double bd_start_curve_speed(const bd_drive_def *d, double t);
 /* takeup.c */
 double bd_takeup_force(const bd_sim *sim, const bd_pulley_body *p, double t);
 double bd_takeup_advance(bd_sim *sim, bd_pulley_body *p, double *input);

@@ -12,9 +12,9 @@
 
 #include <cjson/cJSON.h>
 
-#include "io/json_util.h"
+#include "base/constants.h"
+#include "base/json_util.h"
 
-static const double PI = 3.14159265358979323846;
 
 const char *bd_standard_name(bd_standard s)
 {
@@ -202,7 +202,7 @@ static double design_speed(const bd_std_ctx *c)
     case BD_CONTROL_MOTOR:
         /* belt speed at rated motor speed: ω = 2π·n/60/gear ratio, v = ω·r */
         if (d->motor.gear_ratio > 0.0)
-            return d->motor.rated_speed_rpm * 2.0 * PI / 60.0 / d->motor.gear_ratio * p->radius;
+            return d->motor.rated_speed_rpm * 2.0 * BD_PI / 60.0 / d->motor.gear_ratio * p->radius;
         return 0.0;
     case BD_CONTROL_TORQUE:
         return 0.0;
@@ -262,7 +262,7 @@ static int build_sections(bd_std_ctx *c)
     double sweep = 0.0;
     for (int i = 0; i < n; i++)
         sweep += bd_path_arc(&c->path, i)->sweep;
-    int orient = sweep > PI ? 1 : (sweep < -PI ? -1 : 0);
+    int orient = sweep > BD_PI ? 1 : (sweep < -BD_PI ? -1 : 0);
 
     /* sections: every span, the feed span cut at the feed point */
     int ns = 0;
@@ -349,7 +349,7 @@ static void checks(bd_std_ctx *c)
                            "the %.0f N needed to transmit %.0f N without slip "
                            "(Euler-Eytelwein, mu = %.3g, wrap %.1f deg): raise the takeup "
                            "force or the wrap",
-                        m->pulleys[p].name, T2, need, fabs(Te_drive), mu, phi * 180.0 / PI);
+                        m->pulleys[p].name, T2, need, fabs(Te_drive), mu, phi * 180.0 / BD_PI);
     }
 
     /* sag between carry idlers: T ≥ (m'G + m'L)·g·a/(8·h/a) on every carry
@@ -638,7 +638,7 @@ void bd_static_print_table(const bd_static_result *r, const bd_model_def *m, FIL
                 r->carry_length_m);
     fprintf(f, "design speed %.3f m/s; drive '%s' (%d drive%s): wrap %.1f deg, mu %.3g\n\n",
             r->speed_mps, dname, r->drive_count, r->drive_count > 1 ? "s" : "",
-            r->wrap_angle_rad * 180.0 / PI, r->mu);
+            r->wrap_angle_rad * 180.0 / BD_PI, r->mu);
 
     fprintf(f, "%-34s %14.1f\n", "main resistance (N)", r->main_N);
     fprintf(f, "%-34s %14.1f\n", "secondary resistance (N)", r->secondary_N);
@@ -663,7 +663,7 @@ void bd_static_print_table(const bd_static_result *r, const bd_model_def *m, FIL
         const bd_static_span *s = &r->spans[i];
         fprintf(f, "%-12s %-12s %10.3f %9.3f %9.2f %6s %12.1f %12.1f %12.1f %12.1f %12.1f\n",
                 m->pulleys[s->pulley].name, m->pulleys[s->to].name, s->length_m, s->lift_m,
-                s->slope_rad * 180.0 / PI, s->loaded ? "yes" : (s->carry ? "carry" : "no"),
+                s->slope_rad * 180.0 / BD_PI, s->loaded ? "yes" : (s->carry ? "carry" : "no"),
                 s->main_N, s->secondary_N, s->slope_N, s->T_start_N, s->T_end_N);
     }
     fprintf(f, "\nwarnings: %s\n", r->warning_count ? "" : "none");
@@ -715,7 +715,7 @@ char *bd_static_to_json(const bd_static_result *r, const bd_model_def *m)
         /* extra keys */
         cJSON_AddStringToObject(js, "to", m->pulleys[s->to].name);
         bd_json_add_number(js, "lift_m", s->lift_m);
-        bd_json_add_number(js, "slope_deg", s->slope_rad * 180.0 / PI);
+        bd_json_add_number(js, "slope_deg", s->slope_rad * 180.0 / BD_PI);
         cJSON_AddBoolToObject(js, "loaded", s->loaded);
         cJSON_AddBoolToObject(js, "carry", s->carry);
         bd_json_add_number(js, "main_N", s->main_N);
@@ -735,7 +735,7 @@ char *bd_static_to_json(const bd_static_result *r, const bd_model_def *m)
     cJSON_AddBoolToObject(o, "regenerative", r->regenerative);
     cJSON_AddStringToObject(o, "drive", r->drive_pulley >= 0 ? m->pulleys[r->drive_pulley].name : "");
     cJSON_AddNumberToObject(o, "drive_count", r->drive_count);
-    bd_json_add_number(o, "wrap_angle_deg", r->wrap_angle_rad * 180.0 / PI);
+    bd_json_add_number(o, "wrap_angle_deg", r->wrap_angle_rad * 180.0 / BD_PI);
     bd_json_add_number(o, "mu", r->mu);
     bd_json_add_number(o, "sag_idler_spacing_m", r->sag_spacing_m);
     bd_json_add_number(o, "T_max_N", r->T_max_N);

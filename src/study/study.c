@@ -15,7 +15,7 @@
 #include <time.h>
 
 #include "beltdyn/sim.h"
-#include "io/json_util.h"
+#include "base/json_util.h"
 
 #define PATH_LEN 2048
 #define MAX_CASES (BD_STUDY_MAX * BD_STUDY_MAX * BD_STUDY_MAX)

@@ -1,4 +1,4 @@
-#include "io/json_util.h"
+#include "base/json_util.h"
 
 #include <math.h>
 

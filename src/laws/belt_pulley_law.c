@@ -17,7 +17,7 @@
  * pulley torque (F_A + F_B)·R·tanh(4V_rel/V_thr)·tanh(F_B/F_thr) − ω·b is
  * the reaction −R·F of this force; the bearing term −ω·b is added by the
  * caller. */
-#include "contact/belt_pulley_law.h"
+#include "laws/belt_pulley_law.h"
 
 #include <math.h>
 
