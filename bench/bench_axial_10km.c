@@ -16,7 +16,7 @@
 #include <string.h>
 #include <time.h>
 
-#include "sim/system.h"
+#include "sim/engine.h"
 
 static const char *overland =
     "name: 10 km bench\n"

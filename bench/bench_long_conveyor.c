@@ -7,7 +7,7 @@
 #include <string.h>
 #include <time.h>
 
-#include "sim/system.h"
+#include "sim/engine.h"
 
 static const char *model =
     "name: 1 km bench\n"

@@ -15,6 +15,8 @@
 
 #include "beltdyn/standards.h"
 #include "io/hdf5_out.h"
+#include "parts/parts.h"
+#include "sensors/sensors.h"
 #include "sim/timestep.h"
 
 static int make_dir(const char *dir, char *err, size_t errlen)
@@ -124,12 +126,7 @@ void bd_outputs_row(bd_outputs *o, bd_sim *sim, double t)
     fprintf(h, "%.6f", t);
     for (int i = 0; i < sim->probe_count; i++) {
         bd_probe *pr = &sim->probes[i];
-        pr->tension = bd_tracker_tension(sim, &pr->tr);
-        pr->speed = bd_tracker_speed(sim, &pr->tr);
-        if (pr->tension > pr->tension_max)
-            pr->tension_max = pr->tension;
-        if (pr->tension < pr->tension_min)
-            pr->tension_min = pr->tension;
+        bd_probe_read(sim, pr);
         fprintf(h, ",%.6g,%.6g", pr->tension, pr->speed);
     }
     for (int i = 0; i < sim->pulley_count; i++)

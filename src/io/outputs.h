@@ -4,7 +4,7 @@
 
 #include <stdio.h>
 
-#include "sim/system.h"
+#include "sim/engine.h"
 
 enum { BD_OUT_HISTORY = 0, BD_OUT_TENSION, BD_OUT_ENVELOPE, BD_OUT_SUMMARY, BD_OUT_HDF5, BD_OUT_COUNT };
 

@@ -18,7 +18,7 @@
  * Stops at stop.at: coast (no torque), ramp (the speed reference falls
  * linearly to zero over stop.time), brake (brake_torque against the motion,
  * holding at standstill). Every torque is clipped to ±max_torque. */
-#include "sim/system.h"
+#include "parts/parts.h"
 #include "base/constants.h"
 #include "laws/start_curve.h"
 

@@ -4,7 +4,7 @@
  * pulley's own weight and the belt's forces on the pulley:
  *   (m_pulley + m_takeup)·q̈ = F(t) + m_pulley·g·(−a_y) + F_belt·a
  * The carriage stops at the ends of `travel`. */
-#include "sim/system.h"
+#include "parts/parts.h"
 
 #include <math.h>
 

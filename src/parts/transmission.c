@@ -37,8 +37,9 @@
  * the difference between the sheave's actual torque and the one applied
  * (the pulley sheave's friction is implicit in the pulley's inertia too,
  * so a gripping belt does not ring against the lagged torque). */
-#include "sim/system.h"
+#include "parts/parts.h"
 #include "base/constants.h"
+#include "laws/belt_pulley_law.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -1,5 +1,5 @@
 /* `beltdyn check`: what was derived from the model */
-#include "sim/system.h"
+#include "sim/engine.h"
 #include "sim/timestep.h"
 #include "base/constants.h"
 
@@ -14,21 +14,15 @@ void bd_sim_describe(const bd_sim *sim, FILE *f)
         belt_mass += sim->mass[i] - sim->material[i];
         material += sim->material[i];
     }
-    int dof = (sim->axial ? 1 : 2) * sim->n + sim->pulley_count + sim->idler_count;
+    int dof = sim->belt->node_dof * sim->n + sim->pulley_count + sim->idler_count;
     for (int i = 0; i < sim->pulley_count; i++)
         dof += sim->pulleys[i].movable;
     fprintf(f, "model: %s\n", def->name);
-    fprintf(f, "formulation: %s\n", sim->axial ? "axial (1D belt, seed-004 pulleys)"
-                                             : "discrete (2D lumped-mass belt)");
+    fprintf(f, "formulation: %s\n", sim->belt->description);
     fprintf(f, "belt loop length: %.3f m\n", sim->path.length);
     fprintf(f, "belt elements: %d (unstretched length %.4f m)\n", sim->n, sim->l0);
     fprintf(f, "belt nodes: %d\n", sim->n);
-    if (sim->axial)
-        fprintf(f, "degrees of freedom: %d (1 per node, 1 per pulley, 1 per moving takeup; "
-                   "idlers are distributed)\n", dof);
-    else
-        fprintf(f, "degrees of freedom: %d (2 per node, 1 per pulley and idler, 1 per "
-                   "moving takeup)\n", dof);
+    fprintf(f, "degrees of freedom: %d (%s)\n", dof, sim->belt->dof_text);
     fprintf(f, "stable time step: %.4g s, limited by the %s\n", sim->dt_limit,
             bd_time_step_limit_name(sim->limit_kind));
     fprintf(f, "time step used: %.4g s (%s)\n", sim->dt,

@@ -3,11 +3,13 @@
  * passes a maximum, set every velocity to zero. The energy left after each
  * reset shrinks until the system rests in static equilibrium. Time here is
  * an iteration parameter: the clock is set back to 0 afterwards. */
-#include "sim/system.h"
+#include "sim/engine.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+
+#include "sensors/sensors.h"
 
 #define STABILIZE_MAX_STEPS 2000000L
 /* converged when the kinetic energy at a peak is below this fraction of the
@@ -32,7 +34,7 @@ int bd_sim_stabilize(bd_sim *sim, FILE *log)
     sim->friction_off = 1;
     int feeding = sim->has_feed;
     sim->has_feed = 0;
-    double prev = 0.0, scale = bd_belt_elastic_energy(sim);
+    double prev = 0.0, scale = sim->belt->elastic_energy(sim);
     if (scale < 1.0)
         scale = 1.0;
     int quiet_peaks = 0, resets = 0;

@@ -1,14 +1,8 @@
-/* Stable time step. For central differences a mode of circular frequency ω
- * and damping ratio ζ is stable for
- *     Δt ≤ (2/ω)·(√(1+ζ²) − ζ)                         (DESIGN.md; seed 001 eq 6.1 for ζ = 0)
- * The highest frequency of the belt is that of a node between two elements
- * moving against its neighbours: for the axial springs ω² = 4k/m (k = EA/l0,
- * m = node mass), for the bending springs (k_θ = EI/l0, lever l0, a node and
- * its two neighbours) ω² = 16·k_θ/(m·l0²). Their sum bounds the largest
- * eigenvalue (Gershgorin); contacts are linearly implicit and add no limit
- * (pulley_contact.c, idler_contact.c). The
- * Kelvin–Voigt dashpot of ratio ζ_e (eq 4.3, per element) damps that mode
- * with ζ = 2ζ_e. */
+/* Stable time step: the belt formulation bounds the highest frequency of
+ * its belt (bd_belt_ops.stable_step; for central differences a mode of
+ * circular frequency ω and damping ratio ζ is stable for
+ * Δt ≤ (2/ω)·(√(1+ζ²) − ζ), DESIGN.md, seed 001 eq 6.1 for ζ = 0), and the
+ * step used is BD_TIME_STEP_SAFETY of it, or the model's own if stable. */
 #include "sim/timestep.h"
 
 #include <math.h>
@@ -27,21 +21,7 @@ static int check_user_step(bd_sim *sim, bd_diag *diag);
 
 int bd_time_step_choose(bd_sim *sim, bd_diag *diag)
 {
-    if (sim->axial) {
-        sim->dt_limit = bd_axial_stable_step(sim);
-        sim->limit_kind = BD_LIMIT_AXIAL;
-        return check_user_step(sim, diag);
-    }
-    double m = sim->belt_mpl * sim->l0;   /* lightest node: no material */
-    double w_axial = 4.0 * sim->k_axial;
-    double w_bend = 16.0 * sim->k_bend / (sim->l0 * sim->l0);
-    double omega = sqrt((w_axial + w_bend) / m);
-    double zeta = 4.0 * sim->c_axial / (2.0 * m * omega);
-    sim->dt_limit = 2.0 / omega * (sqrt(1.0 + zeta * zeta) - zeta);
-    /* what limits it: the largest contribution to ω² */
-    sim->limit_kind = BD_LIMIT_AXIAL;
-    if (w_bend > w_axial)
-        sim->limit_kind = BD_LIMIT_BENDING;
+    sim->dt_limit = sim->belt->stable_step(sim, &sim->limit_kind);
     return check_user_step(sim, diag);
 }
 

@@ -2,7 +2,7 @@
 #ifndef BD_TIMESTEP_H
 #define BD_TIMESTEP_H
 
-#include "sim/system.h"
+#include "sim/engine.h"
 
 /* safety factor applied to the stability limit for `time_step: auto` */
 #define BD_TIME_STEP_SAFETY 0.8

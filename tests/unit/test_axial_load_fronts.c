@@ -28,7 +28,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "sim/system.h"
+#include "sim/engine.h"
+#include "belt/axial/axial.h"
 #include "testlib.h"
 
 static const char *model_fmt =
@@ -104,8 +105,8 @@ static record run(const char *formulation, const char *extra, const char *loaded
             worst = bal;
         if (en->kinetic > kmax)
             kmax = en->kinetic;
-        if (sim->axial && r.arrival < 0.0 && strcmp(loaded, "false") == 0
-            && !sim->ax.head_free)
+        if (sim->belt == &bd_axial_ops && r.arrival < 0.0 && strcmp(loaded, "false") == 0
+            && !bd_axial_of(sim)->head_free)
             r.arrival = sim->t;
     }
     double scale = sim->energy.input > kmax ? sim->energy.input : kmax;

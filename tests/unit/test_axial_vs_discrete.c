@@ -23,7 +23,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "sim/system.h"
+#include "sim/engine.h"
 #include "testlib.h"
 
 static const char *model_fmt =
@@ -94,7 +94,7 @@ static peaks run(const char *formulation, const char *extra)
             break;
         }
         torque[k] = sim->pulleys[1].drive_torque;
-        tight[k] = bd_tracker_tension(sim, &sim->probes[0].tr);
+        tight[k] = bd_belt_point_tension(sim, &sim->probes[0].tr);
     }
     long w = lround(WINDOW / sim->dt);
     pk.torque = peak_of_mean(torque, k, w);

@@ -5,7 +5,7 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "contact/belt_pulley_law.h"
+#include "laws/belt_pulley_law.h"
 #include "testlib.h"
 
 static const double PI = 3.14159265358979323846;

@@ -23,7 +23,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "sim/system.h"
+#include "sim/engine.h"
 #include "testlib.h"
 
 static const char *model_fmt =
@@ -74,8 +74,8 @@ static void slipping(const char *belt, double tol)
     int failed = 0;
     while (sim->t < 4.0 && !failed) {
         failed = bd_sim_step(sim, 1, err, sizeof err);
-        sum_out += bd_tracker_tension(sim, &sim->probes[0].tr);
-        sum_in += bd_tracker_tension(sim, &sim->probes[1].tr);
+        sum_out += bd_belt_point_tension(sim, &sim->probes[0].tr);
+        sum_in += bd_belt_point_tension(sim, &sim->probes[1].tr);
         n++;
     }
     CHECK(!failed);
@@ -83,7 +83,7 @@ static void slipping(const char *belt, double tol)
     double want = exp(0.25 * 3.14159265358979323846);
     printf("capstan (%s): tight %.1f N, slack %.1f N, ratio %.5f (e^(mu phi) = %.5f, %+.3f%%); "
            "A turns at %.3f rad/s, B at %.5f rad/s\n",
-           sim->axial ? "axial" : "discrete", sum_in / n, sum_out / n, ratio, want,
+           sim->belt->name, sum_in / n, sum_out / n, ratio, want,
            100.0 * (ratio / want - 1.0), sim->pulleys[0].omega, sim->pulleys[1].omega);
     CHECK_REL(ratio, want, tol);
     /* A really slips (surface 1 m/s) and B holds the belt: its surface

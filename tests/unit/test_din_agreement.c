@@ -34,7 +34,7 @@
 #include <stdio.h>
 
 #include "beltdyn/standards.h"
-#include "sim/system.h"
+#include "sim/engine.h"
 #include "testlib.h"
 
 static const char *model =
@@ -89,7 +89,7 @@ int main(void)
     while (sim->t < 12.0) {
         CHECK(bd_sim_step(sim, 1, err, sizeof err) == 0);
         for (int i = 0; i < 4; i++)
-            sum[i] += bd_tracker_tension(sim, &sim->probes[i].tr);
+            sum[i] += bd_belt_point_tension(sim, &sim->probes[i].tr);
         force_sum += head->drive_torque / RADIUS;
         count += 1.0;
     }

@@ -33,7 +33,8 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "sim/system.h"
+#include "sim/engine.h"
+#include "belt/lumped/lumped.h"
 #include "testlib.h"
 
 static const double PI = 3.14159265358979323846;
@@ -59,7 +60,7 @@ static double belt_speed(const bd_sim *sim)
 {
     double p = 0.0, m = 0.0;
     for (int i = 0; i < sim->n; i++) {
-        p += sim->mass[i] * (sim->vx[i] * sim->ux[i] + sim->vy[i] * sim->uy[i]);
+        p += sim->mass[i] * (sim->vx[i] * bd_lumped_of(sim)->ux[i] + sim->vy[i] * bd_lumped_of(sim)->uy[i]);
         m += sim->mass[i];
     }
     return p / m;

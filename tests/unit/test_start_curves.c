@@ -20,7 +20,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "sim/system.h"
+#include "sim/engine.h"
 #include "testlib.h"
 
 static const double PI = 3.14159265358979323846;

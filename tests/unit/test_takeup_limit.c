@@ -14,7 +14,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "sim/system.h"
+#include "sim/engine.h"
 #include "testlib.h"
 
 static const char *model =

@@ -21,7 +21,8 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "sim/system.h"
+#include "sim/engine.h"
+#include "parts/parts.h"
 #include "testlib.h"
 
 static const double PI = 3.14159265358979323846;

@@ -32,7 +32,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "sim/system.h"
+#include "sim/engine.h"
 #include "testlib.h"
 
 static const double PI = 3.14159265358979323846;
@@ -87,7 +87,7 @@ static void statics(void)
         for (int i = 0; i < sim->probe_count; i++) {
             double y = probe_height(sim, i);
             double want = 0.5 * (F + mp * g + mpl * g * (PI * R + 2.0 * y));
-            CHECK_REL(bd_tracker_tension(sim, &sim->probes[i].tr), want, 0.02);
+            CHECK_REL(bd_belt_point_tension(sim, &sim->probes[i].tr), want, 0.02);
         }
     }
     bd_sim_free(sim);
@@ -117,8 +117,8 @@ static void wave_speed(void)
     double *a = calloc((size_t)steps, sizeof *a), *b = calloc((size_t)steps, sizeof *b);
     char err[256];
     for (int k = 0; k < steps; k++) {
-        a[k] = bd_tracker_tension(sim, &sim->probes[0].tr);   /* 20 m below top */
-        b[k] = bd_tracker_tension(sim, &sim->probes[2].tr);   /* 80 m below top */
+        a[k] = bd_belt_point_tension(sim, &sim->probes[0].tr);   /* 20 m below top */
+        b[k] = bd_belt_point_tension(sim, &sim->probes[2].tr);   /* 80 m below top */
         CHECK(bd_sim_step(sim, 1, err, sizeof err) == 0);
     }
     /* the front is a drop of tension on the strand leaving the driven

@@ -12,7 +12,7 @@ int bd_test_finish(const char *name)
 #include <stdlib.h>
 #include <string.h>
 
-#include "sim/system.h"
+#include "sim/engine.h"
 
 int bd_test_make_sim(const char *yaml, bd_model_def *def, bd_sim **sim)
 {

@@ -14,7 +14,7 @@
  * unstretched length is fixed), with a takeup we move the takeup pulley
  * along its axis (the tension is fixed by its force). This removes the
  * tension steps between sections that seed 001 §6.1 reports. */
-#include "sim/layout.h"
+#include "belt/lumped/layout.h"
 
 #include <math.h>
 #include <stdlib.h>

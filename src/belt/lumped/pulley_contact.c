@@ -29,7 +29,7 @@
  * A node whose |f_i| exceeds μ_s·f_n slips with f_i = ±μ_d·f_n (4.93–4.94)
  * and the sticking set is solved again. α is the pulley's angular
  * acceleration (I·α = R·Σf + T_p); it is exact for I → 0 too. */
-#include "sim/system.h"
+#include "belt/lumped/lumped.h"
 
 #include <math.h>
 
@@ -37,25 +37,32 @@
 /* predictive contact gap, as a fraction of the element length */
 #define CONTACT_GAP 0.02
 
+static bd_wrap_contact *wrap_of(const bd_sim *sim, const bd_pulley_body *p)
+{
+    return &bd_lumped_of(sim)->wraps[p - sim->pulleys];
+}
+
 static void normal_forces(bd_sim *sim, bd_pulley_body *p)
 {
+    bd_wrap_contact *W = wrap_of(sim, p);
+    const double l0 = sim->l0;
     const int n = sim->n;
     double R = p->radius;
     /* predictive contact: a node within this gap of the shell may reach it
      * during the step; the implicit force says whether it does */
-    double Rc = R + CONTACT_GAP * sim->l0;
+    double Rc = R + CONTACT_GAP * l0;
     /* the shell's velocity at the end of the step, with the carriage's
      * acceleration of the last step (a moving takeup pulley) */
     double vp_end = p->qdot + sim->dt * p->qddot;
     double vpx = vp_end * p->axis[0], vpy = vp_end * p->axis[1];
     int found = 0, first_found = 0, last_found = 0;
-    p->contact_count = 0;
+    W->contact_count = 0;
     p->f_axis = 0.0;
     p->fnc_axis = 0.0;
-    int span = p->win_count + 2 * WINDOW_MARGIN;
-    if (span > p->win_max)
-        span = p->win_max;
-    int start = p->win_first - WINDOW_MARGIN;
+    int span = W->win_count + 2 * WINDOW_MARGIN;
+    if (span > W->win_max)
+        span = W->win_max;
+    int start = W->win_first - WINDOW_MARGIN;
     for (int w = 0; w < span; w++) {
         int k = ((start + w) % n + n) % n;
         double rx = sim->x[k] - p->cx, ry = sim->y[k] - p->cy;
@@ -69,69 +76,70 @@ static void normal_forces(bd_sim *sim, bd_pulley_body *p)
         double Fo = nx * sim->fx[k] + ny * sim->fy[k];
         double delta = R - a;
         double dt = sim->dt;
-        double fn = p->k_contact * (delta - dt * vn - dt * dt * Fo / m)
-                  / (1.0 + p->k_contact * dt * dt / m);
+        double fn = W->k_contact * (delta - dt * vn - dt * dt * Fo / m)
+                  / (1.0 + W->k_contact * dt * dt / m);
         if (fn <= 0.0)
             continue;
-        double fd = fn - (delta > 0.0 ? p->k_contact * delta : 0.0);
+        double fd = fn - (delta > 0.0 ? W->k_contact * delta : 0.0);
         sim->fx[k] += fn * nx;
         sim->fy[k] += fn * ny;
         sim->fnx[k] += fd * nx;
         sim->fny[k] += fd * ny;
         p->f_axis -= fn * (nx * p->axis[0] + ny * p->axis[1]);
         p->fnc_axis -= fd * (nx * p->axis[0] + ny * p->axis[1]);
-        int c = p->contact_count++;
-        p->c_node[c] = k;
-        p->c_normal[c] = fn;
-        p->c_tx[c] = -p->wrap * ny;
-        p->c_ty[c] = p->wrap * nx;
+        int c = W->contact_count++;
+        W->c_node[c] = k;
+        W->c_normal[c] = fn;
+        W->c_tx[c] = -p->wrap * ny;
+        W->c_ty[c] = p->wrap * nx;
         if (!found)
             first_found = start + w;
         found = 1;
         last_found = start + w;
     }
     if (found) {
-        p->win_first = ((first_found % n) + n) % n;
-        p->win_count = last_found - first_found + 1;
+        W->win_first = ((first_found % n) + n) % n;
+        W->win_count = last_found - first_found + 1;
     }
 }
 
 static void friction_forces(bd_sim *sim, bd_pulley_body *p, double T_p)
 {
+    bd_wrap_contact *W = wrap_of(sim, p);
     const double dt = sim->dt, R = p->radius;
     const double vpx = p->qdot * p->axis[0], vpy = p->qdot * p->axis[1];
-    const int nc = p->contact_count;
+    const int nc = W->contact_count;
     double alpha = 0.0;
     for (int c = 0; c < nc; c++)
-        p->c_slip[c] = 0;
+        W->c_slip[c] = 0;
     /* solve the sticking set, move violators to slip, repeat */
     for (int pass = 0; pass <= nc; pass++) {
         double A = 0.0, M = 0.0, Fk = 0.0;
         for (int c = 0; c < nc; c++) {
-            if (p->c_slip[c]) {
-                Fk += p->c_f[c];
+            if (W->c_slip[c]) {
+                Fk += W->c_f[c];
                 continue;
             }
-            int k = p->c_node[c];
-            double vr = p->c_tx[c] * (sim->vx[k] - vpx) + p->c_ty[c] * (sim->vy[k] - vpy)
+            int k = W->c_node[c];
+            double vr = W->c_tx[c] * (sim->vx[k] - vpx) + W->c_ty[c] * (sim->vy[k] - vpy)
                       - R * p->omega;
-            A += sim->mass[k] * vr / dt + p->c_tx[c] * sim->fx[k] + p->c_ty[c] * sim->fy[k];
+            A += sim->mass[k] * vr / dt + W->c_tx[c] * sim->fx[k] + W->c_ty[c] * sim->fy[k];
             M += sim->mass[k];
         }
         alpha = (R * A + R * Fk + T_p) / (p->inertia + R * R * M);
         int changed = 0;
         for (int c = 0; c < nc; c++) {
-            if (p->c_slip[c])
+            if (W->c_slip[c])
                 continue;
-            int k = p->c_node[c];
-            double vr = p->c_tx[c] * (sim->vx[k] - vpx) + p->c_ty[c] * (sim->vy[k] - vpy)
+            int k = W->c_node[c];
+            double vr = W->c_tx[c] * (sim->vx[k] - vpx) + W->c_ty[c] * (sim->vy[k] - vpy)
                       - R * p->omega;
             double f = sim->mass[k] * (vr / dt - R * alpha)
-                     + p->c_tx[c] * sim->fx[k] + p->c_ty[c] * sim->fy[k];
-            p->c_f[c] = f;
-            if (fabs(f) > p->mu_s * p->c_normal[c]) {
-                p->c_slip[c] = 1;
-                p->c_f[c] = copysign(p->mu_d * p->c_normal[c], f);
+                     + W->c_tx[c] * sim->fx[k] + W->c_ty[c] * sim->fy[k];
+            W->c_f[c] = f;
+            if (fabs(f) > p->mu_s * W->c_normal[c]) {
+                W->c_slip[c] = 1;
+                W->c_f[c] = copysign(p->mu_d * W->c_normal[c], f);
                 changed = 1;
             }
         }
@@ -141,13 +149,13 @@ static void friction_forces(bd_sim *sim, bd_pulley_body *p, double T_p)
     /* apply */
     double sum = 0.0;
     for (int c = 0; c < nc; c++) {
-        int k = p->c_node[c];
-        double f = p->c_f[c];
-        sim->fx[k] -= f * p->c_tx[c];
-        sim->fy[k] -= f * p->c_ty[c];
-        sim->fnx[k] -= f * p->c_tx[c];
-        sim->fny[k] -= f * p->c_ty[c];
-        double fa = f * (p->c_tx[c] * p->axis[0] + p->c_ty[c] * p->axis[1]);
+        int k = W->c_node[c];
+        double f = W->c_f[c];
+        sim->fx[k] -= f * W->c_tx[c];
+        sim->fy[k] -= f * W->c_ty[c];
+        sim->fnx[k] -= f * W->c_tx[c];
+        sim->fny[k] -= f * W->c_ty[c];
+        double fa = f * (W->c_tx[c] * p->axis[0] + W->c_ty[c] * p->axis[1]);
         p->f_axis += fa;
         p->fnc_axis += fa;
         sum += f;
@@ -156,12 +164,13 @@ static void friction_forces(bd_sim *sim, bd_pulley_body *p, double T_p)
     p->alpha = alpha;
 }
 
-void bd_pulley_contact(bd_sim *sim, bd_pulley_body *p, double external_torque)
+void bd_lumped_wrap(bd_sim *sim, bd_pulley_body *p, double external_torque)
 {
     normal_forces(sim, p);
+    const bd_wrap_contact *W = wrap_of(sim, p);
     p->torque_external = external_torque;
     p->torque_friction = 0.0;
-    if (sim->friction_off || p->contact_count == 0) {
+    if (sim->friction_off || W->contact_count == 0) {
         p->alpha = external_torque / p->inertia;
         return;
     }
@@ -170,18 +179,19 @@ void bd_pulley_contact(bd_sim *sim, bd_pulley_body *p, double external_torque)
 
 /* elastic energy of the contact springs: ½k_c·δ² of every node inside the
  * shell, among the nodes the window covers */
-double bd_pulley_contact_energy(const bd_sim *sim, const bd_pulley_body *p)
+double bd_lumped_wrap_energy(const bd_sim *sim, const bd_pulley_body *p)
 {
+    const bd_wrap_contact *W = wrap_of(sim, p);
     const int n = sim->n;
     double e = 0.0, R = p->radius;
-    int span = p->win_count + 2 * WINDOW_MARGIN;
-    if (span > p->win_max)
-        span = p->win_max;
+    int span = W->win_count + 2 * WINDOW_MARGIN;
+    if (span > W->win_max)
+        span = W->win_max;
     for (int w = 0; w < span; w++) {
-        int k = ((p->win_first - WINDOW_MARGIN + w) % n + n) % n;
+        int k = ((W->win_first - WINDOW_MARGIN + w) % n + n) % n;
         double a = hypot(sim->x[k] - p->cx, sim->y[k] - p->cy);
         if (a < R)
-            e += 0.5 * p->k_contact * (R - a) * (R - a);
+            e += 0.5 * W->k_contact * (R - a) * (R - a);
     }
     return e;
 }

@@ -13,7 +13,7 @@
  * implicitly together with the pulley's rotation:
  *   I·ω̇ = Q − R·F_p,    Q = drive (or transmission) + bearing −b·ω.
  * Central differences as for the discrete belt (step.c). */
-#include "sim/system.h"
+#include "belt/axial/axial.h"
 
 #include <math.h>
 
@@ -21,8 +21,8 @@
 static void element_pass(bd_sim *sim)
 {
     const int n = sim->n;
-    const double *u = sim->ax.u, *v = sim->vx, *gap = sim->ax.gap, *rate = sim->ax.gap_rate;
-    const double *k = sim->ax.k, *c = sim->ax.c;
+    const double *u = bd_axial_of(sim)->u, *v = sim->vx, *gap = bd_axial_of(sim)->gap, *rate = bd_axial_of(sim)->gap_rate;
+    const double *k = bd_axial_of(sim)->k, *c = bd_axial_of(sim)->c;
     double *f = sim->fx, *fn = sim->fnx, *tension = sim->tension;
     bd_extremes ext = {-INFINITY, INFINITY, 0.0, 0, 0};
     for (int e = 0; e < n; e++) {
@@ -39,49 +39,50 @@ static void element_pass(bd_sim *sim)
     bd_extremes_store(sim, &ext);
 }
 
-/* the seed-004 law at pulley p, implicit in the pulley's and the belt
- * node's velocities at the end of the step */
-static void pulley_law(bd_sim *sim, bd_pulley_body *p)
+/* the wrap coupling: the seed-004 law at pulley p, implicit in the
+ * pulley's and the belt node's velocities at the end of the step */
+void bd_axial_wrap(bd_sim *sim, bd_pulley_body *p, double Q)
 {
-    const int n = sim->n, i = p->node;
+    const bd_axial *ax = bd_axial_of(sim);
+    bd_axial_pulley *ap = bd_axial_pulley_of(sim, p);
+    const int n = sim->n, i = ap->node;
     const double dt = sim->dt, R = p->radius;
     int e_in = i == 0 ? n - 1 : i - 1;
     double T_in = sim->tension[e_in], T_out = sim->tension[i];
-    double Q = bd_pulley_external_torque(sim, p);
     double F = 0.0;
     if (!sim->friction_off) {
         double m = sim->mass[i];
         double v_free = sim->vx[i] + dt * sim->fx[i] / m - R * (p->omega + dt * Q / p->inertia);
         double kappa = dt * (1.0 / m + R * R / p->inertia);
-        F = bd_bpl_solve(&p->law, T_in, T_out, sim->vx[i], v_free, kappa);
+        F = bd_bpl_solve(&ap->law, T_in, T_out, sim->vx[i], v_free, kappa);
     }
     sim->fx[i] += F;
     sim->fnx[i] += F;
-    p->belt_force = F;
+    ap->belt_force = F;
     p->torque_friction = -R * F;
     p->torque_external = Q;
     p->alpha = (Q - R * F) / p->inertia;
-    /* recorded here, said after the run (bd_sim_report_events) */
-    if ((T_in <= 0.0 || T_out <= 0.0) && !p->slack_warned && !sim->friction_off) {
-        p->slack_warned = 1;
-        p->slack_t = sim->t;
-        p->slack_arriving = T_in <= 0.0;
-        p->slack_tension = T_in <= 0.0 ? T_in : T_out;
+    /* recorded here, said after the run (bd_axial_report_events) */
+    if ((T_in <= 0.0 || T_out <= 0.0) && !ap->slack_warned && !sim->friction_off) {
+        ap->slack_warned = 1;
+        ap->slack_t = sim->t;
+        ap->slack_arriving = T_in <= 0.0;
+        ap->slack_tension = T_in <= 0.0 ? T_in : T_out;
     }
     if (p->movable) {
         /* the belt's pull on the carriage along its axis, and its dashpot part */
         int j = i + 1 == n ? 0 : i + 1;
-        double Td_in = sim->ax.c[e_in] * (sim->ax.gap_rate[e_in] + sim->vx[i] - sim->vx[e_in]);
-        double Td_out = sim->ax.c[i] * (sim->ax.gap_rate[i] + sim->vx[j] - sim->vx[i]);
-        p->f_axis = T_out * p->c_out - T_in * p->c_in + p->wrap_pull;
-        p->fnc_axis = Td_out * p->c_out - Td_in * p->c_in;
+        double Td_in = ax->c[e_in] * (ax->gap_rate[e_in] + sim->vx[i] - sim->vx[e_in]);
+        double Td_out = ax->c[i] * (ax->gap_rate[i] + sim->vx[j] - sim->vx[i]);
+        p->f_axis = T_out * ap->c_out - T_in * ap->c_in + p->wrap_pull;
+        p->fnc_axis = Td_out * ap->c_out - Td_in * ap->c_in;
     }
 }
 
-int bd_axial_forces(bd_sim *sim)
+void bd_axial_forces(bd_sim *sim)
 {
     const int n = sim->n;
-    const double *fc = sim->ax.f_const, *res = sim->ax.resist, *v = sim->vx;
+    const double *fc = bd_axial_of(sim)->f_const, *res = bd_axial_of(sim)->resist, *v = sim->vx;
     double *f = sim->fx, *fn = sim->fnx;
     for (int i = 0; i < n; i++) {
         double sat = v[i] / BD_AXIAL_ROLLING_SPEED;
@@ -91,42 +92,37 @@ int bd_axial_forces(bd_sim *sim)
         fn[i] = r;
     }
     element_pass(sim);
-    if (bd_check_elements(sim))
-        return 1;
-    int fd = sim->ax.feed_node;
+    int fd = bd_axial_of(sim)->feed_node;
     if (fd >= 0 && sim->has_feed && v[fd] > 0.0) {
         double F = -sim->material_mpl * v[fd] * v[fd];
         f[fd] += F;
         fn[fd] += F;
     }
-    for (int p = 0; p < sim->pulley_count; p++)
-        pulley_law(sim, &sim->pulleys[p]);
-    return 0;
 }
 
 /* a takeup moved by dq: its two elements change length (and rate) */
-static void takeup_geometry(bd_sim *sim)
+void bd_axial_takeup_geometry(bd_sim *sim)
 {
     const int n = sim->n;
-    bd_axial *ax = &sim->ax;
+    bd_axial *ax = bd_axial_of(sim);
     for (int p = 0; p < sim->pulley_count; p++) {
-        const bd_pulley_body *pb = &sim->pulleys[p];
-        if (pb->movable) {
-            int i = pb->node, e_in = i == 0 ? n - 1 : i - 1;
+        if (sim->pulleys[p].movable) {
+            int i = ax->pulleys[p].node, e_in = i == 0 ? n - 1 : i - 1;
             ax->gap_rate[e_in] = 0.0;
             ax->gap_rate[i] = 0.0;
         }
     }
     for (int p = 0; p < sim->pulley_count; p++) {
         const bd_pulley_body *pb = &sim->pulleys[p];
+        const bd_axial_pulley *ap = &ax->pulleys[p];
         if (!pb->movable)
             continue;
-        int i = pb->node, e_in = i == 0 ? n - 1 : i - 1;
+        int i = ap->node, e_in = i == 0 ? n - 1 : i - 1;
         double dq = pb->q - pb->q_step_start;
-        ax->gap[e_in] += pb->c_in * dq;
-        ax->gap[i] -= pb->c_out * dq;
-        ax->gap_rate[e_in] += pb->c_in * pb->qdot;
-        ax->gap_rate[i] -= pb->c_out * pb->qdot;
+        ax->gap[e_in] += ap->c_in * dq;
+        ax->gap[i] -= ap->c_out * dq;
+        ax->gap_rate[e_in] += ap->c_in * pb->qdot;
+        ax->gap_rate[i] -= ap->c_out * pb->qdot;
         sim->x[i] += dq * pb->axis[0];
         sim->y[i] += dq * pb->axis[1];
     }
@@ -137,7 +133,7 @@ static void takeup_geometry(bd_sim *sim)
 static int front_node(const bd_sim *sim, double s, int *e)
 {
     const int n = sim->n;
-    const double L = sim->path.length, *s0 = sim->s_node0, *len = sim->ax.s_len;
+    const double L = sim->path.length, *s0 = sim->s_node0, *len = bd_axial_of(sim)->s_len;
     for (int it = 0; it < n; it++) {
         double rel = s - s0[*e];
         rel -= L * floor(rel / L + 0.5);   /* into [−L/2, L/2) */
@@ -157,10 +153,10 @@ static int front_node(const bd_sim *sim, double s, int *e)
  * input; material that leaves takes them away, booked as dissipated */
 static void reload_node(bd_sim *sim, int i)
 {
-    double m0 = sim->material[i], w0 = sim->ax.f_const[i];
+    double m0 = sim->material[i], w0 = bd_axial_of(sim)->f_const[i];
     bd_axial_node_load(sim, i);
-    double dm = sim->material[i] - m0, dw = sim->ax.f_const[i] - w0;
-    double de = 0.5 * dm * sim->vx[i] * sim->vx[i] - dw * sim->ax.u[i];
+    double dm = sim->material[i] - m0, dw = bd_axial_of(sim)->f_const[i] - w0;
+    double de = 0.5 * dm * sim->vx[i] * sim->vx[i] - dw * bd_axial_of(sim)->u[i];
     if (dm >= 0.0)
         sim->energy.input += de;
     else
@@ -174,12 +170,12 @@ static void reload_node(bd_sim *sim, int i)
 static int move_front(bd_sim *sim, double *d, int *e, double lo, double hi)
 {
     const int n = sim->n;
-    const double L = sim->path.length, s_feed = sim->ax.s_feed;
+    const double L = sim->path.length, s_feed = bd_axial_of(sim)->s_feed;
     int k0 = front_node(sim, s_feed + *d, e);
     int j = *e + 1 == n ? 0 : *e + 1;
     double rel = s_feed + *d - sim->s_node0[*e];
     rel -= L * floor(rel / L);
-    double g = rel / sim->ax.s_len[*e];
+    double g = rel / bd_axial_of(sim)->s_len[*e];
     double v = (1.0 - g) * sim->vx[*e] + g * sim->vx[j];
     double d_new = *d + v * sim->dt;
     d_new = d_new < lo ? lo : (d_new > hi ? hi : d_new);
@@ -199,26 +195,22 @@ static int move_front(bd_sim *sim, double *d, int *e, double lo, double hi)
 
 /* the load fronts (docs/physics.md §11): the head rides with the belt until
  * it reaches the discharge pulley, the tail once feeding has stopped */
-static void move_load_fronts(bd_sim *sim)
+void bd_axial_material(bd_sim *sim)
 {
-    bd_axial *ax = &sim->ax;
+    bd_axial *ax = bd_axial_of(sim);
     if (ax->head_free && move_front(sim, &ax->d_head, &ax->e_head, ax->d_tail, ax->load_len))
         ax->head_free = 0;
     if (ax->tail_free)
         move_front(sim, &ax->d_tail, &ax->e_tail, 0.0, ax->d_head);
 }
 
-int bd_axial_step(bd_sim *sim)
+/* nodes: velocities to t + Δt/2, displacements to t + Δt, with the
+ * mid-step bookkeeping of the lumped belt (belt/lumped/forces.c) */
+void bd_axial_integrate(bd_sim *sim, double *ke_out, double *w_nc_out)
 {
     const double dt = sim->dt;
-    bd_energy *en = &sim->energy;
-    if (sim->want_energy)
-        en->potential = bd_axial_potential(sim);
-    if (bd_axial_forces(sim))
-        return 1;
-    /* nodes: velocities to t + Δt/2, displacements to t + Δt */
     const int n = sim->n;
-    double *u = sim->ax.u, *v = sim->vx;
+    double *u = bd_axial_of(sim)->u, *v = sim->vx;
     const double *f = sim->fx, *fn = sim->fnx, *mass = sim->mass;
     double w_nc = 0.0, ke = 0.0;
     for (int i = 0; i < n; i++) {
@@ -229,26 +221,15 @@ int bd_axial_step(bd_sim *sim)
         v[i] += a;
         u[i] += v[i] * dt;
     }
-    w_nc *= dt;
-    ke *= 0.5;
-    bd_pulleys_advance(sim, &ke, &w_nc);
-    takeup_geometry(sim);
-    en->dissipated -= w_nc;
-    en->kinetic = ke;
-    if (ke > en->max_kinetic)
-        en->max_kinetic = ke;
-    if (sim->material_mpl > 0.0)
-        move_load_fronts(sim);
-    sim->t += dt;
-    sim->steps++;
-    return 0;
+    *w_nc_out = w_nc * dt;
+    *ke_out = ke * 0.5;
 }
 
 /* ½·k·(stretch)² of every element */
 double bd_axial_elastic_energy(const bd_sim *sim)
 {
     const int n = sim->n;
-    const double *u = sim->ax.u, *gap = sim->ax.gap, *k = sim->ax.k;
+    const double *u = bd_axial_of(sim)->u, *gap = bd_axial_of(sim)->gap, *k = bd_axial_of(sim)->k;
     double e = 0.0;
     for (int i = 0; i < n; i++) {
         int j = i + 1 == n ? 0 : i + 1;
@@ -258,19 +239,103 @@ double bd_axial_elastic_energy(const bd_sim *sim)
     return e;
 }
 
-/* elastic energy, the potential −W_i·u_i of the weights along the path,
- * the pulleys' weight and the takeup pulls (−F·q, the wrapped belt's
- * weight included) */
+/* elastic energy and the potential −W_i·u_i of the weights along the
+ * path; the pulleys' weight and the takeup pulls (−F·q, the wrapped belt's
+ * weight included through wrap_pull) are the parts' (sim/energy.c) */
 double bd_axial_potential(const bd_sim *sim)
 {
+    const bd_axial *ax = bd_axial_of(sim);
     double e = bd_axial_elastic_energy(sim);
     for (int i = 0; i < sim->n; i++)
-        e -= sim->ax.f_const[i] * sim->ax.u[i];
-    for (int i = 0; i < sim->pulley_count; i++) {
-        const bd_pulley_body *p = &sim->pulleys[i];
-        e += p->def->mass * sim->gravity * p->cy;
-        if (p->movable)
-            e -= (bd_takeup_force(sim, p, sim->t) + p->wrap_pull) * p->q;
-    }
-    return e + bd_transmissions_potential(sim);
+        e -= ax->f_const[i] * ax->u[i];
+    return e;
 }
+
+/* recorded in the step (bd_axial_wrap), said after the run */
+void bd_axial_report_events(bd_sim *sim)
+{
+    for (int i = 0; i < sim->pulley_count; i++) {
+        const bd_axial_pulley *ap = &bd_axial_of(sim)->pulleys[i];
+        if (ap->slack_warned)
+            bd_sim_warn(sim, "pulley '%s': a belt end lost its tension at t = %.3f s (%s side, "
+                        "%.0f N); the belt-pulley law (seed 004) holds only while both ends "
+                        "are in tension", sim->pulleys[i].def->name, ap->slack_t,
+                        ap->slack_arriving ? "arriving" : "leaving", ap->slack_tension);
+    }
+}
+
+static void sample(const bd_sim *sim, const bd_tracker *tr, bd_belt_sample *out)
+{
+    int e = tr->element, j = e + 1 == sim->n ? 0 : e + 1;
+    double g = tr->gamma;
+    out->tension = bd_belt_point_tension(sim, tr);
+    out->speed = (1.0 - g) * sim->vx[e] + g * sim->vx[j];
+}
+
+/* stations stay where they are: nothing to follow */
+static void point_update(const bd_sim *sim, bd_tracker *tr)
+{
+    (void)sim;
+    (void)tr;
+}
+
+static double element_s(const bd_sim *sim, int e)
+{
+    double s = sim->s_node0[e] + 0.5 * bd_axial_of(sim)->s_len[e];
+    return s < sim->path.length ? s : s - sim->path.length;
+}
+
+static double element_speed(const bd_sim *sim, int e)
+{
+    int j = e + 1 == sim->n ? 0 : e + 1;
+    return 0.5 * (sim->vx[e] + sim->vx[j]);
+}
+
+/* the elements differ in l0; the tension says the strain */
+static double element_strain(const bd_sim *sim, int e)
+{
+    return sim->tension[e] / sim->EA;
+}
+
+/* a pulley's wrap stores nothing: the seed-004 wrap has no compliance */
+static double wrap_energy(const bd_sim *sim, const bd_pulley_body *p)
+{
+    (void)sim;
+    (void)p;
+    return 0.0;
+}
+
+/* the idlers' rotating mass is in the node masses already */
+static double support_inertia(const bd_sim *sim, double R, double J)
+{
+    (void)sim;
+    (void)R;
+    return J;
+}
+
+const bd_belt_ops bd_axial_ops = {
+    .name = "axial",
+    .description = "axial (1D belt, seed-004 pulleys)",
+    .node_dof = 1,
+    .dof_text = "1 per node, 1 per pulley, 1 per moving takeup; idlers are distributed",
+    .build = bd_axial_build,
+    .free = bd_axial_free,
+    .stable_step = bd_axial_stable_step,
+    .forces = bd_axial_forces,
+    .wrap = bd_axial_wrap,
+    .supports = NULL,
+    .integrate = bd_axial_integrate,
+    .after_parts = bd_axial_takeup_geometry,
+    .material = bd_axial_material,
+    .potential = bd_axial_potential,
+    .elastic_energy = bd_axial_elastic_energy,
+    .wrap_energy = wrap_energy,
+    .support_inertia = support_inertia,
+    .point_init = bd_axial_point_init,
+    .point_update = point_update,
+    .sample = sample,
+    .element_s = element_s,
+    .element_speed = element_speed,
+    .element_strain = element_strain,
+    .report_events = bd_axial_report_events,
+};

@@ -19,7 +19,7 @@
  *   makes them differ by ΔT/EA of the speed, a fraction of a percent). The
  *   drive slips when they differ by more than SLIP_SPEED + SLIP_FRACTION·|ωR|
  *   for at least SLIP_TIME without a break. */
-#include "sim/system.h"
+#include "sensors/sensors.h"
 
 #include <math.h>
 
@@ -42,8 +42,8 @@ void bd_monitor_init(bd_sim *sim, bd_pulley_body *p)
     const bd_path_segment *arc = bd_path_arc(&sim->path, i);
     double s_in = arc->s0 - offset_on(bd_path_span(&sim->path, before));
     double s_out = arc->s0 + arc->length + offset_on(bd_path_span(&sim->path, i));
-    bd_tracker_init(sim, &p->mon.tight, s_in);
-    bd_tracker_init(sim, &p->mon.slack, s_out);
+    sim->belt->point_init(sim, &p->mon.tight, s_in);
+    sim->belt->point_init(sim, &p->mon.slack, s_out);
     bd_monitor_reset(sim, p);
 }
 
@@ -112,11 +112,15 @@ static void slip(bd_drive_monitor *m, double v_surface, double v_belt, double t)
 void bd_monitor_update(bd_sim *sim, bd_pulley_body *p)
 {
     bd_drive_monitor *m = &p->mon;
-    bd_tracker_update(sim, &m->tight);
-    bd_tracker_update(sim, &m->slack);
+    const bd_belt_ops *belt = sim->belt;
+    belt->point_update(sim, &m->tight);
+    belt->point_update(sim, &m->slack);
     double t = sim->t;
-    double T_in = bd_tracker_tension(sim, &m->tight);
-    double T_out = bd_tracker_tension(sim, &m->slack);
+    bd_belt_sample in, out;
+    belt->sample(sim, &m->tight, &in);
+    belt->sample(sim, &m->slack, &out);
+    double T_in = in.tension;
+    double T_out = out.tension;
     if (T_in > m->tight_max) {
         m->tight_max = T_in;
         m->tight_max_t = t;
@@ -131,8 +135,8 @@ void bd_monitor_update(bd_sim *sim, bd_pulley_body *p)
         if (T_in < m->swing_min)
             m->swing_min = T_in;
     }
-    double v_in = bd_tracker_speed(sim, &m->tight);
-    double v_out = bd_tracker_speed(sim, &m->slack);
+    double v_in = in.speed;
+    double v_out = out.speed;
     window_acceleration(m, v_in, t);
     slip(m, p->omega * p->radius, 0.5 * (v_in + v_out), t);
 }

@@ -11,17 +11,18 @@
  *   ∂θ/∂x_{i+1} = perp(â)/l_a,  ∂θ/∂x_{i−1} = perp(b̂)/l_b,
  *   ∂θ/∂x_i = −(both),          perp(u) = (−u_y, u_x).
  * Gravity −m·g on every node (eq 4.49). */
-#include "sim/system.h"
+#include "belt/lumped/lumped.h"
 
 #include <math.h>
 
 static void element_forces(bd_sim *sim)
 {
+    bd_lumped *L = bd_lumped_of(sim);
     const int n = sim->n;
-    const double k = sim->k_axial, c = sim->c_axial, l0 = sim->l0;
+    const double k = L->k_axial, c = L->c_axial, l0 = sim->l0;
     const double *x = sim->x, *y = sim->y, *vx = sim->vx, *vy = sim->vy;
     double *fx = sim->fx, *fy = sim->fy, *fnx = sim->fnx, *fny = sim->fny;
-    double *ux = sim->ux, *uy = sim->uy, *len = sim->len, *tension = sim->tension;
+    double *ux = L->ux, *uy = L->uy, *len = L->len, *tension = sim->tension;
     /* the extremes of this step, for the run's record and divergence check;
      * a NaN anywhere makes the sum NaN */
     bd_extremes ext = {-INFINITY, INFINITY, 0.0, 0, 0};
@@ -53,9 +54,10 @@ static void element_forces(bd_sim *sim)
 
 static void bending_forces(bd_sim *sim)
 {
+    const bd_lumped *L = bd_lumped_of(sim);
     const int n = sim->n;
-    const double kb = sim->k_bend;
-    const double *ux = sim->ux, *uy = sim->uy, *len = sim->len;
+    const double kb = L->k_bend;
+    const double *ux = L->ux, *uy = L->uy, *len = L->len;
     double *fx = sim->fx, *fy = sim->fy;
     for (int i = 0; i < n; i++) {
         int b = i == 0 ? n - 1 : i - 1;       /* element before node i */
@@ -75,7 +77,7 @@ static void bending_forces(bd_sim *sim)
     }
 }
 
-void bd_belt_forces(bd_sim *sim)
+void bd_lumped_forces(bd_sim *sim)
 {
     const int n = sim->n;
     const double g = sim->gravity;
@@ -86,36 +88,63 @@ void bd_belt_forces(bd_sim *sim)
         sim->fny[i] = 0.0;
     }
     element_forces(sim);
-    if (sim->k_bend > 0.0)
+    if (bd_lumped_of(sim)->k_bend > 0.0)
         bending_forces(sim);
 }
 
-double bd_belt_elastic_energy(const bd_sim *sim)
+/* nodes: velocities to t + Δt/2, positions to t + Δt (seed 001 eqs
+ * 4.58–4.60); the kinetic energy and the non-conservative work are booked
+ * with mid-step velocities v(t) = (v⁻ + v⁺)/2, for which the scheme's
+ * kinetic-energy change is exactly Σ F·v(t)·Δt */
+void bd_lumped_integrate(bd_sim *sim, double *ke_out, double *w_nc_out)
 {
-    if (sim->axial)
-        return bd_axial_elastic_energy(sim);
+    const double dt = sim->dt;
+    double w_nc = 0.0, ke = 0.0;
+    const int n = sim->n;
+    double *x = sim->x, *y = sim->y, *vx = sim->vx, *vy = sim->vy;
+    const double *fx = sim->fx, *fy = sim->fy, *fnx = sim->fnx, *fny = sim->fny;
+    const double *mass = sim->mass;
+    for (int i = 0; i < n; i++) {
+        double inv = dt / mass[i];
+        double ax = fx[i] * inv, ay = fy[i] * inv;
+        double mx = vx[i] + 0.5 * ax, my = vy[i] + 0.5 * ay;
+        w_nc += fnx[i] * mx + fny[i] * my;
+        ke += mass[i] * (mx * mx + my * my);
+        vx[i] += ax;
+        vy[i] += ay;
+        x[i] += vx[i] * dt;
+        y[i] += vy[i] * dt;
+    }
+    *w_nc_out = w_nc * dt;
+    *ke_out = ke * 0.5;
+}
+
+double bd_lumped_elastic_energy(const bd_sim *sim)
+{
+    const bd_lumped *L = bd_lumped_of(sim);
     const int n = sim->n;
     double e = 0.0;
     for (int i = 0; i < n; i++) {
         int j = i + 1 == n ? 0 : i + 1;
         double l = hypot(sim->x[j] - sim->x[i], sim->y[j] - sim->y[i]);
-        e += 0.5 * sim->k_axial * (l - sim->l0) * (l - sim->l0);
-        if (sim->k_bend > 0.0) {
+        e += 0.5 * L->k_axial * (l - sim->l0) * (l - sim->l0);
+        if (L->k_bend > 0.0) {
             int b = i == 0 ? n - 1 : i - 1;
             double bx = sim->x[i] - sim->x[b], by = sim->y[i] - sim->y[b];
             double ax = sim->x[j] - sim->x[i], ay = sim->y[j] - sim->y[i];
             double th = atan2(bx * ay - by * ax, bx * ax + by * ay);
-            e += 0.5 * sim->k_bend * th * th;
+            e += 0.5 * L->k_bend * th * th;
         }
     }
     return e;
 }
 
-void bd_extremes_store(bd_sim *sim, const bd_extremes *x)
+/* gravity of belt and material (y = 0 the datum) and the elastic energy */
+double bd_lumped_potential(const bd_sim *sim)
 {
-    sim->step_tension_max = x->hi;
-    sim->step_tension_min = x->lo;
-    sim->step_element_max = x->ihi;
-    sim->step_element_min = x->ilo;
-    sim->step_tension_sum = x->sum;
+    double g = sim->gravity;
+    double e = 0.0;
+    for (int i = 0; i < sim->n; i++)
+        e += sim->mass[i] * g * sim->y[i];
+    return e + bd_lumped_elastic_energy(sim);
 }

@@ -2,7 +2,7 @@
  * output interval, a progress line on a terminal, and a clean stop on
  * divergence or SIGINT with everything written so far flushed and valid. */
 #include "io/outputs.h"
-#include "sim/system.h"
+#include "sim/engine.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -48,12 +48,9 @@ void bd_sim_report_events(bd_sim *sim)
             bd_sim_warn(sim, "takeup '%s' reached the end of its travel (%g m) at t = %.3f s%s",
                         p->def->name, p->limit_first_q, p->limit_first_t,
                         p->limit_hits > 1 ? " and again later" : "");
-        if (p->slack_warned)
-            bd_sim_warn(sim, "pulley '%s': a belt end lost its tension at t = %.3f s (%s side, "
-                        "%.0f N); the belt-pulley law (seed 004) holds only while both ends "
-                        "are in tension", p->def->name, p->slack_t,
-                        p->slack_arriving ? "arriving" : "leaving", p->slack_tension);
     }
+    if (sim->belt->report_events)
+        sim->belt->report_events(sim);
 }
 
 int bd_sim_run(bd_sim *sim, const bd_run_options *opt, char *err, size_t errlen)

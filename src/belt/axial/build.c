@@ -17,7 +17,9 @@
  * does for the discrete belt). Each element's unstretched length is set so
  * that it carries exactly that tension, which makes the start an exact
  * equilibrium of the discrete equations. */
-#include "sim/system.h"
+#include "belt/axial/axial.h"
+
+#include "base/alloc.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -52,7 +54,7 @@ static double overlap(double a, double b, double c, double d, double L, double *
 static void init_load(bd_sim *sim)
 {
     const bd_material_def *mat = &sim->def->material;
-    bd_axial *ax = &sim->ax;
+    bd_axial *ax = bd_axial_of(sim);
     if (!mat->present)
         return;
     double L = sim->path.length;
@@ -70,7 +72,7 @@ static void init_load(bd_sim *sim)
  * `full` all that can be loaded; 0 when empty */
 static int loaded_zone(const bd_sim *sim, int full, double *from, double *to)
 {
-    const bd_axial *ax = &sim->ax;
+    const bd_axial *ax = bd_axial_of(sim);
     double d0 = full ? 0.0 : ax->d_tail, d1 = full ? ax->load_len : ax->d_head;
     if (!sim->def->material.present || d1 <= d0)
         return 0;
@@ -158,8 +160,11 @@ static void alloc_arrays(bd_sim *sim)
 {
     size_t n = (size_t)sim->n;
     bd_alloc_node_arrays(sim);
-    double **d[] = {&sim->ax.u, &sim->ax.gap, &sim->ax.gap_rate, &sim->ax.k, &sim->ax.c,
-                    &sim->ax.l0, &sim->ax.s_len, &sim->ax.f_const, &sim->ax.resist};
+    bd_axial_of(sim)->pulleys = bd_xcalloc((size_t)sim->pulley_count,
+                                           sizeof *bd_axial_of(sim)->pulleys);
+    bd_axial *ax = bd_axial_of(sim);
+    double **d[] = {&ax->u,  &ax->gap,   &ax->gap_rate, &ax->k,     &ax->c,
+                    &ax->l0, &ax->s_len, &ax->f_const,  &ax->resist};
     for (size_t i = 0; i < sizeof d / sizeof d[0]; i++)
         *d[i] = bd_xcalloc(n, sizeof(double));
 }
@@ -190,7 +195,7 @@ static double weight_between(const bd_sim *sim, double a, double b)
 static void element_weights(bd_sim *sim, double *h1, double *h2)
 {
     for (int e = 0; e < sim->n; e++) {
-        double s0 = sim->s_node0[e], half = 0.5 * sim->ax.s_len[e];
+        double s0 = sim->s_node0[e], half = 0.5 * bd_axial_of(sim)->s_len[e];
         h1[e] = weight_between(sim, s0, s0 + half);
         h2[e] = weight_between(sim, s0 + half, s0 + 2.0 * half);
     }
@@ -206,19 +211,20 @@ static int tension_level(bd_sim *sim, const double *W_mid, double *Tc, bd_diag *
     *Tc = def->belt.initial_tension;
     for (int i = 0; i < sim->pulley_count; i++) {
         const bd_pulley_body *p = &sim->pulleys[i];
+        const bd_axial_pulley *ap = &bd_axial_of(sim)->pulleys[i];
         if (!p->movable)
             continue;
-        int e_out = p->node, e_in = (p->node + sim->n - 1) % sim->n;
+        int e_out = ap->node, e_in = (ap->node + sim->n - 1) % sim->n;
         double F = bd_table_eval(&p->def->takeup.force, 0.0);
         double pull = F - p->def->mass * sim->gravity * p->axis[1] + p->wrap_pull;
-        double denom = p->c_out - p->c_in;
+        double denom = ap->c_out - ap->c_in;
         if (fabs(denom) < 1e-6) {
             bd_diag_error(diag, def->source, p->def->takeup.mark,
                           "pulleys[%d] '%s': takeup axis is perpendicular to the belt's pull "
                           "on the pulley; it cannot set the tension", i, p->def->name);
             return 1;
         }
-        *Tc = -(pull + W_mid[e_out] * p->c_out - W_mid[e_in] * p->c_in) / denom;
+        *Tc = -(pull + W_mid[e_out] * ap->c_out - W_mid[e_in] * ap->c_in) / denom;
         return 0;
     }
     return 0;
@@ -228,25 +234,23 @@ static void setup_pulleys(bd_sim *sim, const int *pnode)
 {
     const bd_model_def *def = sim->def;
     const int np = def->pulley_count;
-    sim->pulley_count = np;
-    sim->pulleys = bd_xcalloc((size_t)np, sizeof *sim->pulleys);
     for (int i = 0; i < np; i++) {
         const bd_pulley_def *pd = &def->pulleys[i];
         bd_pulley_body *p = &sim->pulleys[i];
-        bd_pulley_body_init(sim, p, pd);
-        p->node = pnode[i];
+        bd_axial_pulley *ap = &bd_axial_of(sim)->pulleys[i];
+        ap->node = pnode[i];
         const bd_path_segment *arc = bd_path_arc(&sim->path, i);
-        p->law.f = pd->friction.mu_dynamic;
-        p->law.theta = bd_path_wrap_angle(&sim->path, i);
-        p->law.rho = sim->belt_mpl;
-        p->law.v_thr = pd->velocity_threshold;
-        p->law.f_thr = pd->force_threshold;
+        ap->law.f = pd->friction.mu_dynamic;
+        ap->law.theta = bd_path_wrap_angle(&sim->path, i);
+        ap->law.rho = sim->belt_mpl;
+        ap->law.v_thr = pd->velocity_threshold;
+        ap->law.f_thr = pd->force_threshold;
         if (pd->has_takeup) {
             const double *a = p->axis;
             const bd_path_segment *in = bd_path_span(&sim->path, (i + np - 1) % np);
             const bd_path_segment *out = bd_path_span(&sim->path, i);
-            p->c_in = in->dir[0] * a[0] + in->dir[1] * a[1];
-            p->c_out = out->dir[0] * a[0] + out->dir[1] * a[1];
+            ap->c_in = in->dir[0] * a[0] + in->dir[1] * a[1];
+            ap->c_out = out->dir[0] * a[0] + out->dir[1] * a[1];
             /* the wrapped belt hangs on the pulley: its weight along the
              * axis; and the belt pulls at the tangent points, where the
              * tension differs from its elements' (at their middles) by the
@@ -254,17 +258,17 @@ static void setup_pulleys(bd_sim *sim, const int *pnode)
             double m_wrap = sim->belt_mpl * arc->length
                           + sim->def->material.mass_per_length
                                 * loaded_length(sim, 0, arc->s0, arc->s0 + arc->length);
-            int n = sim->n, e_in = (p->node + n - 1) % n;
+            int n = sim->n, e_in = (ap->node + n - 1) % n;
             double L = sim->path.length;
-            double mid_in = sim->s_node0[e_in] + 0.5 * sim->ax.s_len[e_in];
-            double mid_out = sim->s_node0[p->node] + 0.5 * sim->ax.s_len[p->node];
+            double mid_in = sim->s_node0[e_in] + 0.5 * bd_axial_of(sim)->s_len[e_in];
+            double mid_out = sim->s_node0[ap->node] + 0.5 * bd_axial_of(sim)->s_len[ap->node];
             double a0 = arc->s0, a1 = arc->s0 + arc->length;
             /* unwrap the arc next to the node */
-            while (a0 - sim->s_node0[p->node] > 0.5 * L) {
+            while (a0 - sim->s_node0[ap->node] > 0.5 * L) {
                 a0 -= L;
                 a1 -= L;
             }
-            while (sim->s_node0[p->node] - a0 > 0.5 * L) {
+            while (sim->s_node0[ap->node] - a0 > 0.5 * L) {
                 a0 += L;
                 a1 += L;
             }
@@ -274,7 +278,7 @@ static void setup_pulleys(bd_sim *sim, const int *pnode)
                 mid_out += L;
             double w_in = weight_between(sim, mid_in, a0);    /* T(a0) = T_in + w_in */
             double w_out = weight_between(sim, a1, mid_out);  /* T(a1) = T_out − w_out */
-            p->wrap_pull = -m_wrap * sim->gravity * a[1] - w_out * p->c_out - w_in * p->c_in;
+            p->wrap_pull = -m_wrap * sim->gravity * a[1] - w_out * ap->c_out - w_in * ap->c_in;
         }
     }
 }
@@ -283,8 +287,8 @@ static void setup_pulleys(bd_sim *sim, const int *pnode)
 static void node_range(const bd_sim *sim, int i, double *a, double *z)
 {
     int b = i == 0 ? sim->n - 1 : i - 1;
-    *a = sim->s_node0[i] - 0.5 * sim->ax.s_len[b];
-    *z = sim->s_node0[i] + 0.5 * sim->ax.s_len[i];
+    *a = sim->s_node0[i] - 0.5 * bd_axial_of(sim)->s_len[b];
+    *z = sim->s_node0[i] + 0.5 * bd_axial_of(sim)->s_len[i];
 }
 
 /* idlers: rotating mass I/r² spread along their span */
@@ -348,11 +352,11 @@ void bd_axial_node_load(bd_sim *sim, int i)
     sim->mass[i] += m - sim->material[i];
     sim->material[i] = m;
     /* the same halves as element_weights */
-    double sb = sim->s_node0[b], hb = 0.5 * sim->ax.s_len[b];
-    double si = sim->s_node0[i], hi = 0.5 * sim->ax.s_len[i];
-    sim->ax.f_const[i] = -(weight_between(sim, sb + hb, sb + 2.0 * hb)
+    double sb = sim->s_node0[b], hb = 0.5 * bd_axial_of(sim)->s_len[b];
+    double si = sim->s_node0[i], hi = 0.5 * bd_axial_of(sim)->s_len[i];
+    bd_axial_of(sim)->f_const[i] = -(weight_between(sim, sb + hb, sb + 2.0 * hb)
                            + weight_between(sim, si, si + hi));
-    sim->ax.resist[i] = node_resist(sim, i, 0);
+    bd_axial_of(sim)->resist[i] = node_resist(sim, i, 0);
 }
 
 int bd_axial_build(bd_sim *sim, bd_diag *diag)
@@ -360,6 +364,7 @@ int bd_axial_build(bd_sim *sim, bd_diag *diag)
     const bd_model_def *def = sim->def;
     if (bd_path_build(def, &sim->path, diag))
         return 1;
+    sim->belt_data = bd_xcalloc(1, sizeof(bd_axial));
     double target = def->belt.element_length > 0.0 ? def->belt.element_length : 1.0;
     int *pnode;
     place_stations(sim, target, &pnode);
@@ -369,7 +374,7 @@ int bd_axial_build(bd_sim *sim, bd_diag *diag)
     for (int e = 0; e < n; e++) {
         int j = e + 1 == n ? 0 : e + 1;
         double ds = sim->s_node0[j] - sim->s_node0[e];
-        sim->ax.s_len[e] = ds > 0.0 ? ds : ds + L;
+        bd_axial_of(sim)->s_len[e] = ds > 0.0 ? ds : ds + L;
     }
     init_load(sim);
     setup_pulleys(sim, pnode);
@@ -380,10 +385,11 @@ int bd_axial_build(bd_sim *sim, bd_diag *diag)
     double *h1 = bd_xcalloc((size_t)n, sizeof *h1), *h2 = bd_xcalloc((size_t)n, sizeof *h2);
     double *W_mid = bd_xcalloc((size_t)n, sizeof *W_mid);
     element_weights(sim, h1, h2);
-    int origin = sim->pulleys[0].node;
+    const bd_axial_pulley *ap = bd_axial_of(sim)->pulleys;
+    int origin = ap[0].node;
     for (int i = 0; i < sim->pulley_count; i++)
         if (def->pulleys[i].has_drive) {
-            origin = sim->pulleys[i].node;
+            origin = ap[i].node;
             break;
         }
     double W = 0.0;
@@ -403,17 +409,16 @@ int bd_axial_build(bd_sim *sim, bd_diag *diag)
     double EA = sim->EA, zeta = def->belt.damping_ratio, l0_sum = 0.0;
     for (int e = 0; e < n; e++) {
         double T = rest ? 0.0 : Tc + W_mid[e];
-        double l0 = sim->ax.s_len[e] / (1.0 + T / EA);
-        sim->ax.l0[e] = l0;
-        sim->ax.gap[e] = sim->ax.s_len[e] - l0;
-        sim->ax.k[e] = EA / l0;
+        double l0 = bd_axial_of(sim)->s_len[e] / (1.0 + T / EA);
+        bd_axial_of(sim)->l0[e] = l0;
+        bd_axial_of(sim)->gap[e] = bd_axial_of(sim)->s_len[e] - l0;
+        bd_axial_of(sim)->k[e] = EA / l0;
         /* seed 001 eq 4.3 per element: c = 2ζ·√(k·m_e) */
-        sim->ax.c[e] = 2.0 * zeta * sqrt(sim->ax.k[e] * sim->belt_mpl * l0);
+        bd_axial_of(sim)->c[e] = 2.0 * zeta * sqrt(bd_axial_of(sim)->k[e] * sim->belt_mpl * l0);
         sim->tension[e] = T;
         l0_sum += l0;
     }
     sim->l0 = l0_sum / n;
-    sim->k_axial = EA / sim->l0;
 
     free(h1);
     free(h2);
@@ -431,28 +436,21 @@ int bd_axial_build(bd_sim *sim, bd_diag *diag)
     spread_idlers(sim);
     /* the lightest node carries no material: load leaving a node never
      * takes it below this, and the stable step is taken with it */
-    sim->ax.min_mass = INFINITY;
+    bd_axial_of(sim)->min_mass = INFINITY;
     for (int i = 0; i < n; i++) {
-        if (sim->mass[i] < sim->ax.min_mass)
-            sim->ax.min_mass = sim->mass[i];
+        if (sim->mass[i] < bd_axial_of(sim)->min_mass)
+            bd_axial_of(sim)->min_mass = sim->mass[i];
         bd_axial_node_load(sim, i);
-    }
-    for (int e = 0; e < n; e++) {
-        int j = e + 1 == n ? 0 : e + 1;
-        double dx = sim->x[j] - sim->x[e], dy = sim->y[j] - sim->y[e];
-        sim->len[e] = hypot(dx, dy);
-        sim->ux[e] = sim->len[e] > 0.0 ? dx / sim->len[e] : 1.0;
-        sim->uy[e] = sim->len[e] > 0.0 ? dy / sim->len[e] : 0.0;
     }
 
     bd_setup_probes_and_feed(sim);
-    sim->ax.feed_node = -1;
+    bd_axial_of(sim)->feed_node = -1;
     if (def->material.present) {
         if (sim->has_feed)
-            sim->ax.feed_node = sim->feed.gamma < 0.5 ? sim->feed.element
+            bd_axial_of(sim)->feed_node = sim->feed.gamma < 0.5 ? sim->feed.element
                                                       : (sim->feed.element + 1) % n;
-        sim->ax.e_tail = sim->feed.element;
-        sim->ax.e_head = sim->feed.element;
+        bd_axial_of(sim)->e_tail = sim->feed.element;
+        bd_axial_of(sim)->e_head = sim->feed.element;
     }
     return 0;
 }
@@ -470,10 +468,11 @@ static double mode_step(double K, double C, double m)
     return 2.0 / w * (sqrt(1.0 + z * z) - z);
 }
 
-double bd_axial_stable_step(const bd_sim *sim)
+double bd_axial_stable_step(const bd_sim *sim, bd_time_step_limit *limit)
 {
+    *limit = BD_LIMIT_AXIAL;
     const int n = sim->n;
-    const bd_axial *ax = &sim->ax;
+    const bd_axial *ax = bd_axial_of(sim);
     double dt = INFINITY;
     for (int i = 0; i < n; i++) {
         int b = i == 0 ? n - 1 : i - 1;
@@ -481,14 +480,14 @@ double bd_axial_stable_step(const bd_sim *sim)
         /* the rolling resistance's slope with the most load the node can carry */
         double C = 2.0 * (ax->c[b] + ax->c[i]) + node_resist(sim, i, 1) / BD_AXIAL_ROLLING_SPEED;
         for (int p = 0; p < sim->pulley_count; p++) {
-            const bd_pulley_body *pb = &sim->pulleys[p];
-            if (!pb->movable)
+            const bd_axial_pulley *ap = &ax->pulleys[p];
+            if (!sim->pulleys[p].movable)
                 continue;
-            int e_in = (pb->node + n - 1) % n;
+            int e_in = (ap->node + n - 1) % n;
             if (i == e_in || i == (e_in + 1) % n)
-                K += ax->k[e_in] * fabs(pb->c_in);
-            if (i == pb->node || i == (pb->node + 1) % n)
-                K += ax->k[pb->node] * fabs(pb->c_out);
+                K += ax->k[e_in] * fabs(ap->c_in);
+            if (i == ap->node || i == (ap->node + 1) % n)
+                K += ax->k[ap->node] * fabs(ap->c_out);
         }
         double d = mode_step(K, C, sim->mass[i] - sim->material[i]);
         if (d < dt)
@@ -496,11 +495,12 @@ double bd_axial_stable_step(const bd_sim *sim)
     }
     for (int p = 0; p < sim->pulley_count; p++) {
         const bd_pulley_body *pb = &sim->pulleys[p];
+        const bd_axial_pulley *ap = &ax->pulleys[p];
         if (!pb->movable)
             continue;
-        double ki = ax->k[(pb->node + n - 1) % n], ko = ax->k[pb->node];
-        double K = ki * (pb->c_in * pb->c_in + 2.0 * fabs(pb->c_in))
-                 + ko * (pb->c_out * pb->c_out + 2.0 * fabs(pb->c_out));
+        double ki = ax->k[(ap->node + n - 1) % n], ko = ax->k[ap->node];
+        double K = ki * (ap->c_in * ap->c_in + 2.0 * fabs(ap->c_in))
+                 + ko * (ap->c_out * ap->c_out + 2.0 * fabs(ap->c_out));
         double d = mode_step(K, 0.0, pb->carriage_mass);
         if (d < dt)
             dt = d;
@@ -510,7 +510,9 @@ double bd_axial_stable_step(const bd_sim *sim)
 
 void bd_axial_free(bd_sim *sim)
 {
-    bd_axial *ax = &sim->ax;
+    bd_axial *ax = bd_axial_of(sim);
+    if (!ax)
+        return;
     free(ax->u);
     free(ax->gap);
     free(ax->gap_rate);
@@ -520,5 +522,21 @@ void bd_axial_free(bd_sim *sim)
     free(ax->s_len);
     free(ax->f_const);
     free(ax->resist);
-    memset(ax, 0, sizeof *ax);
+    free(ax->pulleys);
+    free(ax);
+    sim->belt_data = NULL;
+}
+
+/* a point fixed on the path: its place between the two stations around
+ * it, which stay where they are */
+void bd_axial_point_init(const bd_sim *sim, bd_tracker *tr, double s)
+{
+    bd_belt_point_place(sim, tr, s);
+    int lo = tr->element;
+    double rel = tr->s - sim->s_node0[lo];
+    if (rel < 0.0) {
+        tr->element = sim->n - 1;
+        rel = tr->s + sim->path.length - sim->s_node0[sim->n - 1];
+    }
+    tr->gamma = rel / bd_axial_of(sim)->s_len[tr->element];
 }

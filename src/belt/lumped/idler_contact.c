@@ -31,7 +31,7 @@
  *   f = [v_r/Δt + (1−γ)·t̂·F_e/m_e + γ·t̂·F_j/m_j] / [(1−γ)²/m_e + γ²/m_j + R²/I]
  * (eq 4.114 rearranged; the idler has no other torque). |f| > μ_s·f_n slips
  * with ±μ_d·f_n (eqs 4.116–4.117). */
-#include "sim/system.h"
+#include "belt/lumped/lumped.h"
 
 #include <math.h>
 
@@ -41,7 +41,7 @@
 /* predictive contact gap, as a fraction of the element length */
 #define IDLER_CONTACT_GAP 0.02
 
-void bd_idler_contact(bd_sim *sim, bd_idler *id)
+static void idler_contact(bd_sim *sim, bd_idler *id)
 {
     bd_tracker_update(sim, &id->tr);
     id->alpha = 0.0;
@@ -111,4 +111,11 @@ void bd_idler_contact(bd_sim *sim, bd_idler *id)
     sim->fny[j] -= g * f * ty;
     id->torque = f * R;
     id->alpha = id->torque / id->inertia;
+}
+
+/* the supports phase: every idler, after the wraps */
+void bd_lumped_idlers(bd_sim *sim)
+{
+    for (int i = 0; i < sim->idler_count; i++)
+        idler_contact(sim, &sim->idlers[i]);
 }

@@ -1,0 +1,80 @@
+/* The axial (1D) belt (docs/physics.md §11): nodes are stations fixed on
+ * the path; each carries the belt's displacement u along the path (vx
+ * holds its velocity, fx its force; vy, fy stay 0). Element e joins node e
+ * to e+1. Pulleys act on one node each through the seed-004 law. Its data
+ * behind sim->belt_data and the functions its files share. */
+#ifndef BD_AXIAL_H
+#define BD_AXIAL_H
+
+#include "belt/belt.h"
+#include "laws/belt_pulley_law.h"
+
+/* m/s: the axial belt's rolling resistance fades to zero below this speed
+ * (as the discrete idlers' does, belt/lumped/idler_contact.c) */
+#define BD_AXIAL_ROLLING_SPEED 0.01
+
+/* what the axial belt keeps of each pulley */
+typedef struct bd_axial_pulley {
+    int node;               /* build: the belt node on its wrap */
+    double c_in, c_out;     /* build: u_in·a, u_out·a: spans along the takeup axis */
+    bd_bpl law;             /* build: seed-004 law of its wrap */
+    double belt_force;      /* step: N, its friction force on the belt */
+    int slack_warned;       /* stats: a belt end lost tension (recorded once) */
+    int slack_arriving;     /* it was the arriving end */
+    double slack_t;         /* s, when */
+    double slack_tension;   /* N, its tension then */
+} bd_axial_pulley;
+
+typedef struct bd_axial {
+    double *u;          /* [n] step: m displacement along the path */
+    double *gap;        /* [n] m, l − l0 of element e at u = 0 (with takeup travel) */
+    double *gap_rate;   /* [n] m/s its rate (takeup motion), 0 elsewhere */
+    double *k;          /* [n] build: N/m, EA/l0 of element e */
+    double *c;          /* [n] build: N·s/m, its dashpot */
+    double *l0;         /* [n] build: m, its unstretched length */
+    double *s_len;      /* [n] build: m, its length along the initial path */
+    double *f_const;    /* [n] N, gravity along the path on node i (material phase) */
+    double *resist;     /* [n] N, rolling resistance on node i at speed (material) */
+    bd_axial_pulley *pulleys;   /* [pulley_count] */
+    int feed_node;      /* node at the feed point, -1 = none */
+    double min_mass;    /* kg, lightest node without material */
+    /* the loaded region [s_feed + d_tail, s_feed + d_head] along the path
+     * (docs/physics.md §11): a free front rides with the belt, a pinned one
+     * stays at the feed point (tail, while feeding) or the discharge (head) */
+    double s_feed;      /* m, path coordinate of the feed point */
+    double load_len;    /* m, feed point → discharge pulley */
+    double d_tail, d_head; /* m from the feed point, 0 ≤ d_tail ≤ d_head ≤ load_len */
+    int tail_free, head_free;
+    int e_tail, e_head; /* element holding each front (a search hint) */
+} bd_axial;
+
+static inline bd_axial *bd_axial_of(const bd_sim *sim)
+{
+    return (bd_axial *)sim->belt_data;
+}
+
+static inline bd_axial_pulley *bd_axial_pulley_of(const bd_sim *sim, const bd_pulley_body *p)
+{
+    return &bd_axial_of(sim)->pulleys[p - sim->pulleys];
+}
+
+/* build.c */
+int bd_axial_build(bd_sim *sim, bd_diag *diag);
+void bd_axial_free(bd_sim *sim);
+double bd_axial_stable_step(const bd_sim *sim, bd_time_step_limit *limit);
+/* node i's material, mass, gravity along the path and rolling resistance
+ * for the loaded region (build.c) */
+void bd_axial_node_load(bd_sim *sim, int i);
+void bd_axial_point_init(const bd_sim *sim, bd_tracker *tr, double s);
+
+/* step.c */
+void bd_axial_forces(bd_sim *sim);
+void bd_axial_wrap(bd_sim *sim, bd_pulley_body *p, double external_torque);
+void bd_axial_integrate(bd_sim *sim, double *ke, double *w_nc);
+void bd_axial_takeup_geometry(bd_sim *sim);
+void bd_axial_material(bd_sim *sim);
+double bd_axial_potential(const bd_sim *sim);
+double bd_axial_elastic_energy(const bd_sim *sim);
+void bd_axial_report_events(bd_sim *sim);
+
+#endif

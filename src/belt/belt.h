@@ -1,0 +1,98 @@
+/* The belt-formulation interface: what the one step loop (sim/step.c) asks
+ * of a belt, whichever it is. Each formulation lives in a folder of its own
+ * below src/belt/ and fills one bd_belt_ops table (as SUNDIALS' stepper
+ * modules do); bd_belt_ops_for picks it from the model. Adding a
+ * formulation: docs/architecture.md.
+ *
+ * The step loop calls, in this order, every step:
+ *   forces     → the belt's own forces at t (elements, bending, gravity,
+ *                distributed loads) into fx/fnx, and the element tensions
+ *                with their extremes (bd_extremes_store)
+ *   wrap       → at each pulley, after the parts' torques: the belt–pulley
+ *                coupling, its forces on the belt, and what the pulley feels
+ *                (p->alpha, torque_friction, f_axis, fnc_axis)
+ *   supports   → contacts after the wraps (idlers); may be NULL
+ *   integrate  → nodes to t + Δt, adding their kinetic energy (at mid step)
+ *                and the work of the non-conservative forces
+ *   after_parts→ what follows the pulleys' and carriages' motion (a takeup
+ *                changing element lengths); may be NULL
+ *   material   → material lands, rides and leaves
+ * and its sensors read the belt only through point_update and sample. */
+#ifndef BD_BELT_H
+#define BD_BELT_H
+
+#include "model/system.h"
+
+/* what a sensor reads at a point of the belt */
+typedef struct bd_belt_sample {
+    double tension;   /* N, interpolated between element midpoints */
+    double speed;     /* m/s along the direction of travel */
+} bd_belt_sample;
+
+typedef struct bd_belt_ops {
+    const char *name;          /* as model-format.md `belt.formulation` */
+    const char *description;   /* for `beltdyn check` */
+    int node_dof;              /* degrees of freedom per node */
+    const char *dof_text;      /* how `check` counts the degrees of freedom */
+
+    /* build the belt on the model's path: nodes, elements, the parts'
+     * coupling data, probes and feed point; 0 ok, else problems in diag */
+    int (*build)(bd_sim *sim, bd_diag *diag);
+    void (*free)(bd_sim *sim);
+    /* largest stable time step, and what limits it */
+    double (*stable_step)(const bd_sim *sim, bd_time_step_limit *limit);
+
+    /* the step's phases (see above) */
+    void (*forces)(bd_sim *sim);
+    void (*wrap)(bd_sim *sim, bd_pulley_body *p, double external_torque);
+    void (*supports)(bd_sim *sim);
+    void (*integrate)(bd_sim *sim, double *ke, double *w_nc);
+    void (*after_parts)(bd_sim *sim);
+    void (*material)(bd_sim *sim);
+
+    /* energy: the belt's potential (elastic, gravity of belt and load),
+     * the elastic energy alone, and what the wrap of pulley p stores */
+    double (*potential)(const bd_sim *sim);
+    double (*elastic_energy)(const bd_sim *sim);
+    double (*wrap_energy)(const bd_sim *sim, const bd_pulley_body *p);
+    /* J += the supports' inertia reflected to a pulley of radius R */
+    double (*support_inertia)(const bd_sim *sim, double R, double J);
+
+    /* sensors: a point fixed on the path at s, kept current; the belt there */
+    void (*point_init)(const bd_sim *sim, bd_tracker *tr, double s);
+    void (*point_update)(const bd_sim *sim, bd_tracker *tr);
+    void (*sample)(const bd_sim *sim, const bd_tracker *tr, bd_belt_sample *out);
+    /* the tension field: element e's midpoint path coordinate (Eulerian),
+     * its speed along the belt, its strain */
+    double (*element_s)(const bd_sim *sim, int e);
+    double (*element_speed)(const bd_sim *sim, int e);
+    double (*element_strain)(const bd_sim *sim, int e);
+
+    /* events the formulation recorded in the step, said after the run */
+    void (*report_events)(bd_sim *sim);
+} bd_belt_ops;
+
+const bd_belt_ops *bd_belt_ops_for(bd_formulation f);
+
+/* the formulations (one folder each) */
+extern const bd_belt_ops bd_lumped_ops;   /* belt/lumped: seed 001 */
+extern const bd_belt_ops bd_axial_ops;    /* belt/axial: seed 004 */
+
+/* shared by the formulations' builds (belt/common.c) */
+/* the per-node and per-element arrays of system.h, zeroed (s_node0 is
+ * each builder's own) */
+void bd_alloc_node_arrays(bd_sim *sim);
+/* probes and the feed point: points fixed on the path */
+void bd_setup_probes_and_feed(bd_sim *sim);
+/* idlers of set k that fit its span evenly (0 on a vertical span, with a
+ * warning) and their actual spacing */
+int bd_idler_set_layout(bd_sim *sim, int k, double *spacing);
+/* a point fixed on the path at s (taken modulo the loop): its place and
+ * direction, and the node with the largest initial s not beyond it in
+ * tr->element (the formulation's point_init then finds the element) */
+void bd_belt_point_place(const bd_sim *sim, bd_tracker *tr, double s);
+/* tension at a point: element tensions belong to element midpoints,
+ * interpolated linearly between the two nearest */
+double bd_belt_point_tension(const bd_sim *sim, const bd_tracker *tr);
+
+#endif

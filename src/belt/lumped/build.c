@@ -1,0 +1,337 @@
+/* Building the lumped belt from a validated model: discretize the belt,
+ * lay it at rest on its path, place the idlers, set up the pulleys' shell
+ * contacts, probes and feed point. Everything allocated here; the step
+ * loop allocates nothing. */
+#include "belt/lumped/lumped.h"
+#include "belt/lumped/layout.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/alloc.h"
+#include "base/constants.h"
+
+/* default target element length: chord of a 30° arc of the smallest pulley
+ * (seed 001 §4.3.1, §6.1) */
+static double default_element_length(const bd_model_def *def)
+{
+    double r = INFINITY;
+    for (int i = 0; i < def->pulley_count; i++)
+        if (def->pulleys[i].radius < r)
+            r = def->pulleys[i].radius;
+    return 2.0 * r * sin(BD_PI / 12.0);
+}
+
+static void setup_pulleys(bd_sim *sim, const bd_layout *lay)
+{
+    const bd_model_def *def = sim->def;
+    bd_lumped *L = bd_lumped_of(sim);
+    L->wraps = bd_xcalloc((size_t)def->pulley_count, sizeof *L->wraps);
+    for (int i = 0; i < def->pulley_count; i++) {
+        const bd_pulley_def *pd = &def->pulleys[i];
+        bd_pulley_body *p = &sim->pulleys[i];
+        bd_wrap_contact *W = &L->wraps[i];
+        if (i == lay->takeup) {
+            p->cx += lay->takeup_shift * p->axis[0];
+            p->cy += lay->takeup_shift * p->axis[1];
+        }
+        /* contact: stiff and linearly implicit (pulley_contact.c) */
+        W->k_contact = 100.0 * L->k_axial;
+        double wrap = bd_path_wrap_angle(&sim->path, i);
+        W->win_max = (int)ceil((wrap + 0.5) * pd->radius / sim->l0) + 16;
+        W->c_node = bd_xcalloc((size_t)W->win_max, sizeof *W->c_node);
+        W->c_normal = bd_xcalloc((size_t)W->win_max, sizeof *W->c_normal);
+        W->c_tx = bd_xcalloc((size_t)W->win_max, sizeof *W->c_tx);
+        W->c_ty = bd_xcalloc((size_t)W->win_max, sizeof *W->c_ty);
+        W->c_f = bd_xcalloc((size_t)W->win_max, sizeof *W->c_f);
+        W->c_slip = bd_xcalloc((size_t)W->win_max, sizeof *W->c_slip);
+        /* window: nodes lying on its arc */
+        const bd_path_segment *arc = bd_path_arc(&sim->path, i);
+        int first = -1, count = 0;
+        for (int k = 0; k < sim->n; k++) {
+            double rel = sim->s_node0[k] - arc->s0;
+            if (rel >= -1e-9 * sim->path.length && rel <= arc->length + 1e-9) {
+                if (first < 0)
+                    first = k;
+                count++;
+            }
+        }
+        W->win_first = first < 0 ? 0 : first;
+        W->win_count = count;
+    }
+}
+
+static void setup_idlers(bd_sim *sim)
+{
+    const bd_model_def *def = sim->def;
+    int total = 0;
+    sim->idlers_per_set = bd_xcalloc((size_t)def->idler_set_count, sizeof *sim->idlers_per_set);
+    sim->idler_spacing = bd_xcalloc((size_t)def->idler_set_count, sizeof *sim->idler_spacing);
+    for (int k = 0; k < def->idler_set_count; k++)
+        total += bd_idler_set_layout(sim, k, &sim->idler_spacing[k]);
+    sim->idler_count = total;
+    sim->idlers = bd_xcalloc((size_t)total, sizeof *sim->idlers);
+    int at = 0;
+    for (int k = 0; k < def->idler_set_count; k++) {
+        const bd_idler_set_def *set = &def->idler_sets[k];
+        const bd_path_segment *sp = bd_path_span(&sim->path, set->span);
+        /* the lower side of the belt: the normal pointing down */
+        double nx = sp->dir[1], ny = -sp->dir[0];
+        if (ny > 0.0) {
+            nx = -nx;
+            ny = -ny;
+        }
+        for (int j = 0; j < sim->idlers_per_set[k]; j++) {
+            bd_idler *id = &sim->idlers[at++];
+            double s = sp->s0 + (j + 1) * sim->idler_spacing[k];
+            bd_tracker_init(sim, &id->tr, s);
+            /* touch the belt as laid (not the ideal path): no initial kick */
+            int e = id->tr.element, e1 = e + 1 == sim->n ? 0 : e + 1;
+            double g = id->tr.gamma;
+            id->tr.p[0] = sim->x[e] + g * (sim->x[e1] - sim->x[e]);
+            id->tr.p[1] = sim->y[e] + g * (sim->y[e1] - sim->y[e]);
+            id->radius = set->radius;
+            id->centre[0] = id->tr.p[0] + nx * set->radius;
+            id->centre[1] = id->tr.p[1] + ny * set->radius;
+            id->inertia = set->inertia > 0.0 ? set->inertia : 1e-6;
+            id->mu_s = set->friction.mu_static;
+            id->mu_d = set->friction.mu_dynamic;
+            id->rolling = set->rolling_resistance;
+            /* stiff, linearly implicit contact (idler_contact.c) */
+            id->k_contact = 100.0 * bd_lumped_of(sim)->k_axial;
+            id->set = k;
+        }
+    }
+}
+
+/* A chain of straight elements cannot follow a wrap up to its tangent point
+ * unless a node falls exactly there: the element that straddles the tangent
+ * cuts the corner and kinks the first free node of the span, which then has
+ * nothing to hold it. The chain's own equilibrium shape wraps the pulley
+ * with nodes on the shell and leaves it from a node just past the tangent
+ * point: put each span's end nodes (the ones next to a wrap) onto the shell
+ * and lay the nodes between on the straight line joining them, at the same
+ * fractions along the span. */
+/* put node k onto pulley pb's shell at chord distance |x_k − x_ref| from
+ * the wrap node ref, turning in the sense `sense` (±1) from ref: the
+ * element between them keeps its length */
+static void onto_shell(bd_sim *sim, const bd_pulley_body *pb, int ref, int k, double sense)
+{
+    double c = hypot(sim->x[k] - sim->x[ref], sim->y[k] - sim->y[ref]);
+    if (c >= 2.0 * pb->radius)
+        return;
+    double a = atan2(sim->y[ref] - pb->cy, sim->x[ref] - pb->cx)
+             + sense * 2.0 * asin(c / (2.0 * pb->radius));
+    sim->x[k] = pb->cx + pb->radius * cos(a);
+    sim->y[k] = pb->cy + pb->radius * sin(a);
+}
+
+static void straighten_spans(bd_sim *sim)
+{
+    const int n = sim->n;
+    for (int i = 0; i < n; i++) {
+        int prev = i == 0 ? n - 1 : i - 1;
+        const bd_path_segment *g = &sim->path.segments[bd_lumped_of(sim)->seg_hint[i]];
+        const bd_path_segment *gp = &sim->path.segments[bd_lumped_of(sim)->seg_hint[prev]];
+        if (g->kind != BD_SEGMENT_SPAN || gp->kind != BD_SEGMENT_ARC)
+            continue;
+        /* i is the first node of a span after a wrap; find its last node */
+        int last = i, count = 1;
+        while (count < n && bd_lumped_of(sim)->seg_hint[(last + 1) % n] == bd_lumped_of(sim)->seg_hint[i]) {
+            last = (last + 1) % n;
+            count++;
+        }
+        const bd_path_segment *gn = &sim->path.segments[bd_lumped_of(sim)->seg_hint[(last + 1) % n]];
+        if (gn->kind != BD_SEGMENT_ARC || count < 1)
+            continue;
+        /* the departure node: the span's first node if it is within half an
+         * element of the tangent point (then on the shell), else the last
+         * node of the wrap; likewise the arrival node */
+        int a = prev, b = (last + 1) % n;
+        if (sim->s_node0[i] - g->s0 < 0.5 * sim->l0) {
+            onto_shell(sim, &sim->pulleys[gp->pulley], prev, i, sim->pulleys[gp->pulley].wrap);
+            a = i;
+        }
+        if (g->s0 + g->length - sim->s_node0[last] < 0.5 * sim->l0 && last != a) {
+            onto_shell(sim, &sim->pulleys[gn->pulley], (last + 1) % n, last,
+                       -sim->pulleys[gn->pulley].wrap);
+            b = last;
+        }
+        double ax = sim->x[a], ay = sim->y[a], bx = sim->x[b], by = sim->y[b];
+        double sa = sim->s_node0[a], sb = sim->s_node0[b];
+        if (sb < sa)
+            sb += sim->path.length;
+        for (int j = (a + 1) % n; j != b; j = (j + 1) % n) {
+            double sj = sim->s_node0[j] < sa ? sim->s_node0[j] + sim->path.length
+                                             : sim->s_node0[j];
+            double f = (sj - sa) / (sb - sa);
+            sim->x[j] = ax + f * (bx - ax);
+            sim->y[j] = ay + f * (by - ay);
+        }
+    }
+}
+
+/* place nodes on the laid path. A node on or at the edge of a wrap is held
+ * by its pulley against the pull of its two elements, |T_b·u_b − T_a·u_a|
+ * (the kink force); push it into the pulley by the penetration that makes
+ * the contact carry exactly that, so the initial state is in equilibrium */
+static void place_nodes(bd_sim *sim, const bd_layout *lay)
+{
+    const int n = sim->n;
+    for (int i = 0; i < n; i++) {
+        double p[2], t[2];
+        bd_path_point(&sim->path, lay->s[i], p, t);
+        sim->x[i] = p[0];
+        sim->y[i] = p[1];
+        sim->s_node0[i] = lay->s[i];
+        bd_lumped_of(sim)->seg_hint[i] = bd_path_segment_at(&sim->path, lay->s[i]);
+        sim->mass[i] = sim->belt_mpl * sim->l0;
+    }
+    straighten_spans(sim);
+    for (int i = 0; i < n; i++) {
+        int b = i == 0 ? n - 1 : i - 1, a = i + 1 == n ? 0 : i + 1;
+        double ubx = sim->x[i] - sim->x[b], uby = sim->y[i] - sim->y[b];
+        double uax = sim->x[a] - sim->x[i], uay = sim->y[a] - sim->y[i];
+        double lb = hypot(ubx, uby), la = hypot(uax, uay);
+        double kx = lay->tension[i] * uax / la - lay->tension[b] * ubx / lb;
+        double ky = lay->tension[i] * uay / la - lay->tension[b] * uby / lb;
+        for (int k = 0; k < sim->pulley_count; k++) {
+            const bd_pulley_body *pb = &sim->pulleys[k];
+            double rx = sim->x[i] - pb->cx, ry = sim->y[i] - pb->cy;
+            double r = hypot(rx, ry);
+            if (r > pb->radius * (1.0 + 1e-9))
+                continue;
+            double inward = -(kx * rx + ky * ry) / r;   /* pull towards the centre */
+            double depth = inward > 0.0 ? inward / bd_lumped_of(sim)->wraps[k].k_contact : 0.0;
+            double target = pb->radius - depth;
+            sim->x[i] = pb->cx + rx * target / r;
+            sim->y[i] = pb->cy + ry * target / r;
+        }
+    }
+}
+
+/* initial material: nodes from the feed point to the discharge pulley */
+static void load_material(bd_sim *sim)
+{
+    const bd_material_def *mat = &sim->def->material;
+    if (!mat->present || !mat->initially_loaded)
+        return;
+    double L = sim->path.length;
+    double s_feed = bd_path_span_s(&sim->path, mat->feed_span, mat->feed_at);
+    double s_dis = bd_path_arc(&sim->path, mat->discharge)->s0;
+    double len = fmod(s_dis - s_feed + 2.0 * L, L);
+    for (int i = 0; i < sim->n; i++) {
+        double rel = fmod(sim->s_node0[i] - s_feed + 2.0 * L, L);
+        if (rel <= len) {
+            sim->material[i] = mat->mass_per_length * sim->l0;
+            sim->mass[i] += sim->material[i];
+        }
+    }
+}
+
+int bd_lumped_build(bd_sim *sim, bd_diag *diag)
+{
+    const bd_model_def *def = sim->def;
+    bd_path given;
+    if (bd_path_build(def, &given, diag))
+        return 1;
+    bd_lumped *L = bd_xcalloc(1, sizeof *L);
+    sim->belt_data = L;
+    double target = def->belt.element_length > 0.0 ? def->belt.element_length
+                                                   : default_element_length(def);
+    bd_layout lay;
+    char err[512];
+    bd_layout_request req = {&given, target};
+    if (bd_layout_belt(def, &req, &lay, err, sizeof err)) {
+        bd_diag_error(diag, def->source, def->belt.mark, "%s", err);
+        bd_path_free(&given);
+        return 1;
+    }
+    bd_path_free(&given);
+    sim->path = lay.path;
+    lay.path.segments = NULL;
+    sim->n = lay.n;
+    sim->l0 = lay.l0;
+    L->k_axial = sim->EA / sim->l0;
+    double m_el = sim->belt_mpl * sim->l0;
+    /* seed 001 eq 4.3: c = 2·m·ζ·√(k/m) with m the element mass */
+    L->c_axial = 2.0 * def->belt.damping_ratio * sqrt(L->k_axial * m_el);
+    /* seed 001 eq 4.11: k_θ = EI/l */
+    L->k_bend = sim->EI / sim->l0;
+
+    bd_alloc_node_arrays(sim);
+    size_t n = (size_t)sim->n;
+    L->ux = bd_xcalloc(n, sizeof *L->ux);
+    L->uy = bd_xcalloc(n, sizeof *L->uy);
+    L->len = bd_xcalloc(n, sizeof *L->len);
+    L->seg_hint = bd_xcalloc(n, sizeof *L->seg_hint);
+    sim->s_node0 = bd_xcalloc(n, sizeof *sim->s_node0);
+    for (int i = 0; i < sim->n; i++)
+        sim->s_node0[i] = lay.s[i];
+    setup_pulleys(sim, &lay);
+    place_nodes(sim, &lay);
+    for (int i = 0; i < sim->n; i++)
+        sim->tension[i] = lay.tension[i];
+    bd_layout_free(&lay);
+    load_material(sim);
+    setup_idlers(sim);
+    bd_setup_probes_and_feed(sim);
+    return 0;
+}
+
+void bd_lumped_free(bd_sim *sim)
+{
+    bd_lumped *L = bd_lumped_of(sim);
+    if (!L)
+        return;
+    free(L->ux);
+    free(L->uy);
+    free(L->len);
+    free(L->seg_hint);
+    for (int i = 0; L->wraps && i < sim->pulley_count; i++) {
+        bd_wrap_contact *W = &L->wraps[i];
+        free(W->c_node);
+        free(W->c_normal);
+        free(W->c_tx);
+        free(W->c_ty);
+        free(W->c_f);
+        free(W->c_slip);
+    }
+    free(L->wraps);
+    free(L);
+    sim->belt_data = NULL;
+}
+
+/* Stable time step. For central differences a mode of circular frequency ω
+ * and damping ratio ζ is stable for
+ *     Δt ≤ (2/ω)·(√(1+ζ²) − ζ)          (DESIGN.md; seed 001 eq 6.1 for ζ = 0)
+ * The highest frequency of the belt is that of a node between two elements
+ * moving against its neighbours: for the axial springs ω² = 4k/m (k = EA/l0,
+ * m = node mass), for the bending springs (k_θ = EI/l0, lever l0, a node and
+ * its two neighbours) ω² = 16·k_θ/(m·l0²). Their sum bounds the largest
+ * eigenvalue (Gershgorin); contacts are linearly implicit and add no limit
+ * (pulley_contact.c, idler_contact.c). The Kelvin–Voigt dashpot of ratio ζ_e
+ * (eq 4.3, per element) damps that mode with ζ = 2ζ_e. */
+double bd_lumped_stable_step(const bd_sim *sim, bd_time_step_limit *limit)
+{
+    const bd_lumped *L = bd_lumped_of(sim);
+    double m = sim->belt_mpl * sim->l0;   /* lightest node: no material */
+    double w_axial = 4.0 * L->k_axial;
+    double w_bend = 16.0 * L->k_bend / (sim->l0 * sim->l0);
+    double omega = sqrt((w_axial + w_bend) / m);
+    double zeta = 4.0 * L->c_axial / (2.0 * m * omega);
+    /* what limits it: the largest contribution to ω² */
+    *limit = w_bend > w_axial ? BD_LIMIT_BENDING : BD_LIMIT_AXIAL;
+    return 2.0 / omega * (sqrt(1.0 + zeta * zeta) - zeta);
+}
+
+/* the idlers' inertia reflected to a pulley of radius R */
+double bd_lumped_support_inertia(const bd_sim *sim, double R, double J)
+{
+    for (int k = 0; k < sim->idler_count; k++) {
+        double r = sim->idlers[k].radius;
+        J += sim->idlers[k].inertia * (R / r) * (R / r);
+    }
+    return J;
+}

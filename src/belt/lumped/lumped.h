@@ -1,0 +1,72 @@
+/* The lumped (discrete) belt of seed 001 §4.1: 2D nodes joined by
+ * Kelvin–Voigt elements and bending springs, penalty contact with pulley
+ * shells and idlers, stick–slip friction. Its data behind sim->belt_data
+ * and the functions its files share. */
+#ifndef BD_LUMPED_H
+#define BD_LUMPED_H
+
+#include "belt/belt.h"
+
+/* the contact of the belt with one pulley's shell (pulley_contact.c) */
+typedef struct bd_wrap_contact {
+    double k_contact;       /* build: N/m penalty stiffness of a node on it */
+    /* step: nodes first .. first+count-1 (mod n) were in contact */
+    int win_first, win_count;
+    int win_max;            /* build: capacity of the scratch arrays below */
+    /* step scratch of the stick-force solve [win_max] */
+    int *c_node;
+    double *c_normal;       /* N, normal force */
+    double *c_tx, *c_ty;    /* unit tangent (positive in the wrap sense) */
+    double *c_f;            /* N, friction (+ = retards the belt) */
+    int *c_slip;
+    int contact_count;
+} bd_wrap_contact;
+
+typedef struct bd_lumped {
+    /* build */
+    double k_axial;        /* N/m = EA/l0 */
+    double c_axial;        /* N·s/m dashpot of one element */
+    double k_bend;         /* N·m/rad = EI/l0 */
+    bd_wrap_contact *wraps;    /* [pulley_count] */
+    /* step (forces phase): element geometry */
+    double *ux, *uy;       /* [n] unit vector of element e */
+    double *len;           /* [n] m current length of element e */
+    /* a cache for the Eulerian s of elements, not state */
+    int *seg_hint;         /* [n] segment guess */
+} bd_lumped;
+
+static inline bd_lumped *bd_lumped_of(const bd_sim *sim)
+{
+    return (bd_lumped *)sim->belt_data;
+}
+
+/* build.c */
+int bd_lumped_build(bd_sim *sim, bd_diag *diag);
+void bd_lumped_free(bd_sim *sim);
+double bd_lumped_stable_step(const bd_sim *sim, bd_time_step_limit *limit);
+double bd_lumped_support_inertia(const bd_sim *sim, double R, double J);
+
+/* forces.c: elastic, damping, bending, gravity forces on nodes; energy */
+void bd_lumped_forces(bd_sim *sim);
+void bd_lumped_integrate(bd_sim *sim, double *ke, double *w_nc);
+double bd_lumped_elastic_energy(const bd_sim *sim);
+double bd_lumped_potential(const bd_sim *sim);
+
+/* pulley_contact.c / idler_contact.c */
+void bd_lumped_wrap(bd_sim *sim, bd_pulley_body *p, double external_torque);
+double bd_lumped_wrap_energy(const bd_sim *sim, const bd_pulley_body *p);
+void bd_lumped_idlers(bd_sim *sim);
+
+/* material.c: feed and discharge */
+void bd_lumped_material(bd_sim *sim);
+
+/* tracker.c: points fixed on the path, the tension field */
+void bd_tracker_init(const bd_sim *sim, bd_tracker *tr, double s);
+void bd_tracker_update(const bd_sim *sim, bd_tracker *tr);
+double bd_tracker_speed(const bd_sim *sim, const bd_tracker *tr);
+void bd_lumped_sample(const bd_sim *sim, const bd_tracker *tr, bd_belt_sample *out);
+double bd_lumped_element_s(const bd_sim *sim, int e);
+double bd_lumped_element_speed(const bd_sim *sim, int e);
+double bd_lumped_element_strain(const bd_sim *sim, int e);
+
+#endif

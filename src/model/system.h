@@ -1,0 +1,244 @@
+/* The simulated system: what every part of the simulator reads and writes.
+ * Types only (and the warning list); the functions live in the folders
+ * above this one: belt/ (the belt formulations), parts/ (pulleys, drives,
+ * takeups, transmissions), sensors/ (probes, drive monitors), sim/ (the
+ * build, the one step loop, energy). docs/architecture.md draws the
+ * picture.
+ *
+ * Belt nodes and elements are flat arrays (struct of arrays) of length n;
+ * element e joins node e to node e+1 (mod n): the belt is a closed loop.
+ * Every formulation keeps its nodes here (positions, velocities, forces,
+ * masses, element tensions); what only one formulation needs it keeps in
+ * its own struct behind sim->belt_data.
+ *
+ * Who writes what: "build" fields are set once by bd_sim_create and never
+ * change while the model runs; "step" fields are advanced by the step loop
+ * (sim/step.c) in the phase named; "stats" fields are records of the run
+ * so far. */
+#ifndef BD_SYSTEM_H
+#define BD_SYSTEM_H
+
+#include "beltdyn/model.h"
+#include "beltdyn/sim.h"
+#include "model/path.h"
+
+struct bd_belt_ops;
+struct bd_transmission;
+
+/* A point fixed on the path (probe, monitor point, feed point, idler) and
+ * the belt element over it. The belt moves through the point; the
+ * formulation keeps element and gamma current (bd_belt_ops.point_update). */
+typedef struct bd_tracker {
+    double p[2];      /* build: m, the fixed point */
+    double dir[2];    /* build: unit travel direction of the path there */
+    double s;         /* build: m, its path coordinate */
+    int element;      /* step (sensors): element currently over it */
+    double gamma;     /* step (sensors): 0..1 position of the foot point on it */
+} bd_tracker;
+
+/* what a start study asks of a drive pulley (sensors/monitor.c), followed
+ * every step at O(1) cost: tension just before and after the wrap, the
+ * belt's acceleration there and whether the pulley slips under the belt.
+ * All stats, written in the sensors phase. */
+typedef struct bd_drive_monitor {
+    bd_tracker tight, slack;     /* belt points arriving at / leaving the wrap */
+    double tight_max, tight_max_t;   /* N, s */
+    double slack_min, slack_min_t;   /* N, s */
+    double ramp_end;             /* s, when the start curve reaches full speed */
+    double swing_max, swing_min; /* N, tight-side extremes after ramp_end */
+    double win_sum;              /* m/s summed tight-side speed, this window */
+    long win_count;
+    double win_end;              /* s, end of the current window */
+    double win_prev;             /* m/s mean speed of the previous window */
+    int win_have_prev;
+    double accel_max, accel_max_t;   /* m/s², s: largest |window acceleration| */
+    double slip_dv_max;          /* m/s largest |surface − belt| speed */
+    double slip_since;           /* s, start of the current slip, or −1 */
+    double slip_longest;         /* s, longest slip */
+    double slip_first_t;         /* s, when slip was first confirmed, or −1 */
+} bd_drive_monitor;
+
+/* A pulley and what is mounted on it: drive, takeup carriage,
+ * transmission (parts/). It never knows which belt formulation carries
+ * it: the formulation's wrap coupling fills the "coupling" fields. */
+typedef struct bd_pulley_body {
+    /* build */
+    const bd_pulley_def *def;
+    double radius;          /* m */
+    double inertia;         /* kg·m², pulley + drive inertia (floored > 0) */
+    double wrap;            /* ±1: sense the belt turns (+ ccw) */
+    double mu_s, mu_d;      /* belt–pulley friction, - */
+    double bearing_damping; /* N·m·s */
+    int movable;            /* a gravity or constant_force takeup */
+    double axis[2];         /* unit axis of the carriage */
+    double carriage_mass;   /* kg moving along the axis (pulley + takeup) */
+    double wrap_pull;       /* N along the axis: the weight of a wrap the belt
+                               formulation does not resolve (axial), else 0 */
+    double ctrl_inertia;    /* kg·m² the speed controller is tuned for */
+    double ctrl_bandwidth;  /* rad/s of its closed speed loop */
+    double motor_breakdown; /* N·m at the motor shaft (motor control) */
+    double motor_slip_b;    /* breakdown slip, - */
+    struct bd_transmission *trans; /* belt transmission to its drive, or NULL */
+    /* step, part torques: what the drive and bearing put on it */
+    double drive_torque;    /* N·m last applied by the drive */
+    double bearing_torque;  /* N·m bearing torque this step */
+    double torque_external; /* N·m drive + bearing torque this step */
+    double integral;        /* speed-controller integral state (rad) */
+    /* step, wrap coupling: what the pulley feels from the belt */
+    double alpha;           /* rad/s² angular acceleration */
+    double f_axis;          /* N belt force on the pulley along its axis */
+    double fnc_axis;        /* N its non-conservative part */
+    double torque_friction; /* N·m belt friction torque on the pulley */
+    /* step, parts advance */
+    double omega;           /* rad/s, positive drives the belt forward */
+    double q, qdot;         /* m, m/s carriage travel along axis */
+    double qddot;           /* m/s² its acceleration in the last step */
+    double q_step_start;    /* m, carriage travel at the start of the step */
+    double cx, cy;          /* m, current centre */
+    double force_prev;      /* N takeup force at the previous step */
+    int at_limit;           /* takeup carriage at a travel limit */
+    /* stats */
+    double torque_max_abs;  /* N·m largest |drive torque| */
+    double travel_min, travel_max;  /* m */
+    int limit_hits;         /* times the carriage arrived at a limit */
+    double limit_first_t;   /* s, the first arrival */
+    double limit_first_q;   /* m, at which limit */
+    bd_drive_monitor mon;   /* drive pulleys only */
+} bd_pulley_body;
+
+/* An idler the belt rolls over, as a body of its own (the lumped belt;
+ * the axial belt spreads its idlers along the path instead). */
+typedef struct bd_idler {
+    /* build */
+    double centre[2];      /* m */
+    double radius;         /* m */
+    double inertia;        /* kg·m² */
+    double mu_s, mu_d;
+    double rolling;        /* rolling resistance coefficient */
+    double k_contact;      /* N/m penalty stiffness */
+    int set;               /* index of its idler set */
+    /* step */
+    bd_tracker tr;         /* the belt element over it (supports phase) */
+    double omega;          /* rad/s, + = surface moves with the belt (parts) */
+    double alpha;          /* rad/s² this step (supports) */
+    double torque;         /* N·m belt friction torque this step (supports) */
+} bd_idler;
+
+typedef struct bd_probe {
+    bd_tracker tr;
+    double tension_max, tension_min, tension, speed;   /* stats, N and m/s */
+} bd_probe;
+
+typedef enum bd_time_step_limit {
+    BD_LIMIT_AXIAL = 0, BD_LIMIT_BENDING, BD_LIMIT_USER
+} bd_time_step_limit;
+
+typedef struct bd_energy {
+    double kinetic, potential, dissipated, input;   /* J */
+    double initial;        /* E_kin + E_pot at t = 0 */
+    double max_kinetic;
+    double balance_error_rel; /* largest so far */
+} bd_energy;
+
+/* element tension extremes of one step (a NaN anywhere makes sum NaN) */
+typedef struct bd_extremes {
+    double hi, lo, sum;
+    int ihi, ilo;
+} bd_extremes;
+
+static inline void bd_extremes_add(bd_extremes *x, double T, int e)
+{
+    x->sum += T;
+    if (T > x->hi) {
+        x->hi = T;
+        x->ihi = e;
+    }
+    if (T < x->lo) {
+        x->lo = T;
+        x->ilo = e;
+    }
+}
+
+struct bd_sim {
+    /* build: the model, the belt formulation and its own data */
+    const bd_model_def *def;
+    const struct bd_belt_ops *belt;
+    void *belt_data;
+    bd_path path;
+    double gravity;        /* m/s² */
+
+    /* belt: n nodes, n elements (build) */
+    int n;
+    double l0;             /* m, (mean) unstretched element length */
+    double EA, EI;         /* N, N·m² */
+    double belt_mpl;       /* kg/m */
+    double *s_node0;       /* [n] m initial path coordinate of node i */
+    /* step: integrate phase */
+    double *x, *y;         /* [n] m */
+    double *vx, *vy;       /* [n] m/s at the half step */
+    /* step: forces, wrap and supports phases (scratch of the step) */
+    double *fx, *fy;       /* [n] N total force */
+    double *fnx, *fny;     /* [n] N non-conservative part (energy account) */
+    double *tension;       /* [n] N of element e (spring + dashpot) */
+    /* step: material phase */
+    double *mass;          /* [n] kg belt + material */
+    double *material;      /* [n] kg of material on the node */
+
+    /* parts (build; their state as their structs say) */
+    int pulley_count;
+    bd_pulley_body *pulleys;   /* [pulley_count] */
+    int idler_count;
+    bd_idler *idlers;          /* [idler_count] */
+    int *idlers_per_set;       /* [idler_set_count] */
+    double *idler_spacing;     /* [idler_set_count] actual spacing, m */
+    /* sensors */
+    int probe_count;
+    bd_probe *probes;          /* [probe_count] */
+
+    /* material feed/discharge (build; has_feed is off while stabilizing) */
+    int has_feed;
+    bd_tracker feed;
+    double material_mpl;   /* kg/m */
+    int discharge_pulley;
+
+    /* time: dt, dt_limit, limit_kind build; t, steps step */
+    double dt, dt_limit;
+    bd_time_step_limit limit_kind;
+    double t;
+    long steps;
+    /* element tension extremes of the current step (forces phase) */
+    double step_tension_max, step_tension_min, step_tension_sum;
+    int step_element_max, step_element_min;
+
+    /* stats */
+    bd_energy energy;
+    double tension_max, tension_max_t, tension_max_s;
+    double tension_min, tension_min_t, tension_min_s;
+    int stabilize_iterations;
+    double stabilize_final_kinetic;
+    /* run control */
+    int friction_off;      /* during stabilization: no friction, no drives */
+    int want_energy;       /* book the potential energy in the next step */
+    char fail_msg[512];
+    char **warnings;       /* [warning_count] said after the run */
+    int warning_count;
+};
+
+/* store a step's extremes in sim->step_tension_* */
+static inline void bd_extremes_store(bd_sim *sim, const bd_extremes *x)
+{
+    sim->step_tension_max = x->hi;
+    sim->step_tension_min = x->lo;
+    sim->step_element_max = x->ihi;
+    sim->step_element_min = x->ilo;
+    sim->step_tension_sum = x->sum;
+}
+
+/* add a warning (repeats are dropped); never from inside the step loop */
+void bd_sim_warn(bd_sim *sim, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+#endif

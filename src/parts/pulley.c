@@ -1,0 +1,80 @@
+/* Pulleys (seed 001 §4.2, eqs 4.62, 4.64–4.65, 4.67): a rotating body on a
+ * fixed axle or on a takeup carriage. The belt formulation's wrap coupling
+ * gives its angular acceleration and the belt's force along the carriage
+ * axis; the drive (or transmission) and the bearing give its outside
+ * torque. */
+#include "parts/parts.h"
+
+#include <math.h>
+
+#include "base/constants.h"
+
+void bd_pulley_body_init(bd_sim *sim, bd_pulley_body *p, const bd_pulley_def *pd)
+{
+    p->def = pd;
+    p->radius = pd->radius;
+    p->wrap = pd->wrap;
+    p->mu_s = pd->friction.mu_static;
+    p->mu_d = pd->friction.mu_dynamic;
+    p->bearing_damping = pd->bearing_damping;
+    p->inertia = pd->inertia + (pd->has_drive ? pd->drive.inertia : 0.0);
+    /* a massless pulley would have an undefined speed when the belt
+     * slips on it everywhere: floor its inertia at 1% of the inertia of
+     * the belt wrapped on it (documented in docs/physics.md) */
+    double floor_inertia = 0.01 * sim->belt_mpl * BD_PI * pd->radius * pd->radius * pd->radius;
+    if (p->inertia < floor_inertia)
+        p->inertia = floor_inertia;
+    p->cx = pd->x;
+    p->cy = pd->y;
+    if (pd->has_takeup) {
+        p->axis[0] = pd->takeup.axis[0];
+        p->axis[1] = pd->takeup.axis[1];
+        p->movable = pd->takeup.type != BD_TAKEUP_FIXED;
+        p->carriage_mass = pd->mass + pd->takeup.mass;
+        if (p->movable && p->carriage_mass <= 0.0)
+            p->carriage_mass = 1e-3 * sim->belt_mpl * pd->radius;
+        p->force_prev = bd_table_eval(&pd->takeup.force, 0.0);
+    }
+}
+
+/* the drive's torque (through its transmission, if any) and the bearing's */
+double bd_pulley_external_torque(bd_sim *sim, bd_pulley_body *p)
+{
+    double T_drive = 0.0;
+    if (p->trans)
+        T_drive = bd_transmission_torque(sim, p);
+    else if (p->def->has_drive && !sim->friction_off)
+        T_drive = bd_drive_torque(sim, p);
+    p->drive_torque = T_drive;
+    if (fabs(T_drive) > p->torque_max_abs)
+        p->torque_max_abs = fabs(T_drive);
+    p->bearing_torque = -p->bearing_damping * p->omega;
+    return T_drive + p->bearing_torque;
+}
+
+/* rotation with the mid-step speed booked (central differences, as the
+ * belt nodes), the transmission, the takeup carriage */
+void bd_pulleys_advance(bd_sim *sim, double *ke, double *w_nc)
+{
+    const double dt = sim->dt;
+    bd_energy *en = &sim->energy;
+    for (int i = 0; i < sim->pulley_count; i++) {
+        bd_pulley_body *p = &sim->pulleys[i];
+        double w_mid = p->omega + 0.5 * p->alpha * dt;
+        *ke += 0.5 * p->inertia * w_mid * w_mid;
+        *w_nc += (p->torque_friction + p->bearing_torque) * w_mid * dt;
+        double w_old = p->omega;
+        p->omega += p->alpha * dt;
+        if (p->trans)
+            bd_transmission_advance(sim, p, w_old, ke, w_nc);
+        else
+            en->input += p->drive_torque * w_mid * dt;
+        if (p->movable) {
+            double qdot_old = p->qdot;
+            p->q_step_start = p->q;
+            *w_nc += bd_takeup_advance(sim, p, &en->input);
+            double qm = 0.5 * (qdot_old + p->qdot);
+            *ke += 0.5 * p->carriage_mass * qm * qm;
+        }
+    }
+}

@@ -1,0 +1,22 @@
+/* Sensors: probes and drive monitors. They read the belt only through its
+ * formulation's point_update and sample (belt/belt.h), so every belt
+ * formulation has them with no code of its own. */
+#ifndef BD_SENSORS_H
+#define BD_SENSORS_H
+
+#include "belt/belt.h"
+
+/* monitor.c: drive monitors (set up in build, reset when a run starts) */
+void bd_monitor_init(bd_sim *sim, bd_pulley_body *p);
+void bd_monitor_reset(bd_sim *sim, bd_pulley_body *p);
+double bd_monitor_swing(const bd_drive_monitor *m);
+void bd_monitor_update(bd_sim *sim, bd_pulley_body *p);
+
+/* probe.c */
+/* the sensors phase of a step: probes follow the belt, drive monitors
+ * record (sim->t is the time the positions belong to) */
+void bd_sensors_update(bd_sim *sim);
+/* a probe's reading now, into its record (output times) */
+void bd_probe_read(bd_sim *sim, bd_probe *pr);
+
+#endif

@@ -1,0 +1,26 @@
+/* The engine: building a simulation, the one step loop, the stable time
+ * step, stabilization and the energy account (sim/). Everything below
+ * (belt formulations, parts, sensors) it reaches through their headers. */
+#ifndef BD_ENGINE_H
+#define BD_ENGINE_H
+
+#include "belt/belt.h"
+
+/* step.c */
+int bd_step_once(bd_sim *sim);
+/* v(−Δt/2) for a start from rest */
+void bd_sim_start_at_rest(bd_sim *sim);
+
+/* energy.c */
+double bd_energy_potential(const bd_sim *sim);
+void bd_energy_update_balance(bd_sim *sim);
+
+/* run.c: turn the events the step recorded into warnings */
+void bd_sim_report_events(bd_sim *sim);
+
+/* the tension field, for the writers: element e's midpoint path
+ * coordinate and speed (the formulation's) */
+double bd_element_s(const bd_sim *sim, int e);
+double bd_element_speed(const bd_sim *sim, int e);
+
+#endif
