@@ -7,7 +7,7 @@
  * The step loop calls, in this order, every step:
  *   forces     → the belt's own forces at t (elements, bending, gravity,
  *                distributed loads) into fx/fnx, and the element tensions
- *                with their extremes (bd_extremes_store)
+ *                with their extremes (bd_tension_extremes)
  *   wrap       → at each pulley, after the parts' torques: the belt–pulley
  *                coupling, its forces on the belt, and what the pulley feels
  *                (p->alpha, torque_friction, f_axis, fnc_axis)
@@ -87,6 +87,9 @@ void bd_setup_probes_and_feed(bd_sim *sim);
 /* idlers of set k that fit its span evenly (0 on a vertical span, with a
  * warning) and their actual spacing */
 int bd_idler_set_layout(bd_sim *sim, int k, double *spacing);
+/* the element tensions' extremes of this step into sim->step_tension_*
+ * (the forces phase of every formulation ends with it) */
+void bd_tension_extremes(bd_sim *sim);
 /* a point fixed on the path at s (taken modulo the loop): its place and
  * direction, and the node with the largest initial s not beyond it in
  * tr->element (the formulation's point_init then finds the element) */

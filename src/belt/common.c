@@ -99,3 +99,31 @@ void bd_belt_point_place(const bd_sim *sim, bd_tracker *tr, double s)
     }
     tr->element = lo;
 }
+
+/* one scalar pass: the first element of the largest and of the smallest
+ * tension, and whether any is NaN (a NaN compares false, so it is flagged
+ * on its own) */
+void bd_tension_extremes(bd_sim *sim)
+{
+    const int n = sim->n;
+    const double *restrict T = sim->tension;
+    double hi = -INFINITY, lo = INFINITY;
+    int ihi = 0, ilo = 0, nan = 0;
+    for (int e = 0; e < n; e++) {
+        double t = T[e];
+        nan |= !(t == t);
+        if (t > hi) {
+            hi = t;
+            ihi = e;
+        }
+        if (t < lo) {
+            lo = t;
+            ilo = e;
+        }
+    }
+    sim->step_tension_max = hi;
+    sim->step_tension_min = lo;
+    sim->step_element_max = ihi;
+    sim->step_element_min = ilo;
+    sim->step_tension_nan = nan;
+}

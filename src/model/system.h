@@ -140,25 +140,6 @@ typedef struct bd_energy {
     double balance_error_rel; /* largest so far */
 } bd_energy;
 
-/* element tension extremes of one step (a NaN anywhere makes sum NaN) */
-typedef struct bd_extremes {
-    double hi, lo, sum;
-    int ihi, ilo;
-} bd_extremes;
-
-static inline void bd_extremes_add(bd_extremes *x, double T, int e)
-{
-    x->sum += T;
-    if (T > x->hi) {
-        x->hi = T;
-        x->ihi = e;
-    }
-    if (T < x->lo) {
-        x->lo = T;
-        x->ilo = e;
-    }
-}
-
 struct bd_sim {
     /* build: the model, the belt formulation and its own data */
     const bd_model_def *def;
@@ -207,8 +188,9 @@ struct bd_sim {
     double t;
     long steps;
     /* element tension extremes of the current step (forces phase) */
-    double step_tension_max, step_tension_min, step_tension_sum;
+    double step_tension_max, step_tension_min;
     int step_element_max, step_element_min;
+    int step_tension_nan;  /* some element's tension is NaN */
 
     /* stats */
     bd_energy energy;
@@ -223,16 +205,6 @@ struct bd_sim {
     char **warnings;       /* [warning_count] said after the run */
     int warning_count;
 };
-
-/* store a step's extremes in sim->step_tension_* */
-static inline void bd_extremes_store(bd_sim *sim, const bd_extremes *x)
-{
-    sim->step_tension_max = x->hi;
-    sim->step_tension_min = x->lo;
-    sim->step_element_max = x->ihi;
-    sim->step_element_min = x->ilo;
-    sim->step_tension_sum = x->sum;
-}
 
 /* add a warning (repeats are dropped); never from inside the step loop */
 void bd_sim_warn(bd_sim *sim, const char *fmt, ...)

@@ -26,7 +26,7 @@ static int check_elements(bd_sim *sim)
 {
     double hi = sim->step_tension_max, lo = sim->step_tension_min;
     int ihi = sim->step_element_max, ilo = sim->step_element_min;
-    if (!(sim->step_tension_sum == sim->step_tension_sum)) {
+    if (sim->step_tension_nan) {
         /* a NaN: find the first element that has it (failure path only) */
         for (int e = 0; e < sim->n; e++)
             if (!(sim->tension[e] == sim->tension[e])) {

@@ -31,6 +31,7 @@ typedef struct bd_axial {
     double *gap_rate;   /* [n] m/s its rate (takeup motion), 0 elsewhere */
     double *k;          /* [n] build: N/m, EA/l0 of element e */
     double *c;          /* [n] build: N·s/m, its dashpot */
+    double *td;         /* [n] step (forces): N, the dashpot's part of the tension */
     double *l0;         /* [n] build: m, its unstretched length */
     double *s_len;      /* [n] build: m, its length along the initial path */
     double *f_const;    /* [n] N, gravity along the path on node i (material phase) */

@@ -163,8 +163,8 @@ static void alloc_arrays(bd_sim *sim)
     bd_axial_of(sim)->pulleys = bd_xcalloc((size_t)sim->pulley_count,
                                            sizeof *bd_axial_of(sim)->pulleys);
     bd_axial *ax = bd_axial_of(sim);
-    double **d[] = {&ax->u,  &ax->gap,   &ax->gap_rate, &ax->k,     &ax->c,
-                    &ax->l0, &ax->s_len, &ax->f_const,  &ax->resist};
+    double **d[] = {&ax->u,  &ax->gap,   &ax->gap_rate, &ax->k,      &ax->c,
+                    &ax->td, &ax->l0,    &ax->s_len,    &ax->f_const, &ax->resist};
     for (size_t i = 0; i < sizeof d / sizeof d[0]; i++)
         *d[i] = bd_xcalloc(n, sizeof(double));
 }
@@ -518,6 +518,7 @@ void bd_axial_free(bd_sim *sim)
     free(ax->gap_rate);
     free(ax->k);
     free(ax->c);
+    free(ax->td);
     free(ax->l0);
     free(ax->s_len);
     free(ax->f_const);

@@ -18,25 +18,63 @@
 #include <math.h>
 
 
+/* elements 0 .. count−1 of the node arrays u, v (element e from node e
+ * to e + 1): tension and its dashpot part; no node written */
+static void elements(int count, const double *restrict u, const double *restrict v,
+                     const double *restrict k, const double *restrict c,
+                     const double *restrict gap, const double *restrict rate,
+                     double *restrict td, double *restrict tension)
+{
+    for (int e = 0; e < count; e++) {
+        double Td = c[e] * (rate[e] + v[e + 1] - v[e]);
+        td[e] = Td;
+        tension[e] = k[e] * (gap[e] + u[e + 1] - u[e]) + Td;
+    }
+}
+
+/* the element pass: elements 0 .. n−2, then the one that closes the loop
+ * from a copy of its two nodes */
 static void element_pass(bd_sim *sim)
 {
-    const int n = sim->n;
-    const double *u = bd_axial_of(sim)->u, *v = sim->vx, *gap = bd_axial_of(sim)->gap, *rate = bd_axial_of(sim)->gap_rate;
-    const double *k = bd_axial_of(sim)->k, *c = bd_axial_of(sim)->c;
-    double *f = sim->fx, *fn = sim->fnx, *tension = sim->tension;
-    bd_extremes ext = {-INFINITY, INFINITY, 0.0, 0, 0};
-    for (int e = 0; e < n; e++) {
-        int j = e + 1 == n ? 0 : e + 1;
-        double Td = c[e] * (rate[e] + v[j] - v[e]);
-        double T = k[e] * (gap[e] + u[j] - u[e]) + Td;
-        tension[e] = T;
-        bd_extremes_add(&ext, T, e);
-        f[e] += T;
-        f[j] -= T;
-        fn[e] += Td;
-        fn[j] -= Td;
+    const bd_axial *ax = bd_axial_of(sim);
+    const int n = sim->n, z = n - 1;
+    const double *u = ax->u, *v = sim->vx;
+    elements(z, u, v, ax->k, ax->c, ax->gap, ax->gap_rate, ax->td, sim->tension);
+    double cu[2] = {u[z], u[0]}, cv[2] = {v[z], v[0]};
+    elements(1, cu, cv, ax->k + z, ax->c + z, ax->gap + z, ax->gap_rate + z, ax->td + z,
+             sim->tension + z);
+}
+
+/* rolling resistance on node i at speed v, smoothed through zero */
+static inline double rolling(double resist, double v)
+{
+    double sat = v / BD_AXIAL_ROLLING_SPEED;
+    sat = sat > 1.0 ? 1.0 : (sat < -1.0 ? -1.0 : sat);
+    return -resist * sat;
+}
+
+/* the node pass: weight along the path and rolling resistance, element i
+ * pulling forward and element i − 1 back; the sums in the order the
+ * element-by-element scatter added them (element i − 1 first, except at
+ * node 0), so the result is the same to the bit */
+static void nodes(int n, const double *restrict fc, const double *restrict res,
+                  const double *restrict v, const double *restrict T,
+                  const double *restrict td, double *restrict f, double *restrict fn)
+{
+    double r = rolling(res[0], v[0]);
+    f[0] = ((fc[0] + r) + T[0]) - T[n - 1];
+    fn[0] = (r + td[0]) - td[n - 1];
+    for (int i = 1; i < n; i++) {
+        r = rolling(res[i], v[i]);
+        f[i] = ((fc[i] + r) - T[i - 1]) + T[i];
+        fn[i] = (r - td[i - 1]) + td[i];
     }
-    bd_extremes_store(sim, &ext);
+}
+
+static void node_pass(bd_sim *sim)
+{
+    const bd_axial *ax = bd_axial_of(sim);
+    nodes(sim->n, ax->f_const, ax->resist, sim->vx, sim->tension, ax->td, sim->fx, sim->fnx);
 }
 
 /* the wrap coupling: the seed-004 law at pulley p, implicit in the
@@ -81,22 +119,16 @@ void bd_axial_wrap(bd_sim *sim, bd_pulley_body *p, double Q)
 
 void bd_axial_forces(bd_sim *sim)
 {
-    const int n = sim->n;
-    const double *fc = bd_axial_of(sim)->f_const, *res = bd_axial_of(sim)->resist, *v = sim->vx;
-    double *f = sim->fx, *fn = sim->fnx;
-    for (int i = 0; i < n; i++) {
-        double sat = v[i] / BD_AXIAL_ROLLING_SPEED;
-        sat = sat > 1.0 ? 1.0 : (sat < -1.0 ? -1.0 : sat);
-        double r = -res[i] * sat;
-        f[i] = fc[i] + r;
-        fn[i] = r;
-    }
     element_pass(sim);
+    node_pass(sim);
+    bd_tension_extremes(sim);
+    /* the feed point accelerates the material landing on it to belt speed */
     int fd = bd_axial_of(sim)->feed_node;
+    const double *v = sim->vx;
     if (fd >= 0 && sim->has_feed && v[fd] > 0.0) {
         double F = -sim->material_mpl * v[fd] * v[fd];
-        f[fd] += F;
-        fn[fd] += F;
+        sim->fx[fd] += F;
+        sim->fnx[fd] += F;
     }
 }
 

@@ -265,6 +265,9 @@ int bd_lumped_build(bd_sim *sim, bd_diag *diag)
     L->ux = bd_xcalloc(n, sizeof *L->ux);
     L->uy = bd_xcalloc(n, sizeof *L->uy);
     L->len = bd_xcalloc(n, sizeof *L->len);
+    L->td = bd_xcalloc(n, sizeof *L->td);
+    L->pw = bd_xcalloc(n, sizeof *L->pw);
+    L->ek = bd_xcalloc(n, sizeof *L->ek);
     L->seg_hint = bd_xcalloc(n, sizeof *L->seg_hint);
     sim->s_node0 = bd_xcalloc(n, sizeof *sim->s_node0);
     for (int i = 0; i < sim->n; i++)
@@ -288,6 +291,9 @@ void bd_lumped_free(bd_sim *sim)
     free(L->ux);
     free(L->uy);
     free(L->len);
+    free(L->td);
+    free(L->pw);
+    free(L->ek);
     free(L->seg_hint);
     for (int i = 0; L->wraps && i < sim->pulley_count; i++) {
         bd_wrap_contact *W = &L->wraps[i];

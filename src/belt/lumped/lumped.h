@@ -31,6 +31,10 @@ typedef struct bd_lumped {
     /* step (forces phase): element geometry */
     double *ux, *uy;       /* [n] unit vector of element e */
     double *len;           /* [n] m current length of element e */
+    double *td;            /* [n] N dashpot part of its tension */
+    /* step (integrate): node i's mid-step power of the non-conservative
+     * forces (W) and twice its kinetic energy (J), summed in node order */
+    double *pw, *ek;       /* [n] */
     /* a cache for the Eulerian s of elements, not state */
     int *seg_hint;         /* [n] segment guess */
 } bd_lumped;
