@@ -19,6 +19,27 @@ static void on_sigint(int sig)
     interrupted = 1;
 }
 
+/* the progress line on a terminal (cli.md): simulated time, percent, wall
+ * time, estimated remaining, real-time factor */
+static void show_progress(const bd_run_progress *p, void *ctx)
+{
+    (void)ctx;
+    double frac = p->duration_s > 0.0 ? p->t_s / p->duration_s : 1.0;
+    double remaining = frac > 0.0 ? p->wall_s * (1.0 - frac) / frac : 0.0;
+    fprintf(stderr, "\r  t = %8.3f s  %5.1f%%  wall %7.1f s  remaining %7.1f s  %6.2fx real time ",
+            p->t_s, 100.0 * frac, p->wall_s, remaining,
+            p->wall_s > 0.0 ? p->t_s / p->wall_s : 0.0);
+    if (p->done)
+        fputc('\n', stderr);
+}
+
+/* a study's model diagnostics and failed cases */
+static void show_message(const char *line, void *ctx)
+{
+    (void)ctx;
+    fprintf(stderr, "%s\n", line);
+}
+
 static int usage(FILE *f)
 {
     fprintf(f,
@@ -153,7 +174,7 @@ static int cmd_run(int argc, char **argv)
     sigaction(SIGINT, &sa, NULL);
     bd_run_options opt = {0};
     opt.out_dir = dir;
-    opt.progress = !quiet && isatty(STDERR_FILENO);
+    opt.progress = !quiet && isatty(STDERR_FILENO) ? show_progress : NULL;
     opt.interrupted = &interrupted;
     opt.hdf5 = hdf5;
     char err[1024] = "";
@@ -252,7 +273,8 @@ static int cmd_study(int argc, char **argv)
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = on_sigint;
     sigaction(SIGINT, &sa, NULL);
-    o.progress = !quiet && isatty(STDERR_FILENO);
+    o.progress = !quiet && isatty(STDERR_FILENO) ? show_progress : NULL;
+    o.message = show_message;
     o.interrupted = &interrupted;
     char err[1024] = "";
     int rc = bd_study_run(&o, stdout, err, sizeof err);

@@ -22,11 +22,22 @@ enum {
     BD_RUN_INTERRUPTED = 130
 };
 
+/* where a run stands, for a progress display (the library prints nothing) */
+typedef struct bd_run_progress {
+    double t_s;          /* simulated time reached */
+    double duration_s;   /* simulated time asked for */
+    double wall_s;       /* wall time so far */
+    int done;            /* 1: the last call of the run */
+} bd_run_progress;
+
+typedef void (*bd_progress_fn)(const bd_run_progress *p, void *ctx);
+
 typedef struct bd_run_options {
     const char *out_dir;                  /* directory for the outputs */
-    int progress;                         /* 1: progress line on stderr */
+    bd_progress_fn progress;              /* called about 4 times a second, or NULL */
     volatile sig_atomic_t *interrupted;   /* set nonzero to stop (SIGINT) */
     int hdf5;                             /* 1: also DIR/tension.h5 */
+    void *progress_ctx;                   /* passed to progress */
 } bd_run_options;
 
 /* derive the discrete model (path, elements, idlers, time step, initial

@@ -8,6 +8,7 @@
 #include <stdio.h>
 
 #include "beltdyn/model.h"
+#include "beltdyn/sim.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -26,7 +27,12 @@ typedef struct bd_study_options {
     double delays[BD_STUDY_MAX];   /* s, pre-start delay (>= 0) */
     double after;                  /* s run after delay + T; <= 0: the
                                       model's simulation.duration */
-    int progress;                  /* progress lines on stderr */
+    bd_progress_fn progress;       /* each case's progress, or NULL */
+    void *progress_ctx;
+    /* the model's diagnostics and each failed case's message, one line at
+     * a time, or NULL (the library prints nothing) */
+    void (*message)(const char *line, void *ctx);
+    void *message_ctx;
     volatile sig_atomic_t *interrupted;
 } bd_study_options;
 

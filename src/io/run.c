@@ -1,5 +1,5 @@
 /* The run: optional stabilization, then the step loop with outputs at every
- * output interval, a progress line on a terminal, and a clean stop on
+ * output interval, progress reports to the caller, and a clean stop on
  * divergence or SIGINT with everything written so far flushed and valid. */
 #include "io/outputs.h"
 #include "sim/engine.h"
@@ -16,12 +16,11 @@ static double wall_seconds(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-static void progress(const bd_sim *sim, double duration, double wall)
+static void progress(const bd_run_options *opt, const bd_sim *sim, double duration, double wall,
+                     int done)
 {
-    double frac = sim->t / duration;
-    double remaining = frac > 0.0 ? wall * (1.0 - frac) / frac : 0.0;
-    fprintf(stderr, "\r  t = %8.3f s  %5.1f%%  wall %7.1f s  remaining %7.1f s  %6.2fx real time ",
-            sim->t, 100.0 * frac, wall, remaining, wall > 0.0 ? sim->t / wall : 0.0);
+    bd_run_progress p = {sim->t, duration, wall, done};
+    opt->progress(&p, opt->progress_ctx);
 }
 
 /* energy at t = 0: the reference of the balance */
@@ -91,7 +90,7 @@ int bd_sim_run(bd_sim *sim, const bd_run_options *opt, char *err, size_t errlen)
             if (opt->progress) {
                 double w = wall_seconds() - wall0;
                 if (w - last_progress > 0.25) {
-                    progress(sim, duration, w);
+                    progress(opt, sim, duration, w, 0);
                     last_progress = w;
                 }
             }
@@ -103,10 +102,8 @@ int bd_sim_run(bd_sim *sim, const bd_run_options *opt, char *err, size_t errlen)
         bd_energy_update_balance(sim);
         bd_outputs_row(&out, sim, sim->t);
     }
-    if (opt->progress) {
-        progress(sim, duration, wall_seconds() - wall0);
-        fputc('\n', stderr);
-    }
+    if (opt->progress)
+        progress(opt, sim, duration, wall_seconds() - wall0, 1);
     if (status == BD_RUN_FAILED)
         snprintf(err, errlen, "%s", sim->fail_msg);
     else if (status == BD_RUN_INTERRUPTED)

@@ -212,3 +212,18 @@ double bd_path_wrap_angle(const bd_path *path, int pulley)
 {
     return fabs(bd_path_arc(path, pulley)->sweep);
 }
+
+void bd_path_loaded_region(const bd_path *path, const bd_material_def *mat, double *s_feed,
+                           double *length)
+{
+    double L = path->length;
+    double s_dis = bd_path_arc(path, mat->discharge)->s0;
+    *s_feed = bd_path_span_s(path, mat->feed_span, mat->feed_at);
+    *length = fmod(s_dis - *s_feed + 2.0 * L, L);
+}
+
+int bd_path_in_region(const bd_path *path, double s, double s_from, double length)
+{
+    double L = path->length;
+    return fmod(s - s_from + 2.0 * L, L) <= length;
+}

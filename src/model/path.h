@@ -49,6 +49,13 @@ const bd_path_segment *bd_path_span(const bd_path *path, int pulley);
 const bd_path_segment *bd_path_arc(const bd_path *path, int pulley);
 /* s of the point at fraction `at` (0..1) along span `pulley` */
 double bd_path_span_s(const bd_path *path, int pulley, double at);
+/* the region of the path that carries material (model-format.md
+ * `material`): from the feed point, *s_feed, to where the belt reaches the
+ * discharge pulley (the start of its arc), *length along the path */
+void bd_path_loaded_region(const bd_path *path, const bd_material_def *mat, double *s_feed,
+                           double *length);
+/* whether path coordinate s lies in the region [s_from, s_from + length] */
+int bd_path_in_region(const bd_path *path, double s, double s_from, double length);
 /* wrap angle of pulley i, rad (>= 0) */
 double bd_path_wrap_angle(const bd_path *path, int pulley);
 

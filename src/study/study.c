@@ -256,6 +256,15 @@ static void apply_case(bd_model_def *def, const study_case *c, double after, dou
     def->simulation.duration = after > 0.0 ? c->delay + c->time + after : duration;
 }
 
+/* the model's diagnostics to the caller */
+static void say_diag(const bd_study_options *opt, const bd_diag *diag)
+{
+    if (!opt->message)
+        return;
+    for (int i = 0; i < diag->count + diag->warning_count; i++)
+        opt->message(diag->lines[i], opt->message_ctx);
+}
+
 static int run_case(bd_model_def *def, study_case *c, const bd_study_options *opt, char *err,
                     size_t errlen)
 {
@@ -265,8 +274,7 @@ static int run_case(bd_model_def *def, study_case *c, const bd_study_options *op
     int status;
     double w0 = wall_seconds();
     if (bd_sim_create(def, &sim, &diag) != 0) {
-        for (int i = 0; i < diag.count + diag.warning_count; i++)
-            fprintf(stderr, "%s\n", diag.lines[i]);
+        say_diag(opt, &diag);
         snprintf(err, errlen, "case %s: the model could not be built", c->name);
         status = BD_RUN_BAD_INPUT;
     } else {
@@ -275,6 +283,7 @@ static int run_case(bd_model_def *def, study_case *c, const bd_study_options *op
         bd_run_options ro = {0};
         ro.out_dir = dir;
         ro.progress = opt->progress;
+        ro.progress_ctx = opt->progress_ctx;
         ro.interrupted = opt->interrupted;
         char msg[1024] = "";
         status = bd_sim_run(sim, &ro, msg, sizeof msg);
@@ -298,8 +307,7 @@ int bd_study_run(const bd_study_options *opt, FILE *table, char *err, size_t err
     bd_diag diag;
     bd_diag_init(&diag);
     int bad = bd_model_load(opt->model_path, &def, &diag);
-    for (int i = 0; i < diag.count + diag.warning_count; i++)
-        fprintf(stderr, "%s\n", diag.lines[i]);
+    say_diag(opt, &diag);
     bd_diag_free(&diag);
     if (bad) {
         snprintf(err, errlen, "%s: the model has errors", opt->model_path);
@@ -350,7 +358,8 @@ int bd_study_run(const bd_study_options *opt, FILE *table, char *err, size_t err
         int st = run_case(&def, &cases[k], opt, case_err, sizeof case_err);
         done = k + 1;
         if (st != BD_RUN_OK) {
-            fprintf(stderr, "beltdyn: %s\n", case_err);
+            if (opt->message)
+                opt->message(case_err, opt->message_ctx);
             if (status == BD_RUN_OK || st != BD_RUN_FAILED)
                 status = st;
             snprintf(err, errlen, "%s", case_err);

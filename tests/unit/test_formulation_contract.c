@@ -119,7 +119,7 @@ static void contract(const char *formulation, const char *element_length, const 
     CHECK(bad == 0);
     if (bad)
         return;
-    bd_run_options opt = {dir, 0, NULL, 0};
+    bd_run_options opt = {.out_dir = dir};
     char err[512] = "";
     int rc = bd_sim_run(sim, &opt, err, sizeof err);
     if (rc)

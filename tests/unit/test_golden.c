@@ -77,7 +77,7 @@ static int run_example(const char *name, double duration, const char *dir)
     int rc = bd_sim_create(&def, &sim, &diag);
     bd_diag_free(&diag);
     if (rc == 0) {
-        bd_run_options opt = {dir, 0, NULL, 0};
+        bd_run_options opt = {.out_dir = dir};
         char err[512];
         rc = bd_sim_run(sim, &opt, err, sizeof err);
         if (rc)

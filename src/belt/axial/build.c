@@ -57,10 +57,7 @@ static void init_load(bd_sim *sim)
     bd_axial *ax = bd_axial_of(sim);
     if (!mat->present)
         return;
-    double L = sim->path.length;
-    double s_dis = bd_path_arc(&sim->path, mat->discharge)->s0;
-    ax->s_feed = bd_path_span_s(&sim->path, mat->feed_span, mat->feed_at);
-    ax->load_len = fmod(s_dis - ax->s_feed + 2.0 * L, L);
+    bd_path_loaded_region(&sim->path, mat, &ax->s_feed, &ax->load_len);
     ax->d_tail = 0.0;
     ax->d_head = mat->initially_loaded ? ax->load_len : 0.0;
     /* an empty belt that is not fed stays empty */

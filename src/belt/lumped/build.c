@@ -217,13 +217,10 @@ static void load_material(bd_sim *sim)
     const bd_material_def *mat = &sim->def->material;
     if (!mat->present || !mat->initially_loaded)
         return;
-    double L = sim->path.length;
-    double s_feed = bd_path_span_s(&sim->path, mat->feed_span, mat->feed_at);
-    double s_dis = bd_path_arc(&sim->path, mat->discharge)->s0;
-    double len = fmod(s_dis - s_feed + 2.0 * L, L);
+    double s_feed, len;
+    bd_path_loaded_region(&sim->path, mat, &s_feed, &len);
     for (int i = 0; i < sim->n; i++) {
-        double rel = fmod(sim->s_node0[i] - s_feed + 2.0 * L, L);
-        if (rel <= len) {
+        if (bd_path_in_region(&sim->path, sim->s_node0[i], s_feed, len)) {
             sim->material[i] = mat->mass_per_length * sim->l0;
             sim->mass[i] += sim->material[i];
         }

@@ -34,14 +34,9 @@ static double material_mpl_at(const bd_model_def *def, const bd_path *path, doub
     const bd_material_def *mat = &def->material;
     if (!mat->present || !mat->initially_loaded)
         return 0.0;
-    double s_feed = bd_path_span_s(path, mat->feed_span, mat->feed_at);
-    /* loaded from the feed point to where the belt reaches the discharge
-     * pulley (the start of its arc) */
-    double s_dis = bd_path_arc(path, mat->discharge)->s0;
-    double L = path->length;
-    double rel = fmod(s - s_feed + 2.0 * L, L);
-    double len = fmod(s_dis - s_feed + 2.0 * L, L);
-    return rel <= len ? mat->mass_per_length : 0.0;
+    double s_feed, len;
+    bd_path_loaded_region(path, mat, &s_feed, &len);
+    return bd_path_in_region(path, s, s_feed, len) ? mat->mass_per_length : 0.0;
 }
 
 static void weight_grid_build(const bd_model_def *def, const bd_path *path, double target,
