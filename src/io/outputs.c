@@ -283,11 +283,12 @@ static int write_summary(bd_outputs *o, const bd_sim *sim, double wall, const ch
             bd_json_add_number(p, "slip_longest_s", m->slip_longest);
             cJSON_AddBoolToObject(p, "slipped", m->slip_first_t >= 0.0);
         }
-        if (pb->trans) {
+        const bd_part *dp = bd_pulley_drive_part(sim, pb);
+        if (dp && dp->type == BD_PART_TRANSMISSION) {
             double w_m, slip_m, slip_p;
-            bd_transmission_state(pb, &w_m, &slip_m, &slip_p);
+            bd_transmission_state(dp, pb, &w_m, &slip_m, &slip_p);
             bd_json_add_number(p, "motor_sheave_omega_final_rad_s", w_m);
-            bd_json_add_number(p, "transmission_slip_max_mps", bd_transmission_slip_max(pb));
+            bd_json_add_number(p, "transmission_slip_max_mps", bd_transmission_slip_max(dp));
         }
         if (def->pulleys[i].has_takeup) {
             bd_json_add_number(p, "travel_min_m", pb->travel_min);

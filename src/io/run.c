@@ -3,6 +3,7 @@
  * divergence or SIGINT with everything written so far flushed and valid. */
 #include "io/outputs.h"
 #include "sim/engine.h"
+#include "parts/parts.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -41,13 +42,8 @@ static void energy_start(bd_sim *sim)
  * pulley. Saying them twice is harmless (bd_sim_warn drops repeats). */
 void bd_sim_report_events(bd_sim *sim)
 {
-    for (int i = 0; i < sim->pulley_count; i++) {
-        const bd_pulley_body *p = &sim->pulleys[i];
-        if (p->limit_hits > 0)
-            bd_sim_warn(sim, "takeup '%s' reached the end of its travel (%g m) at t = %.3f s%s",
-                        p->def->name, p->limit_first_q, p->limit_first_t,
-                        p->limit_hits > 1 ? " and again later" : "");
-    }
+    for (int k = 0; k < sim->part_count; k++)
+        bd_part_report_events(sim, &sim->parts[k]);
     if (sim->belt->report_events)
         sim->belt->report_events(sim);
 }

@@ -23,7 +23,7 @@
 #include "model/path.h"
 
 struct bd_belt_ops;
-struct bd_transmission;
+struct bd_part;
 
 /* A point fixed on the path (probe, monitor point, feed point, idler) and
  * the belt element over it. The belt moves through the point; the
@@ -58,9 +58,10 @@ typedef struct bd_drive_monitor {
     double slip_first_t;         /* s, when slip was first confirmed, or −1 */
 } bd_drive_monitor;
 
-/* A pulley and what is mounted on it: drive, takeup carriage,
- * transmission (parts/). It never knows which belt formulation carries
- * it: the formulation's wrap coupling fills the "coupling" fields. */
+/* A pulley: a body turning on its axle, the axle on a takeup carriage when
+ * it has one. What is mounted on it (drive, transmission, takeup) are its
+ * parts (parts/parts.h). It never knows which belt formulation carries it:
+ * the formulation's wrap coupling fills the "coupling" fields. */
 typedef struct bd_pulley_body {
     /* build */
     const bd_pulley_def *def;
@@ -74,16 +75,11 @@ typedef struct bd_pulley_body {
     double carriage_mass;   /* kg moving along the axis (pulley + takeup) */
     double wrap_pull;       /* N along the axis: the weight of a wrap the belt
                                formulation does not resolve (axial), else 0 */
-    double ctrl_inertia;    /* kg·m² the speed controller is tuned for */
-    double ctrl_bandwidth;  /* rad/s of its closed speed loop */
-    double motor_breakdown; /* N·m at the motor shaft (motor control) */
-    double motor_slip_b;    /* breakdown slip, - */
-    struct bd_transmission *trans; /* belt transmission to its drive, or NULL */
+    int first_part, part_count; /* its parts: sim->parts[first_part ..] */
     /* step, part torques: what the drive and bearing put on it */
     double drive_torque;    /* N·m last applied by the drive */
     double bearing_torque;  /* N·m bearing torque this step */
     double torque_external; /* N·m drive + bearing torque this step */
-    double integral;        /* speed-controller integral state (rad) */
     /* step, wrap coupling: what the pulley feels from the belt */
     double alpha;           /* rad/s² angular acceleration */
     double f_axis;          /* N belt force on the pulley along its axis */
@@ -95,14 +91,9 @@ typedef struct bd_pulley_body {
     double qddot;           /* m/s² its acceleration in the last step */
     double q_step_start;    /* m, carriage travel at the start of the step */
     double cx, cy;          /* m, current centre */
-    double force_prev;      /* N takeup force at the previous step */
-    int at_limit;           /* takeup carriage at a travel limit */
     /* stats */
     double torque_max_abs;  /* N·m largest |drive torque| */
     double travel_min, travel_max;  /* m */
-    int limit_hits;         /* times the carriage arrived at a limit */
-    double limit_first_t;   /* s, the first arrival */
-    double limit_first_q;   /* m, at which limit */
     bd_drive_monitor mon;   /* drive pulleys only */
 } bd_pulley_body;
 
@@ -168,6 +159,8 @@ struct bd_sim {
     /* parts (build; their state as their structs say) */
     int pulley_count;
     bd_pulley_body *pulleys;   /* [pulley_count] */
+    int part_count;
+    struct bd_part *parts;     /* [part_count] in pulley order */
     int idler_count;
     bd_idler *idlers;          /* [idler_count] */
     int *idlers_per_set;       /* [idler_set_count] */

@@ -30,40 +30,41 @@ static double clip(double v, double limit)
 }
 
 /* Kloss curve at the motor shaft, N·m */
-static double motor_torque(const bd_pulley_body *p, double omega_pulley)
+static double motor_torque(const bd_drive *p, double omega_pulley)
 {
-    const bd_motor_def *m = &p->def->drive.motor;
+    const bd_motor_def *m = &p->def->motor;
     double w_sync = m->synchronous_speed_rpm * 2.0 * BD_PI / 60.0;
     double s = 1.0 - omega_pulley * m->gear_ratio / w_sync;
     double sb = p->motor_slip_b;
     return 2.0 * p->motor_breakdown * s * sb / (s * s + sb * sb);
 }
 
-void bd_drive_prepare(bd_sim *sim, bd_pulley_body *p, double reflected_inertia)
+void bd_drive_prepare(bd_sim *sim, bd_drive *dr, const bd_pulley_body *p,
+                      double reflected_inertia)
 {
-    const bd_drive_def *d = &p->def->drive;
-    p->ctrl_inertia = reflected_inertia;
+    const bd_drive_def *d = dr->def;
+    dr->ctrl_inertia = reflected_inertia;
     /* 2 Hz speed loop, slowed if the explicit step could not carry it: the
      * proportional gain acts like a damper 2ω_c·J on the pulley and the belt
      * sticking to it, stable for Δt·2ω_c·J/I_local < 2; keep it below 0.5 */
     double I_local = p->inertia + sim->belt_mpl * BD_PI * p->radius * p->radius * p->radius;
     double w = 2.0 * BD_PI * 2.0;
     double w_max = 0.25 * I_local / (sim->dt * reflected_inertia);
-    p->ctrl_bandwidth = w < w_max ? w : w_max;
+    dr->ctrl_bandwidth = w < w_max ? w : w_max;
     if (d->control == BD_CONTROL_MOTOR) {
         const bd_motor_def *m = &d->motor;
         double w_rated = m->rated_speed_rpm * 2.0 * BD_PI / 60.0;
         double T_rated = m->rated_power / w_rated;
         double k = m->breakdown_torque_ratio;
         double s_r = 1.0 - m->rated_speed_rpm / m->synchronous_speed_rpm;
-        p->motor_breakdown = k * T_rated;
-        p->motor_slip_b = s_r * (k + sqrt(k * k - 1.0));
+        dr->motor_breakdown = k * T_rated;
+        dr->motor_slip_b = s_r * (k + sqrt(k * k - 1.0));
     }
 }
 
-double bd_drive_torque(const bd_sim *sim, bd_pulley_body *p)
+double bd_drive_torque(const bd_sim *sim, bd_drive *dr, const bd_pulley_body *p, double omega)
 {
-    const bd_drive_def *d = &p->def->drive;
+    const bd_drive_def *d = dr->def;
     double t = sim->t, T = 0.0;
     int stopped = d->stop_mode != BD_STOP_NONE && t >= d->stop_at;
     if (stopped && d->stop_mode == BD_STOP_COAST)
@@ -71,7 +72,7 @@ double bd_drive_torque(const bd_sim *sim, bd_pulley_body *p)
     if (stopped && d->stop_mode == BD_STOP_BRAKE) {
         /* brake: the torque that would stop the pulley this step, at most
          * brake_torque; it holds the pulley once stopped */
-        return -clip(p->omega * p->inertia / sim->dt, d->brake_torque);
+        return -clip(omega * p->inertia / sim->dt, d->brake_torque);
     }
     switch (d->control) {
     case BD_CONTROL_SPEED: {
@@ -79,21 +80,21 @@ double bd_drive_torque(const bd_sim *sim, bd_pulley_body *p)
         double w_ref = bd_start_curve_speed(d, t) / R;
         double w_ref_next = bd_start_curve_speed(d, t + sim->dt) / R;
         double a_ref = (w_ref_next - w_ref) / sim->dt;
-        double err = w_ref - p->omega;
-        double wc = p->ctrl_bandwidth;
-        double J = p->ctrl_inertia;
-        double T_unclipped = J * (a_ref + 2.0 * wc * err + wc * wc * p->integral);
+        double err = w_ref - omega;
+        double wc = dr->ctrl_bandwidth;
+        double J = dr->ctrl_inertia;
+        double T_unclipped = J * (a_ref + 2.0 * wc * err + wc * wc * dr->integral);
         T = clip(T_unclipped, d->max_torque);
         /* integrate only while not saturated (anti-windup) */
         if (T == T_unclipped)
-            p->integral += err * sim->dt;
+            dr->integral += err * sim->dt;
         return T;
     }
     case BD_CONTROL_TORQUE:
         T = bd_table_eval(&d->torque, t);
         break;
     case BD_CONTROL_MOTOR:
-        T = t >= d->motor.start_time ? motor_torque(p, p->omega) * d->motor.gear_ratio : 0.0;
+        T = t >= d->motor.start_time ? motor_torque(dr, omega) * d->motor.gear_ratio : 0.0;
         break;
     }
     return clip(T, d->max_torque);

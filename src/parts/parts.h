@@ -8,7 +8,71 @@
 
 #include "model/system.h"
 
+/* The parts mounted on pulleys, one kind per file, as a tagged union with
+ * one switch per phase (part.c), as Box2D's joints. A new part type (a
+ * holdback, a brake, a fluid coupling) is a file, an enum value and a case
+ * in each phase it takes part in. */
+typedef enum bd_part_type {
+    BD_PART_DRIVE = 0,      /* drive.c: speed loop, torque table or motor */
+    BD_PART_TRANSMISSION,   /* transmission.c: a drive through a flat or V belt */
+    BD_PART_TAKEUP          /* takeup.c: the pull on a takeup carriage, its limits */
+} bd_part_type;
+
+/* a drive's controller (drive.c) */
+typedef struct bd_drive {
+    const bd_drive_def *def;
+    double ctrl_inertia;    /* build: kg·m² the speed controller is tuned for */
+    double ctrl_bandwidth;  /* build: rad/s of its closed speed loop */
+    double motor_breakdown; /* build: N·m at the motor shaft (motor control) */
+    double motor_slip_b;    /* build: breakdown slip, - */
+    double integral;        /* step: speed-controller integral state (rad) */
+} bd_drive;
+
+/* a takeup's pull and travel limits (takeup.c); the carriage itself is the
+ * pulley body's (q, qdot) */
+typedef struct bd_takeup {
+    const bd_takeup_def *def;
+    double force_prev;      /* step: N takeup force at the previous step */
+    int at_limit;           /* step: carriage at a travel limit */
+    int limit_hits;         /* stats: times it arrived at a limit */
+    double limit_first_t;   /* stats: s, the first arrival */
+    double limit_first_q;   /* stats: m, at which limit */
+} bd_takeup;
+
+typedef struct bd_part {
+    bd_part_type type;
+    int pulley;             /* the pulley it is mounted on */
+    union {
+        bd_drive drive;                 /* BD_PART_DRIVE */
+        struct {
+            bd_drive drive;             /* the motor's controller */
+            struct bd_transmission *belt;
+        } transmission;                 /* BD_PART_TRANSMISSION */
+        bd_takeup takeup;               /* BD_PART_TAKEUP */
+    } u;
+} bd_part;
+
+/* part.c: the parts of the model, in pulley order (build) */
+int bd_parts_create(bd_sim *sim, bd_diag *diag);
+void bd_parts_free(bd_sim *sim);
+/* the drive (or transmission) part of pulley p, or NULL */
+bd_part *bd_pulley_drive_part(const bd_sim *sim, const bd_pulley_body *p);
+bd_drive *bd_part_drive(bd_part *part);
+/* phases, one switch each */
+double bd_part_torque(bd_sim *sim, bd_part *part);
+void bd_part_advance(bd_sim *sim, bd_part *part, double omega_old, double w_mid, double *ke,
+                     double *w_nc);
+/* a takeup's potential −(F + wrap weight)·q; 0 for the others */
+double bd_part_potential(const bd_sim *sim, const bd_part *part);
+/* the transmissions' stored energy, J */
+double bd_parts_stored_energy(const bd_sim *sim);
+/* run statistics back to zero (after stabilization) */
+void bd_part_reset(bd_part *part);
+/* events the step recorded, said after the run */
+void bd_part_report_events(bd_sim *sim, const bd_part *part);
+
 /* pulley.c */
+
 /* what every pulley body takes from its definition (build) */
 void bd_pulley_body_init(bd_sim *sim, bd_pulley_body *p, const bd_pulley_def *pd);
 /* part torques phase: the drive's (or transmission's) and the bearing's
@@ -23,33 +87,34 @@ void bd_pulleys_advance(bd_sim *sim, double *ke, double *w_nc);
 void bd_idlers_advance(bd_sim *sim, double *ke, double *w_nc);
 
 /* drive.c */
-/* tune the speed loop for the inertia it moves (build) */
-void bd_drive_prepare(bd_sim *sim, bd_pulley_body *p, double reflected_inertia);
-double bd_drive_torque(const bd_sim *sim, bd_pulley_body *p);
+/* tune the speed loop of drive d on pulley p for the inertia it moves */
+void bd_drive_prepare(bd_sim *sim, bd_drive *d, const bd_pulley_body *p,
+                      double reflected_inertia);
+/* the drive's torque on pulley p when the shaft turns at omega (rad/s) */
+double bd_drive_torque(const bd_sim *sim, bd_drive *d, const bd_pulley_body *p, double omega);
 
 /* takeup.c */
-double bd_takeup_force(const bd_sim *sim, const bd_pulley_body *p, double t);
-/* advance the carriage one step; returns the non-conservative work done on
- * it this step (J) and adds the set-point work to *input */
-double bd_takeup_advance(bd_sim *sim, bd_pulley_body *p, double *input);
+double bd_takeup_force(const bd_takeup *tk, double t);
+/* advance pulley p's carriage one step; returns the non-conservative work
+ * done on it this step (J) and adds the set-point work to *input */
+double bd_takeup_advance(bd_sim *sim, bd_takeup *tk, bd_pulley_body *p, double *input);
 
 /* transmission.c: belt transmissions of drives (seed 004) */
-int bd_transmissions_create(bd_sim *sim, bd_diag *diag);
+struct bd_transmission *bd_transmission_create(const bd_sim *sim, bd_pulley_body *p);
 /* torque of the transmission on its pulley this step */
-double bd_transmission_torque(bd_sim *sim, bd_pulley_body *p);
+double bd_transmission_torque(bd_sim *sim, bd_part *part);
 /* advance the transmission over the step in which its pulley went from
  * omega_old to p->omega; books its energy */
-void bd_transmission_advance(bd_sim *sim, bd_pulley_body *p, double omega_old, double *ke,
+void bd_transmission_advance(bd_sim *sim, bd_part *part, double omega_old, double *ke,
                              double *w_nc);
-void bd_transmissions_free(bd_sim *sim);
-/* after the drives are prepared: the speed loops of transmission drives */
-void bd_transmissions_tune(bd_sim *sim);
-/* elastic energy of the transmissions' spans, J */
-double bd_transmissions_potential(const bd_sim *sim);
+/* after the drives are prepared: its speed loop */
+void bd_transmission_tune(const bd_sim *sim, bd_part *part);
+/* elastic energy of its spans, J */
+double bd_transmission_potential(const struct bd_transmission *tr);
 /* motor sheave speed (rad/s) and the belt's slip on both sheaves (m/s) */
-void bd_transmission_state(const bd_pulley_body *p, double *w_motor, double *slip_motor,
-                           double *slip_pulley);
+void bd_transmission_state(const bd_part *part, const bd_pulley_body *p, double *w_motor,
+                           double *slip_motor, double *slip_pulley);
 /* largest slip of the belt on either sheave so far, m/s */
-double bd_transmission_slip_max(const bd_pulley_body *p);
+double bd_transmission_slip_max(const bd_part *part);
 
 #endif

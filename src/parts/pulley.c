@@ -33,7 +33,6 @@ void bd_pulley_body_init(bd_sim *sim, bd_pulley_body *p, const bd_pulley_def *pd
         p->carriage_mass = pd->mass + pd->takeup.mass;
         if (p->movable && p->carriage_mass <= 0.0)
             p->carriage_mass = 1e-3 * sim->belt_mpl * pd->radius;
-        p->force_prev = bd_table_eval(&pd->takeup.force, 0.0);
     }
 }
 
@@ -41,10 +40,15 @@ void bd_pulley_body_init(bd_sim *sim, bd_pulley_body *p, const bd_pulley_def *pd
 double bd_pulley_external_torque(bd_sim *sim, bd_pulley_body *p)
 {
     double T_drive = 0.0;
-    if (p->trans)
-        T_drive = bd_transmission_torque(sim, p);
-    else if (p->def->has_drive && !sim->friction_off)
-        T_drive = bd_drive_torque(sim, p);
+    int any = 0;
+    for (int k = p->first_part; k < p->first_part + p->part_count; k++) {
+        bd_part *part = &sim->parts[k];
+        if (part->type == BD_PART_TAKEUP)
+            continue;
+        double T = bd_part_torque(sim, part);
+        T_drive = any ? T_drive + T : T;
+        any = 1;
+    }
     p->drive_torque = T_drive;
     if (fabs(T_drive) > p->torque_max_abs)
         p->torque_max_abs = fabs(T_drive);
@@ -53,11 +57,11 @@ double bd_pulley_external_torque(bd_sim *sim, bd_pulley_body *p)
 }
 
 /* rotation with the mid-step speed booked (central differences, as the
- * belt nodes), the transmission, the takeup carriage */
+ * belt nodes), then its parts: the drive's work, the transmission, the
+ * takeup carriage */
 void bd_pulleys_advance(bd_sim *sim, double *ke, double *w_nc)
 {
     const double dt = sim->dt;
-    bd_energy *en = &sim->energy;
     for (int i = 0; i < sim->pulley_count; i++) {
         bd_pulley_body *p = &sim->pulleys[i];
         double w_mid = p->omega + 0.5 * p->alpha * dt;
@@ -65,16 +69,7 @@ void bd_pulleys_advance(bd_sim *sim, double *ke, double *w_nc)
         *w_nc += (p->torque_friction + p->bearing_torque) * w_mid * dt;
         double w_old = p->omega;
         p->omega += p->alpha * dt;
-        if (p->trans)
-            bd_transmission_advance(sim, p, w_old, ke, w_nc);
-        else
-            en->input += p->drive_torque * w_mid * dt;
-        if (p->movable) {
-            double qdot_old = p->qdot;
-            p->q_step_start = p->q;
-            *w_nc += bd_takeup_advance(sim, p, &en->input);
-            double qm = 0.5 * (qdot_old + p->qdot);
-            *ke += 0.5 * p->carriage_mass * qm * qm;
-        }
+        for (int k = p->first_part; k < p->first_part + p->part_count; k++)
+            bd_part_advance(sim, &sim->parts[k], w_old, w_mid, ke, w_nc);
     }
 }

@@ -8,22 +8,21 @@
 
 #include <math.h>
 
-double bd_takeup_force(const bd_sim *sim, const bd_pulley_body *p, double t)
+double bd_takeup_force(const bd_takeup *tk, double t)
 {
-    (void)sim;
-    return bd_table_eval(&p->def->takeup.force, t);
+    return bd_table_eval(&tk->def->force, t);
 }
 
 /* advance the carriage one step; returns the non-conservative work done on
  * it this step (J) and adds the set-point work to *input */
-double bd_takeup_advance(bd_sim *sim, bd_pulley_body *p, double *input)
+double bd_takeup_advance(bd_sim *sim, bd_takeup *tk, bd_pulley_body *p, double *input)
 {
-    const bd_takeup_def *td = &p->def->takeup;
-    double F = bd_takeup_force(sim, p, sim->t);
+    const bd_takeup_def *td = tk->def;
+    double F = bd_takeup_force(tk, sim->t);
     /* a changing set force changes the potential −F·q: that is work put in,
      * −∫q·dF, with q at the middle of the interval the force changed over */
-    *input += -(F - p->force_prev) * (p->q - 0.5 * p->qdot * sim->dt);
-    p->force_prev = F;
+    *input += -(F - tk->force_prev) * (p->q - 0.5 * p->qdot * sim->dt);
+    tk->force_prev = F;
     double pull = F - p->def->mass * sim->gravity * p->axis[1] + p->f_axis;
     double q_old = p->qdot;
     p->qddot = pull / p->carriage_mass;
@@ -33,18 +32,18 @@ double bd_takeup_advance(bd_sim *sim, bd_pulley_body *p, double *input)
         q_new = q_new < td->travel_min ? td->travel_min : td->travel_max;
         p->qdot = 0.0;
         p->qddot = 0.0;
-        /* counted here, said once after the run (run.c): no allocation or
+        /* counted here, said once after the run (part.c): no allocation or
          * text in the step loop, and one line however often it bangs */
-        if (!p->at_limit) {
-            if (p->limit_hits == 0) {
-                p->limit_first_t = sim->t;
-                p->limit_first_q = q_new;
+        if (!tk->at_limit) {
+            if (tk->limit_hits == 0) {
+                tk->limit_first_t = sim->t;
+                tk->limit_first_q = q_new;
             }
-            p->limit_hits++;
+            tk->limit_hits++;
         }
-        p->at_limit = 1;
+        tk->at_limit = 1;
     } else {
-        p->at_limit = 0;
+        tk->at_limit = 0;
     }
     double dq = q_new - p->q;
     p->q = q_new;

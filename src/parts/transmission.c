@@ -142,100 +142,81 @@ static void span_solve_run(span_solve *ss, int friction)
     span_residual(ss, D, friction);
 }
 
-int bd_transmissions_create(bd_sim *sim, bd_diag *diag)
+/* the transmission of the drive on pulley p; it takes the drive's inertia
+ * from the pulley to the motor side. NULL when out of memory. */
+bd_transmission *bd_transmission_create(const bd_sim *sim, bd_pulley_body *p)
 {
-    (void)diag;
-    for (int n = 0; n < sim->pulley_count; n++) {
-        bd_pulley_body *p = &sim->pulleys[n];
-        const bd_pulley_def *pd = p->def;
-        if (!pd->has_drive || !pd->drive.has_transmission)
-            continue;
-        const bd_transmission_def *td = &pd->drive.transmission;
-        bd_transmission *tr = calloc(1, sizeof *tr);
-        if (!tr)
-            return 1;
-        p->trans = tr;
-        tr->def = td;
-        tr->r_m = td->motor_sheave_radius;
-        tr->r_p = td->pulley_sheave_radius;
-        tr->i = tr->r_p / tr->r_m;
-        /* the drive's inertia belongs to the motor side */
-        tr->J_m = pd->drive.inertia / (tr->i * tr->i);
-        if (tr->J_m < 1e-6)
-            tr->J_m = 1e-6;
-        if (p->inertia - pd->drive.inertia > 0.0)
-            p->inertia -= pd->drive.inertia;
-        tr->k = td->span_stiffness;
-        tr->T0 = td->pretension;
-        double f = td->v_belt ? bd_bpl_vbelt_friction(td->friction, td->sheave_angle)
-                              : td->friction;
-        bd_bpl law = {f, BD_PI, td->belt_mass_per_length, td->velocity_threshold,
-                      td->force_threshold};
-        /* open belt: the smaller sheave has the smaller wrap */
-        double C = td->center_distance > 0.0 ? td->center_distance : 3.0 * (tr->r_m + tr->r_p);
-        double d = (tr->r_p - tr->r_m) / C;
-        d = d > 0.99 ? 0.99 : (d < -0.99 ? -0.99 : d);
-        tr->law_m = tr->law_p = law;
-        tr->law_m.theta = BD_PI - 2.0 * asin(d);
-        tr->law_p.theta = BD_PI + 2.0 * asin(d);
-        tr->m_w = td->belt_mass_per_length * tr->law_m.theta * tr->r_m;
-        double floor_m = WRAP_MASS_FLOOR * tr->J_m / (tr->r_m * tr->r_m);
-        if (tr->m_w < floor_m)
-            tr->m_w = floor_m;
-        /* ζ of the motor sheave turning against the two spans */
-        double w_t = tr->r_m * sqrt(2.0 * tr->k / tr->J_m);
-        tr->c = SPAN_DAMPING_RATIO * 2.0 * tr->J_m * w_t / (2.0 * tr->r_m * tr->r_m);
-        double sub = ceil(sim->dt * w_t / 0.1);
-        tr->sub = sub < 1.0 ? 1 : (sub > MAX_SUBSTEPS ? MAX_SUBSTEPS : (int)sub);
-    }
-    return 0;
+    const bd_pulley_def *pd = p->def;
+    const bd_transmission_def *td = &pd->drive.transmission;
+    bd_transmission *tr = calloc(1, sizeof *tr);
+    if (!tr)
+        return NULL;
+    tr->def = td;
+    tr->r_m = td->motor_sheave_radius;
+    tr->r_p = td->pulley_sheave_radius;
+    tr->i = tr->r_p / tr->r_m;
+    /* the drive's inertia belongs to the motor side */
+    tr->J_m = pd->drive.inertia / (tr->i * tr->i);
+    if (tr->J_m < 1e-6)
+        tr->J_m = 1e-6;
+    if (p->inertia - pd->drive.inertia > 0.0)
+        p->inertia -= pd->drive.inertia;
+    tr->k = td->span_stiffness;
+    tr->T0 = td->pretension;
+    double f = td->v_belt ? bd_bpl_vbelt_friction(td->friction, td->sheave_angle)
+                          : td->friction;
+    bd_bpl law = {f, BD_PI, td->belt_mass_per_length, td->velocity_threshold,
+                  td->force_threshold};
+    /* open belt: the smaller sheave has the smaller wrap */
+    double C = td->center_distance > 0.0 ? td->center_distance : 3.0 * (tr->r_m + tr->r_p);
+    double d = (tr->r_p - tr->r_m) / C;
+    d = d > 0.99 ? 0.99 : (d < -0.99 ? -0.99 : d);
+    tr->law_m = tr->law_p = law;
+    tr->law_m.theta = BD_PI - 2.0 * asin(d);
+    tr->law_p.theta = BD_PI + 2.0 * asin(d);
+    tr->m_w = td->belt_mass_per_length * tr->law_m.theta * tr->r_m;
+    double floor_m = WRAP_MASS_FLOOR * tr->J_m / (tr->r_m * tr->r_m);
+    if (tr->m_w < floor_m)
+        tr->m_w = floor_m;
+    /* ζ of the motor sheave turning against the two spans */
+    double w_t = tr->r_m * sqrt(2.0 * tr->k / tr->J_m);
+    tr->c = SPAN_DAMPING_RATIO * 2.0 * tr->J_m * w_t / (2.0 * tr->r_m * tr->r_m);
+    double sub = ceil(sim->dt * w_t / 0.1);
+    tr->sub = sub < 1.0 ? 1 : (sub > MAX_SUBSTEPS ? MAX_SUBSTEPS : (int)sub);
+    return tr;
 }
 
 /* a speed loop acts on the motor sheave once per conveyor step: its
  * proportional gain is a damper 2·ω_c·J/i² on J_m, explicit, kept below a
  * quarter of its stability limit as drive.c does for a pulley; and the
  * inertia it is tuned for gains the motor side's J_m·i² */
-void bd_transmissions_tune(bd_sim *sim)
+void bd_transmission_tune(const bd_sim *sim, bd_part *part)
 {
-    for (int n = 0; n < sim->pulley_count; n++) {
-        bd_pulley_body *p = &sim->pulleys[n];
-        bd_transmission *tr = p->trans;
-        if (!tr)
-            continue;
-        p->ctrl_inertia += tr->J_m * tr->i * tr->i;
-        double w_max = 0.25 * tr->J_m * tr->i * tr->i / (sim->dt * p->ctrl_inertia);
-        if (p->ctrl_bandwidth > w_max)
-            p->ctrl_bandwidth = w_max;
-    }
-}
-
-void bd_transmissions_free(bd_sim *sim)
-{
-    for (int n = 0; n < sim->pulley_count; n++) {
-        free(sim->pulleys[n].trans);
-        sim->pulleys[n].trans = NULL;
-    }
+    bd_transmission *tr = part->u.transmission.belt;
+    bd_drive *d = &part->u.transmission.drive;
+    d->ctrl_inertia += tr->J_m * tr->i * tr->i;
+    double w_max = 0.25 * tr->J_m * tr->i * tr->i / (sim->dt * d->ctrl_inertia);
+    if (d->ctrl_bandwidth > w_max)
+        d->ctrl_bandwidth = w_max;
 }
 
 /* the drive's torque on the motor sheave (at the pulley-equivalent speed)
  * for this step; returns the sheave's torque on the pulley */
-double bd_transmission_torque(bd_sim *sim, bd_pulley_body *p)
+double bd_transmission_torque(bd_sim *sim, bd_part *part)
 {
-    bd_transmission *tr = p->trans;
+    bd_transmission *tr = part->u.transmission.belt;
     tr->Q_m = 0.0;
-    if (!sim->friction_off) {
-        double w = p->omega;
-        p->omega = tr->w_m / tr->i;
-        tr->Q_m = bd_drive_torque(sim, p) / tr->i;
-        p->omega = w;
-    }
+    if (!sim->friction_off)
+        tr->Q_m = bd_drive_torque(sim, &part->u.transmission.drive, &sim->pulleys[part->pulley],
+                                  tr->w_m / tr->i) / tr->i;
     return tr->torque_p;
 }
 
-void bd_transmission_advance(bd_sim *sim, bd_pulley_body *p, double omega_old, double *ke,
+void bd_transmission_advance(bd_sim *sim, bd_part *part, double omega_old, double *ke,
                              double *w_nc)
 {
-    bd_transmission *tr = p->trans;
+    bd_transmission *tr = part->u.transmission.belt;
+    bd_pulley_body *p = &sim->pulleys[part->pulley];
     const int sub = tr->sub;
     const double h = sim->dt / sub, m = tr->m_w, J = tr->J_m;
     const double b = tr->def->bearing_damping;
@@ -286,28 +267,22 @@ void bd_transmission_advance(bd_sim *sim, bd_pulley_body *p, double omega_old, d
 }
 
 /* elastic energy of the spans beyond the pretension: k·(x_m − x_p)² */
-double bd_transmissions_potential(const bd_sim *sim)
+double bd_transmission_potential(const bd_transmission *tr)
 {
-    double e = 0.0;
-    for (int n = 0; n < sim->pulley_count; n++) {
-        const bd_transmission *tr = sim->pulleys[n].trans;
-        if (tr)
-            e += tr->k * (tr->x_m - tr->x_p) * (tr->x_m - tr->x_p);
-    }
-    return e;
+    return tr->k * (tr->x_m - tr->x_p) * (tr->x_m - tr->x_p);
 }
 
 /* motor sheave speed, rad/s, and the slip of the belt on it, m/s */
-void bd_transmission_state(const bd_pulley_body *p, double *w_motor, double *slip_motor,
-                           double *slip_pulley)
+void bd_transmission_state(const bd_part *part, const bd_pulley_body *p, double *w_motor,
+                           double *slip_motor, double *slip_pulley)
 {
-    const bd_transmission *tr = p->trans;
+    const bd_transmission *tr = part->u.transmission.belt;
     *w_motor = tr->w_m;
     *slip_motor = tr->v_m - tr->r_m * tr->w_m;
     *slip_pulley = tr->v_p - tr->r_p * p->omega;
 }
 
-double bd_transmission_slip_max(const bd_pulley_body *p)
+double bd_transmission_slip_max(const bd_part *part)
 {
-    return p->trans->slip_max;
+    return part->u.transmission.belt->slip_max;
 }

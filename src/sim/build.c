@@ -1,6 +1,7 @@
 /* Building a simulation from a validated model: the pulley bodies, the belt
- * (its formulation's build), the drive monitors, the time step, the
- * transmissions and the drives' speed loops, and the start from rest.
+ * (its formulation's build), the drive monitors, the time step, the parts
+ * (drives, transmissions, takeups) and the drives' speed loops, and the
+ * start from rest.
  * Everything is allocated here; the step loop allocates nothing. */
 #include "sim/engine.h"
 #include "sim/timestep.h"
@@ -35,8 +36,13 @@ static void prepare_drives(bd_sim *sim)
             J += sim->pulleys[k].inertia * (R / r) * (R / r);
         }
         J = sim->belt->support_inertia(sim, R, J);
-        bd_drive_prepare(sim, p, J / (speed_drives > 0 ? speed_drives : 1));
+        bd_drive_prepare(sim, bd_part_drive(bd_pulley_drive_part(sim, p)), p,
+                         J / (speed_drives > 0 ? speed_drives : 1));
     }
+    /* a transmission's speed loop also moves its motor side */
+    for (int k = 0; k < sim->part_count; k++)
+        if (sim->parts[k].type == BD_PART_TRANSMISSION)
+            bd_transmission_tune(sim, &sim->parts[k]);
 }
 
 int bd_sim_create(const bd_model_def *def, bd_sim **out, bd_diag *diag)
@@ -60,12 +66,11 @@ int bd_sim_create(const bd_model_def *def, bd_sim **out, bd_diag *diag)
     for (int i = 0; i < sim->pulley_count; i++)
         if (sim->pulleys[i].def->has_drive)
             bd_monitor_init(sim, &sim->pulleys[i]);
-    if (bd_time_step_choose(sim, diag) || bd_transmissions_create(sim, diag)) {
+    if (bd_time_step_choose(sim, diag) || bd_parts_create(sim, diag)) {
         bd_sim_free(sim);
         return 1;
     }
     prepare_drives(sim);
-    bd_transmissions_tune(sim);
     bd_sim_start_at_rest(sim);
     sim->tension_max = -INFINITY;
     sim->tension_min = INFINITY;
@@ -82,7 +87,7 @@ void bd_sim_free(bd_sim *sim)
     if (!sim)
         return;
     sim->belt->free(sim);
-    bd_transmissions_free(sim);
+    bd_parts_free(sim);
     double *arrays[] = {sim->x,   sim->y,   sim->vx,   sim->vy,       sim->fx,      sim->fy,
                         sim->fnx, sim->fny, sim->mass, sim->material, sim->tension, sim->s_node0};
     for (size_t i = 0; i < sizeof arrays / sizeof arrays[0]; i++)

@@ -20,10 +20,10 @@ double bd_energy_potential(const bd_sim *sim)
         const bd_pulley_body *p = &sim->pulleys[i];
         e += p->def->mass * g * p->cy;
         e += belt->wrap_energy(sim, p);
-        if (p->movable)
-            e -= (bd_takeup_force(sim, p, sim->t) + p->wrap_pull) * p->q;
+        for (int k = p->first_part; k < p->first_part + p->part_count; k++)
+            e += bd_part_potential(sim, &sim->parts[k]);
     }
-    return e + bd_transmissions_potential(sim);
+    return e + bd_parts_stored_energy(sim);
 }
 
 /* the largest |E_k + E_p + E_d − E_in − E_0| / max(|E_0|, E_in, max E_k, 1 J)

@@ -9,6 +9,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "parts/parts.h"
 #include "sensors/sensors.h"
 
 #define STABILIZE_MAX_STEPS 2000000L
@@ -76,8 +77,8 @@ int bd_sim_stabilize(bd_sim *sim, FILE *log)
         p->q = 0.0;
         p->travel_min = p->travel_max = 0.0;
         p->torque_max_abs = 0.0;
-        p->integral = 0.0;
-        p->limit_hits = 0;
+        for (int m = p->first_part; m < p->first_part + p->part_count; m++)
+            bd_part_reset(&sim->parts[m]);
         if (p->def->has_drive)
             bd_monitor_reset(sim, p);
     }

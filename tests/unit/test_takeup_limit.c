@@ -15,6 +15,7 @@
 #include <unistd.h>
 
 #include "sim/engine.h"
+#include "parts/parts.h"
 #include "testlib.h"
 
 static const char *model =
@@ -44,12 +45,14 @@ int main(void)
     char err[512] = "";
     CHECK(bd_sim_run(sim, &opt, err, sizeof err) == BD_RUN_OK);
     const bd_pulley_body *p = &sim->pulleys[1];
+    const bd_takeup *tk = &sim->parts[p->first_part].u.takeup;
+    CHECK(sim->parts[p->first_part].type == BD_PART_TAKEUP);
     printf("travel %.4f .. %.4f m, arrivals at a limit %d\n", p->travel_min, p->travel_max,
-           p->limit_hits);
+           tk->limit_hits);
     CHECK(p->travel_min >= -0.05 - 1e-12);
     CHECK(p->travel_max <= 0.05 + 1e-12);
     CHECK_ABS(p->travel_max, 0.05, 1e-12);
-    CHECK(p->limit_hits >= 1);
+    CHECK(tk->limit_hits >= 1);
     int said = 0;
     for (int i = 0; i < sim->warning_count; i++) {
         printf("warning: %s\n", sim->warnings[i]);

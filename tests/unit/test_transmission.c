@@ -76,7 +76,8 @@ static void held(const char *formulation, const char *belt)
     double theta_m = PI - 2.0 * asin((0.3 - 0.1) / (3.0 * (0.1 + 0.3)));
     double want = 0.3 * 2.0 * 1000.0 * tanh(0.5 * f * theta_m);
     double w_m, slip_m, slip_p;
-    bd_transmission_state(&sim->pulleys[0], &w_m, &slip_m, &slip_p);
+    bd_transmission_state(bd_pulley_drive_part(sim, &sim->pulleys[0]), &sim->pulleys[0], &w_m,
+                          &slip_m, &slip_p);
     printf("held %s %s belt: pulley torque %.2f N m (closed form %.2f, %+.3f%%), slip on the "
            "motor sheave %.3f m/s, on the pulley sheave %.2e m/s\n", formulation, belt, sum / n,
            want, 100.0 * (sum / n / want - 1.0), slip_m, slip_p);
@@ -142,7 +143,8 @@ static void dol(double pretension, double *max_slip, double *end_slip, double *b
             CHECK(0);
             break;
         }
-        bd_transmission_state(&sim->pulleys[1], &w_m, &slip_m, &slip_p);
+        bd_transmission_state(bd_pulley_drive_part(sim, &sim->pulleys[1]), &sim->pulleys[1],
+                              &w_m, &slip_m, &slip_p);
         if (fabs(slip_m) > *max_slip)
             *max_slip = fabs(slip_m);
     }

@@ -1,0 +1,171 @@
+/* The parts mounted on pulleys as one table (parts.h): built in pulley
+ * order, each pulley's parts in the order drive (or transmission), takeup;
+ * one switch per phase. */
+#include "parts/parts.h"
+
+#include <stdlib.h>
+
+#include "base/alloc.h"
+
+static int parts_of(const bd_pulley_def *pd)
+{
+    return (pd->has_drive ? 1 : 0) + (pd->has_takeup && pd->takeup.type != BD_TAKEUP_FIXED);
+}
+
+int bd_parts_create(bd_sim *sim, bd_diag *diag)
+{
+    const bd_model_def *def = sim->def;
+    int total = 0;
+    for (int i = 0; i < sim->pulley_count; i++)
+        total += parts_of(&def->pulleys[i]);
+    sim->part_count = total;
+    sim->parts = bd_xcalloc((size_t)total, sizeof *sim->parts);
+    int at = 0;
+    for (int i = 0; i < sim->pulley_count; i++) {
+        bd_pulley_body *p = &sim->pulleys[i];
+        const bd_pulley_def *pd = p->def;
+        p->first_part = at;
+        p->part_count = parts_of(pd);
+        if (pd->has_drive) {
+            bd_part *part = &sim->parts[at++];
+            part->pulley = i;
+            if (pd->drive.has_transmission) {
+                part->type = BD_PART_TRANSMISSION;
+                part->u.transmission.drive.def = &pd->drive;
+                part->u.transmission.belt = bd_transmission_create(sim, p);
+                if (!part->u.transmission.belt) {
+                    bd_diag_error(diag, def->source, pd->drive.mark,
+                                  "pulleys[%d] '%s': out of memory for its transmission", i,
+                                  pd->name);
+                    return 1;
+                }
+            } else {
+                part->type = BD_PART_DRIVE;
+                part->u.drive.def = &pd->drive;
+            }
+        }
+        if (pd->has_takeup && pd->takeup.type != BD_TAKEUP_FIXED) {
+            bd_part *part = &sim->parts[at++];
+            part->type = BD_PART_TAKEUP;
+            part->pulley = i;
+            part->u.takeup.def = &pd->takeup;
+            part->u.takeup.force_prev = bd_table_eval(&pd->takeup.force, 0.0);
+        }
+    }
+    return 0;
+}
+
+void bd_parts_free(bd_sim *sim)
+{
+    for (int k = 0; k < sim->part_count; k++)
+        if (sim->parts[k].type == BD_PART_TRANSMISSION)
+            free(sim->parts[k].u.transmission.belt);
+    free(sim->parts);
+    sim->parts = NULL;
+    sim->part_count = 0;
+}
+
+bd_part *bd_pulley_drive_part(const bd_sim *sim, const bd_pulley_body *p)
+{
+    for (int k = p->first_part; k < p->first_part + p->part_count; k++) {
+        bd_part *part = &sim->parts[k];
+        if (part->type == BD_PART_DRIVE || part->type == BD_PART_TRANSMISSION)
+            return part;
+    }
+    return NULL;
+}
+
+bd_drive *bd_part_drive(bd_part *part)
+{
+    switch (part->type) {
+    case BD_PART_DRIVE: return &part->u.drive;
+    case BD_PART_TRANSMISSION: return &part->u.transmission.drive;
+    case BD_PART_TAKEUP: break;
+    }
+    return NULL;
+}
+
+/* part torques phase: what the part puts on its pulley's shaft. A drive is
+ * off while stabilizing; a transmission then still carries its belt. */
+double bd_part_torque(bd_sim *sim, bd_part *part)
+{
+    bd_pulley_body *p = &sim->pulleys[part->pulley];
+    switch (part->type) {
+    case BD_PART_DRIVE:
+        return sim->friction_off ? 0.0 : bd_drive_torque(sim, &part->u.drive, p, p->omega);
+    case BD_PART_TRANSMISSION: return bd_transmission_torque(sim, part);
+    case BD_PART_TAKEUP: break;
+    }
+    return 0.0;
+}
+
+/* parts advance phase, after the pulley turned from omega_old at the
+ * mid-step speed w_mid */
+void bd_part_advance(bd_sim *sim, bd_part *part, double omega_old, double w_mid, double *ke,
+                     double *w_nc)
+{
+    bd_pulley_body *p = &sim->pulleys[part->pulley];
+    bd_energy *en = &sim->energy;
+    switch (part->type) {
+    case BD_PART_DRIVE:
+        en->input += p->drive_torque * w_mid * sim->dt;
+        break;
+    case BD_PART_TRANSMISSION:
+        bd_transmission_advance(sim, part, omega_old, ke, w_nc);
+        break;
+    case BD_PART_TAKEUP: {
+        double qdot_old = p->qdot;
+        p->q_step_start = p->q;
+        *w_nc += bd_takeup_advance(sim, &part->u.takeup, p, &en->input);
+        double qm = 0.5 * (qdot_old + p->qdot);
+        *ke += 0.5 * p->carriage_mass * qm * qm;
+        break;
+    }
+    }
+}
+
+double bd_part_potential(const bd_sim *sim, const bd_part *part)
+{
+    const bd_pulley_body *p = &sim->pulleys[part->pulley];
+    switch (part->type) {
+    case BD_PART_TAKEUP:
+        return -(bd_takeup_force(&part->u.takeup, sim->t) + p->wrap_pull) * p->q;
+    case BD_PART_DRIVE:
+    case BD_PART_TRANSMISSION: break;
+    }
+    return 0.0;
+}
+
+double bd_parts_stored_energy(const bd_sim *sim)
+{
+    double e = 0.0;
+    for (int k = 0; k < sim->part_count; k++)
+        if (sim->parts[k].type == BD_PART_TRANSMISSION)
+            e += bd_transmission_potential(sim->parts[k].u.transmission.belt);
+    return e;
+}
+
+void bd_part_reset(bd_part *part)
+{
+    switch (part->type) {
+    case BD_PART_DRIVE: part->u.drive.integral = 0.0; break;
+    case BD_PART_TRANSMISSION: part->u.transmission.drive.integral = 0.0; break;
+    case BD_PART_TAKEUP: part->u.takeup.limit_hits = 0; break;
+    }
+}
+
+void bd_part_report_events(bd_sim *sim, const bd_part *part)
+{
+    switch (part->type) {
+    case BD_PART_TAKEUP: {
+        const bd_takeup *tk = &part->u.takeup;
+        if (tk->limit_hits > 0)
+            bd_sim_warn(sim, "takeup '%s' reached the end of its travel (%g m) at t = %.3f s%s",
+                        sim->pulleys[part->pulley].def->name, tk->limit_first_q,
+                        tk->limit_first_t, tk->limit_hits > 1 ? " and again later" : "");
+        break;
+    }
+    case BD_PART_DRIVE:
+    case BD_PART_TRANSMISSION: break;
+    }
+}
