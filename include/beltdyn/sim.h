@@ -86,10 +86,76 @@ typedef struct bd_run_result {
 
 void bd_sim_result(const bd_sim *sim, bd_run_result *r);
 
-/* a few read-outs for tests and tools */
-double bd_sim_time(const bd_sim *sim);
-double bd_sim_time_step(const bd_sim *sim);
+/* Read-outs of the state now, for tests, tools and programs that step a
+ * simulation themselves. They change nothing. */
+double bd_sim_time(const bd_sim *sim);           /* s */
+double bd_sim_time_step(const bd_sim *sim);      /* s */
 int bd_sim_node_count(const bd_sim *sim);
+const char *bd_sim_formulation(const bd_sim *sim);   /* "discrete", "axial" */
+double bd_sim_belt_length(const bd_sim *sim);    /* m, the loop's path at t = 0 */
+/* m, length of the span leaving pulley i */
+double bd_sim_span_length(const bd_sim *sim, int pulley);
+
+typedef struct bd_node_state {
+    double x_m, y_m;           /* position */
+    double vx_mps, vy_mps;     /* velocity (at the last half step) */
+    double mass_kg;            /* belt and material */
+    double tension_N;          /* of the element from this node to the next */
+} bd_node_state;
+/* node i (0 ≤ i < node count); 0 ok, -1 out of range */
+int bd_sim_node(const bd_sim *sim, int i, bd_node_state *out);
+/* the belt's mean speed along itself, momentum / mass, m/s */
+double bd_sim_belt_speed(const bd_sim *sim);
+/* total mass of belt and material, kg */
+double bd_sim_belt_mass(const bd_sim *sim);
+
+typedef struct bd_pulley_state {
+    double omega_rad_s;        /* + drives the belt forward */
+    double drive_torque_Nm;    /* drive (or transmission) torque this step */
+    double travel_m;           /* takeup carriage travel along its axis */
+    double x_m, y_m;           /* centre */
+    double radius_m, inertia_kgm2;
+    int has_transmission;
+    double motor_omega_rad_s;  /* transmission: motor sheave speed */
+    double slip_motor_mps, slip_pulley_mps;  /* transmission: belt slip on each sheave */
+} bd_pulley_state;
+int bd_sim_pulley_count(const bd_sim *sim);
+int bd_sim_pulley(const bd_sim *sim, int i, bd_pulley_state *out);
+
+typedef struct bd_idler_state {
+    double x_m, y_m;           /* centre */
+    double radius_m, inertia_kgm2, omega_rad_s;
+    int set;                   /* its entry in the model's idlers list */
+} bd_idler_state;
+/* idlers as bodies (the discrete belt; the axial belt spreads them and
+ * has none) */
+int bd_sim_idler_count(const bd_sim *sim);
+int bd_sim_idler(const bd_sim *sim, int i, bd_idler_state *out);
+/* idler set k as laid: how many idlers, at what actual spacing (m) */
+int bd_sim_idler_set(const bd_sim *sim, int k, int *count, double *spacing_m);
+
+typedef struct bd_probe_state {
+    double tension_N, speed_mps;   /* the belt at the probe now */
+    double x_m, y_m, s_m;          /* the probe's fixed point */
+} bd_probe_state;
+int bd_sim_probe_count(const bd_sim *sim);
+int bd_sim_probe(const bd_sim *sim, int i, bd_probe_state *out);
+
+/* the energy account (cli.md `energy`): kinetic at the last mid step,
+ * potential as last booked (each output time, or every step once asked
+ * for), dissipated and input so far, E_0 at the start */
+typedef struct bd_energy_state {
+    double kinetic_J, potential_J, dissipated_J, input_J, initial_J;
+    double balance_error_rel;      /* largest so far */
+} bd_energy_state;
+void bd_sim_energy(const bd_sim *sim, bd_energy_state *out);
+/* book the potential energy in every step from now on (slower) */
+void bd_sim_book_energy_every_step(bd_sim *sim, int on);
+/* the potential energy of the state now, J */
+double bd_sim_potential_energy(const bd_sim *sim);
+
+int bd_sim_warning_count(const bd_sim *sim);
+const char *bd_sim_warning(const bd_sim *sim, int i);
 
 #ifdef __cplusplus
 }

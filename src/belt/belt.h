@@ -67,6 +67,8 @@ typedef struct bd_belt_ops {
     double (*element_s)(const bd_sim *sim, int e);
     double (*element_speed)(const bd_sim *sim, int e);
     double (*element_strain)(const bd_sim *sim, int e);
+    /* node i's velocity along the belt there, m/s */
+    double (*node_speed)(const bd_sim *sim, int i);
 
     /* events the formulation recorded in the step, said after the run */
     void (*report_events)(bd_sim *sim);

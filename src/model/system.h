@@ -194,6 +194,7 @@ struct bd_sim {
     /* run control */
     int friction_off;      /* during stabilization: no friction, no drives */
     int want_energy;       /* book the potential energy in the next step */
+    int energy_every_step; /* ... and in every step (bd_sim_book_energy_every_step) */
     char fail_msg[512];
     char **warnings;       /* [warning_count] said after the run */
     int warning_count;

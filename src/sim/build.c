@@ -103,7 +103,3 @@ void bd_sim_free(bd_sim *sim)
     bd_path_free(&sim->path);
     free(sim);
 }
-
-double bd_sim_time(const bd_sim *sim) { return sim->t; }
-double bd_sim_time_step(const bd_sim *sim) { return sim->dt; }
-int bd_sim_node_count(const bd_sim *sim) { return sim->n; }

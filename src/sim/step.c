@@ -104,7 +104,7 @@ int bd_step_once(bd_sim *sim)
     bd_energy *en = &sim->energy;
 
     /* potential energy at t (positions before the update) when asked */
-    if (sim->want_energy)
+    if (sim->want_energy || sim->energy_every_step)
         en->potential = bd_energy_potential(sim);
     /* forces → part torques → wrap coupling → supports */
     if (compute_forces(sim))

@@ -329,6 +329,11 @@ static double element_strain(const bd_sim *sim, int e)
     return sim->tension[e] / sim->EA;
 }
 
+static double node_speed(const bd_sim *sim, int i)
+{
+    return sim->vx[i];
+}
+
 /* a pulley's wrap stores nothing: the seed-004 wrap has no compliance */
 static double wrap_energy(const bd_sim *sim, const bd_pulley_body *p)
 {
@@ -369,5 +374,6 @@ const bd_belt_ops bd_axial_ops = {
     .element_s = element_s,
     .element_speed = element_speed,
     .element_strain = element_strain,
+    .node_speed = node_speed,
     .report_events = bd_axial_report_events,
 };

@@ -72,5 +72,6 @@ void bd_lumped_sample(const bd_sim *sim, const bd_tracker *tr, bd_belt_sample *o
 double bd_lumped_element_s(const bd_sim *sim, int e);
 double bd_lumped_element_speed(const bd_sim *sim, int e);
 double bd_lumped_element_strain(const bd_sim *sim, int e);
+double bd_lumped_node_speed(const bd_sim *sim, int i);
 
 #endif

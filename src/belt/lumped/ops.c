@@ -27,5 +27,6 @@ const bd_belt_ops bd_lumped_ops = {
     .element_s = bd_lumped_element_s,
     .element_speed = bd_lumped_element_speed,
     .element_strain = bd_lumped_element_strain,
+    .node_speed = bd_lumped_node_speed,
     .report_events = NULL,
 };

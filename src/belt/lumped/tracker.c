@@ -115,3 +115,10 @@ double bd_lumped_element_strain(const bd_sim *sim, int e)
 {
     return (bd_lumped_of(sim)->len[e] - sim->l0) / sim->l0;
 }
+
+/* along the element that leaves the node */
+double bd_lumped_node_speed(const bd_sim *sim, int i)
+{
+    const bd_lumped *L = bd_lumped_of(sim);
+    return sim->vx[i] * L->ux[i] + sim->vy[i] * L->uy[i];
+}

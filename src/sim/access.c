@@ -1,0 +1,137 @@
+/* Read-outs of the state (include/beltdyn/sim.h): what a test, a tool or a
+ * program stepping a simulation itself may look at, without the internals.
+ * They change nothing. */
+#include "sim/engine.h"
+
+#include "parts/parts.h"
+
+double bd_sim_time(const bd_sim *sim) { return sim->t; }
+double bd_sim_time_step(const bd_sim *sim) { return sim->dt; }
+int bd_sim_node_count(const bd_sim *sim) { return sim->n; }
+const char *bd_sim_formulation(const bd_sim *sim) { return sim->belt->name; }
+double bd_sim_belt_length(const bd_sim *sim) { return sim->path.length; }
+
+double bd_sim_span_length(const bd_sim *sim, int pulley)
+{
+    if (pulley < 0 || pulley >= sim->pulley_count)
+        return 0.0;
+    return bd_path_span(&sim->path, pulley)->length;
+}
+
+int bd_sim_node(const bd_sim *sim, int i, bd_node_state *out)
+{
+    if (i < 0 || i >= sim->n)
+        return -1;
+    out->x_m = sim->x[i];
+    out->y_m = sim->y[i];
+    out->vx_mps = sim->vx[i];
+    out->vy_mps = sim->vy[i];
+    out->mass_kg = sim->mass[i];
+    out->tension_N = sim->tension[i];
+    return 0;
+}
+
+double bd_sim_belt_speed(const bd_sim *sim)
+{
+    double p = 0.0, m = 0.0;
+    for (int i = 0; i < sim->n; i++) {
+        p += sim->mass[i] * sim->belt->node_speed(sim, i);
+        m += sim->mass[i];
+    }
+    return p / m;
+}
+
+double bd_sim_belt_mass(const bd_sim *sim)
+{
+    double m = 0.0;
+    for (int i = 0; i < sim->n; i++)
+        m += sim->mass[i];
+    return m;
+}
+
+int bd_sim_pulley_count(const bd_sim *sim) { return sim->pulley_count; }
+
+int bd_sim_pulley(const bd_sim *sim, int i, bd_pulley_state *out)
+{
+    if (i < 0 || i >= sim->pulley_count)
+        return -1;
+    const bd_pulley_body *p = &sim->pulleys[i];
+    out->omega_rad_s = p->omega;
+    out->drive_torque_Nm = p->drive_torque;
+    out->travel_m = p->q;
+    out->x_m = p->cx;
+    out->y_m = p->cy;
+    out->radius_m = p->radius;
+    out->inertia_kgm2 = p->inertia;
+    const bd_part *d = bd_pulley_drive_part(sim, p);
+    out->has_transmission = d && d->type == BD_PART_TRANSMISSION;
+    out->motor_omega_rad_s = out->slip_motor_mps = out->slip_pulley_mps = 0.0;
+    if (out->has_transmission)
+        bd_transmission_state(d, p, &out->motor_omega_rad_s, &out->slip_motor_mps,
+                              &out->slip_pulley_mps);
+    return 0;
+}
+
+int bd_sim_idler_count(const bd_sim *sim) { return sim->idler_count; }
+
+int bd_sim_idler(const bd_sim *sim, int i, bd_idler_state *out)
+{
+    if (i < 0 || i >= sim->idler_count)
+        return -1;
+    const bd_idler *id = &sim->idlers[i];
+    out->x_m = id->centre[0];
+    out->y_m = id->centre[1];
+    out->radius_m = id->radius;
+    out->inertia_kgm2 = id->inertia;
+    out->omega_rad_s = id->omega;
+    out->set = id->set;
+    return 0;
+}
+
+int bd_sim_idler_set(const bd_sim *sim, int k, int *count, double *spacing_m)
+{
+    if (k < 0 || k >= sim->def->idler_set_count)
+        return -1;
+    *count = sim->idlers_per_set[k];
+    *spacing_m = sim->idler_spacing[k];
+    return 0;
+}
+
+int bd_sim_probe_count(const bd_sim *sim) { return sim->probe_count; }
+
+int bd_sim_probe(const bd_sim *sim, int i, bd_probe_state *out)
+{
+    if (i < 0 || i >= sim->probe_count)
+        return -1;
+    const bd_tracker *tr = &sim->probes[i].tr;
+    bd_belt_sample b;
+    sim->belt->sample(sim, tr, &b);
+    out->tension_N = b.tension;
+    out->speed_mps = b.speed;
+    out->x_m = tr->p[0];
+    out->y_m = tr->p[1];
+    out->s_m = tr->s;
+    return 0;
+}
+
+void bd_sim_energy(const bd_sim *sim, bd_energy_state *out)
+{
+    const bd_energy *en = &sim->energy;
+    out->kinetic_J = en->kinetic;
+    out->potential_J = en->potential;
+    out->dissipated_J = en->dissipated;
+    out->input_J = en->input;
+    out->initial_J = en->initial;
+    out->balance_error_rel = en->balance_error_rel;
+}
+
+void bd_sim_book_energy_every_step(bd_sim *sim, int on) { sim->energy_every_step = on != 0; }
+
+double bd_sim_potential_energy(const bd_sim *sim) { return bd_energy_potential(sim); }
+
+int bd_sim_warning_count(const bd_sim *sim) { return sim->warning_count; }
+
+const char *bd_sim_warning(const bd_sim *sim, int i)
+{
+    return i >= 0 && i < sim->warning_count ? sim->warnings[i] : NULL;
+}
