@@ -16,7 +16,8 @@
 #include <string.h>
 #include <time.h>
 
-#include "sim/engine.h"
+#include "beltdyn/model.h"
+#include "beltdyn/sim.h"
 
 static const char *overland =
     "name: 10 km bench\n"
@@ -70,7 +71,8 @@ static double timed_run(const char *yaml, double seconds, int verbose)
             fprintf(stderr, "%s\n", d.lines[i]);
         return -1.0;
     }
-    long steps = (long)(seconds / sim->dt);
+    double dt = bd_sim_time_step(sim);
+    long steps = (long)(seconds / dt);
     char err[512];
     double t0 = now();
     if (bd_sim_step(sim, steps, err, sizeof err)) {
@@ -79,10 +81,15 @@ static double timed_run(const char *yaml, double seconds, int verbose)
     }
     double wall = now() - t0;
     if (verbose) {
+        int n = bd_sim_node_count(sim);
+        bd_pulley_state head;
+        bd_sim_pulley(sim, 0, &head);
+        bd_run_result r;
+        bd_sim_result(sim, &r);
         printf("nodes %d, dt %.3g s, %ld steps in %.2f s wall; head speed %.3f m/s, peak "
-               "tension %.0f N\n", sim->n, sim->dt, steps, wall,
-               sim->pulleys[0].omega * sim->pulleys[0].radius, sim->tension_max);
-        printf("node-steps per second: %.3g\n", (double)sim->n * (double)steps / wall);
+               "tension %.0f N\n", n, dt, steps, wall, head.omega_rad_s * head.radius_m,
+               r.tension_max_N);
+        printf("node-steps per second: %.3g\n", (double)n * (double)steps / wall);
     }
     bd_sim_free(sim);
     bd_model_def_free(&def);

@@ -7,7 +7,8 @@
 #include <string.h>
 #include <time.h>
 
-#include "sim/engine.h"
+#include "beltdyn/model.h"
+#include "beltdyn/sim.h"
 
 static const char *model =
     "name: 1 km bench\n"
@@ -53,7 +54,8 @@ int main(int argc, char **argv)
     bd_sim *sim;
     if (bd_sim_create(&def, &sim, &d))
         return 1;
-    long steps = (long)(sim_seconds / sim->dt);
+    double dt = bd_sim_time_step(sim);
+    long steps = (long)(sim_seconds / dt);
     char err[512];
     double t0 = now();
     if (bd_sim_step(sim, steps, err, sizeof err)) {
@@ -61,9 +63,10 @@ int main(int argc, char **argv)
         return 1;
     }
     double wall = now() - t0;
-    printf("nodes %d, idlers %d, dt %.3g s, %ld steps in %.2f s wall\n", sim->n,
-           sim->idler_count, sim->dt, steps, wall);
-    printf("node-steps per second: %.3g\n", (double)sim->n * (double)steps / wall);
+    int n = bd_sim_node_count(sim);
+    printf("nodes %d, idlers %d, dt %.3g s, %ld steps in %.2f s wall\n", n,
+           bd_sim_idler_count(sim), dt, steps, wall);
+    printf("node-steps per second: %.3g\n", (double)n * (double)steps / wall);
     printf("real-time factor: %.3f (simulated s per wall s)\n", sim_seconds / wall);
     bd_sim_free(sim);
     bd_model_def_free(&def);

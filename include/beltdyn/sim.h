@@ -57,6 +57,12 @@ int bd_sim_stabilize(bd_sim *sim, FILE *log);
 /* advance n steps; returns 0, or 1 when the run failed (message in err) */
 int bd_sim_step(bd_sim *sim, long n, char *err, size_t errlen);
 
+/* turn the events the steps only recorded (a takeup at the end of its
+ * travel, a slack belt end at an axial pulley) into warnings; bd_sim_run
+ * does this at its end, a program stepping a simulation itself calls it
+ * before reading the warnings. Saying them twice adds nothing. */
+void bd_sim_report_events(bd_sim *sim);
+
 /* the whole run with outputs; returns one of BD_RUN_*; message in err */
 int bd_sim_run(bd_sim *sim, const bd_run_options *opt, char *err, size_t errlen);
 
@@ -121,6 +127,14 @@ typedef struct bd_pulley_state {
 } bd_pulley_state;
 int bd_sim_pulley_count(const bd_sim *sim);
 int bd_sim_pulley(const bd_sim *sim, int i, bd_pulley_state *out);
+
+typedef struct bd_takeup_state {
+    double travel_m;           /* m, carriage travel along its axis now */
+    double travel_min_m, travel_max_m;  /* m, its extremes over the run so far */
+    int limit_hits;            /* times it arrived at a travel limit so far */
+} bd_takeup_state;
+/* the takeup (gravity or constant force) on pulley i; -1 when it has none */
+int bd_sim_takeup(const bd_sim *sim, int pulley, bd_takeup_state *out);
 
 typedef struct bd_idler_state {
     double x_m, y_m;           /* centre */

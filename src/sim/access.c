@@ -72,6 +72,24 @@ int bd_sim_pulley(const bd_sim *sim, int i, bd_pulley_state *out)
     return 0;
 }
 
+int bd_sim_takeup(const bd_sim *sim, int pulley, bd_takeup_state *out)
+{
+    if (pulley < 0 || pulley >= sim->pulley_count)
+        return -1;
+    const bd_pulley_body *p = &sim->pulleys[pulley];
+    for (int k = p->first_part; k < p->first_part + p->part_count; k++) {
+        const bd_part *part = &sim->parts[k];
+        if (part->type != BD_PART_TAKEUP)
+            continue;
+        out->travel_m = p->q;
+        out->travel_min_m = p->travel_min;
+        out->travel_max_m = p->travel_max;
+        out->limit_hits = part->u.takeup.limit_hits;
+        return 0;
+    }
+    return -1;
+}
+
 int bd_sim_idler_count(const bd_sim *sim) { return sim->idler_count; }
 
 int bd_sim_idler(const bd_sim *sim, int i, bd_idler_state *out)

@@ -15,8 +15,6 @@ void bd_sim_start_at_rest(bd_sim *sim);
 double bd_energy_potential(const bd_sim *sim);
 void bd_energy_update_balance(bd_sim *sim);
 
-/* run.c: turn the events the step recorded into warnings */
-void bd_sim_report_events(bd_sim *sim);
 
 /* the tension field, for the writers: element e's midpoint path
  * coordinate and speed (the formulation's) */

@@ -22,7 +22,8 @@
  * 4. Every run closes its energy balance within 1%.
  *
  * Rolling resistance on a span (model-format.md `idlers`): the idlers carry
- * the weight on count·spacing of the span, count = L/spacing − 1. */
+ * the weight on count·spacing of the span, count = L/spacing − 1.
+ * Includes belt/axial/axial.h: it reads the axial belt's internal load fronts (head_free). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

@@ -23,7 +23,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "sim/engine.h"
+#include "beltdyn/model.h"
+#include "beltdyn/sim.h"
 #include "testlib.h"
 
 static const char *model_fmt =
@@ -83,26 +84,31 @@ static peaks run(const char *formulation, const char *extra)
     bd_sim *sim;
     bd_test_make_sim(yaml, &def, &sim);
     peaks pk = {0.0, 0.0, 0.0, 0.0};
-    long steps = (long)ceil(T_END / sim->dt), k = 0;
+    const double dt = bd_sim_time_step(sim);
+    long steps = (long)ceil(T_END / dt), k = 0;
     double *torque = calloc((size_t)steps, sizeof *torque);
     double *tight = calloc((size_t)steps, sizeof *tight);
     char err[512];
+    bd_pulley_state head;
+    bd_probe_state pr;
     for (; k < steps; k++) {
         if (bd_sim_step(sim, 1, err, sizeof err)) {
             fprintf(stderr, "%s run failed: %s\n", formulation, err);
             CHECK(0);
             break;
         }
-        torque[k] = sim->pulleys[1].drive_torque;
-        tight[k] = bd_belt_point_tension(sim, &sim->probes[0].tr);
+        bd_sim_pulley(sim, 1, &head);
+        bd_sim_probe(sim, 0, &pr);
+        torque[k] = head.drive_torque_Nm;
+        tight[k] = pr.tension_N;
     }
-    long w = lround(WINDOW / sim->dt);
+    long w = lround(WINDOW / dt);
     pk.torque = peak_of_mean(torque, k, w);
     pk.tight = peak_of_mean(tight, k, w);
     pk.torque_raw = peak_of_mean(torque, k, 1);
     pk.tight_raw = peak_of_mean(tight, k, 1);
     printf("%-8s n = %5d, dt = %.3g s: peak torque %.1f N m (raw %.1f), peak tight-side "
-           "tension %.1f N (raw %.1f)\n", formulation, sim->n, sim->dt, pk.torque,
+           "tension %.1f N (raw %.1f)\n", formulation, bd_sim_node_count(sim), dt, pk.torque,
            pk.torque_raw, pk.tight, pk.tight_raw);
     free(torque);
     free(tight);

@@ -1,7 +1,8 @@
 /* Every formula of seed 004 (contact/belt_pulley_law.c) against its closed
  * form. These are algebra, so the tolerances are rounding (1e-12) except
  * where a regularized quantity is compared with its limit: tanh(4·10) = 1 −
- * 4e-35, so at V_rel = 10·V_thr the capstan limit holds to 1e-12 too. */
+ * 4e-35, so at V_rel = 10·V_thr the capstan limit holds to 1e-12 too.
+ * Includes laws/belt_pulley_law.h: it tests that internal law, which no public call shows. */
 #include <math.h>
 #include <stdio.h>
 

@@ -33,8 +33,8 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "beltdyn/sim.h"
 #include "beltdyn/standards.h"
-#include "sim/engine.h"
 #include "testlib.h"
 
 static const char *model =
@@ -85,12 +85,16 @@ int main(void)
     CHECK(bd_test_run_to(sim, 8.0) == 0);
     double sum[4] = {0}, force_sum = 0.0, count = 0.0;
     char err[256];
-    const bd_pulley_body *head = &sim->pulleys[1];
-    while (sim->t < 12.0) {
+    bd_probe_state pr;
+    bd_pulley_state head;
+    while (bd_sim_time(sim) < 12.0) {
         CHECK(bd_sim_step(sim, 1, err, sizeof err) == 0);
-        for (int i = 0; i < 4; i++)
-            sum[i] += bd_belt_point_tension(sim, &sim->probes[i].tr);
-        force_sum += head->drive_torque / RADIUS;
+        for (int i = 0; i < 4; i++) {
+            bd_sim_probe(sim, i, &pr);
+            sum[i] += pr.tension_N;
+        }
+        bd_sim_pulley(sim, 1, &head);
+        force_sum += head.drive_torque_Nm / RADIUS;
         count += 1.0;
     }
     /* static span order: span 0 leaves the tail (carrying), span 1 leaves
@@ -103,7 +107,8 @@ int main(void)
     double corrected[4];
     for (int i = 0; i < 4; i++) {
         double din = span[i]->T_start_N + at[i] * (span[i]->T_end_N - span[i]->T_start_N);
-        double y = sim->probes[i].tr.p[1];
+        bd_sim_probe(sim, i, &pr);
+        double y = pr.y_m;
         double mean = sum[i] / count;
         corrected[i] = mean - MPL * SPEED * SPEED - MPL * g * y;
         printf("%-18s simulated %8.1f N, less m'v^2 and m'g*y (y = %+.2f m) %8.1f N, "
@@ -116,7 +121,8 @@ int main(void)
            st.effective_tension_N, 100.0 * (drive_force / st.effective_tension_N - 1.0));
     CHECK_REL(drive_force, st.effective_tension_N, 0.03);
     /* the drive holds the set speed */
-    CHECK_REL(head->omega * RADIUS, SPEED, 0.01);
+    bd_sim_pulley(sim, 1, &head);
+    CHECK_REL(head.omega_rad_s * RADIUS, SPEED, 0.01);
     bd_static_free(&st);
     bd_sim_free(sim);
     bd_model_def_free(&def);

@@ -24,7 +24,8 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "sim/engine.h"
+#include "beltdyn/model.h"
+#include "beltdyn/sim.h"
 #include "testlib.h"
 
 static const char *loop_model =
@@ -50,22 +51,23 @@ static void run_balance(bd_sim *sim, double duration, double *worst, double *kma
                         double *dissipated, double *input)
 {
     char err[256];
-    sim->energy.potential = bd_energy_potential(sim);
-    double e0 = sim->energy.potential;
+    double e0 = bd_sim_potential_energy(sim);
     *worst = 0.0;
     *kmax = 0.0;
-    while (sim->t < duration) {
-        sim->want_energy = 1;
+    bd_sim_book_energy_every_step(sim, 1);
+    bd_energy_state en;
+    while (bd_sim_time(sim) < duration) {
         CHECK(bd_sim_step(sim, 1, err, sizeof err) == 0);
-        const bd_energy *en = &sim->energy;
-        double bal = fabs(en->kinetic + en->potential + en->dissipated - en->input - e0);
+        bd_sim_energy(sim, &en);
+        double bal = fabs(en.kinetic_J + en.potential_J + en.dissipated_J - en.input_J - e0);
         if (bal > *worst)
             *worst = bal;
-        if (en->kinetic > *kmax)
-            *kmax = en->kinetic;
+        if (en.kinetic_J > *kmax)
+            *kmax = en.kinetic_J;
     }
-    *dissipated = sim->energy.dissipated;
-    *input = sim->energy.input;
+    bd_sim_energy(sim, &en);
+    *dissipated = en.dissipated_J;
+    *input = en.input_J;
 }
 
 static void conservative(void)

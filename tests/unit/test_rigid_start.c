@@ -33,8 +33,8 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "sim/engine.h"
-#include "belt/lumped/lumped.h"
+#include "beltdyn/model.h"
+#include "beltdyn/sim.h"
 #include "testlib.h"
 
 static const double PI = 3.14159265358979323846;
@@ -46,24 +46,26 @@ static const double G = 9.81;
 /* M of the rigid-body equation, kg */
 static double rigid_mass(const bd_sim *sim)
 {
-    double M = 0.0;
-    for (int i = 0; i < sim->n; i++) M += sim->mass[i];
-    for (int i = 0; i < sim->pulley_count; i++)
-        M += sim->pulleys[i].inertia / (sim->pulleys[i].radius * sim->pulleys[i].radius);
-    for (int i = 0; i < sim->idler_count; i++)
-        M += sim->idlers[i].inertia / (sim->idlers[i].radius * sim->idlers[i].radius);
+    double M = bd_sim_belt_mass(sim);
+    for (int i = 0; i < bd_sim_pulley_count(sim); i++) {
+        bd_pulley_state p;
+        bd_sim_pulley(sim, i, &p);
+        M += p.inertia_kgm2 / (p.radius_m * p.radius_m);
+    }
+    for (int i = 0; i < bd_sim_idler_count(sim); i++) {
+        bd_idler_state id;
+        bd_sim_idler(sim, i, &id);
+        M += id.inertia_kgm2 / (id.radius_m * id.radius_m);
+    }
     return M;
 }
 
-/* the belt's mean speed along itself: momentum / mass */
-static double belt_speed(const bd_sim *sim)
+/* the drive pulley (pulley 0 in every model here) now */
+static bd_pulley_state drive_pulley(const bd_sim *sim)
 {
-    double p = 0.0, m = 0.0;
-    for (int i = 0; i < sim->n; i++) {
-        p += sim->mass[i] * (sim->vx[i] * bd_lumped_of(sim)->ux[i] + sim->vy[i] * bd_lumped_of(sim)->uy[i]);
-        m += sim->mass[i];
-    }
-    return p / m;
+    bd_pulley_state p;
+    bd_sim_pulley(sim, 0, &p);
+    return p;
 }
 
 static int step_to(bd_sim *sim, double t)
@@ -79,10 +81,11 @@ static void mean_force(bd_sim *sim, double t0, double t1, double *F, double *v)
     double sf = 0.0, sv = 0.0;
     long n = 0;
     int failed = 0;
-    while (sim->t < t1) {
+    while (bd_sim_time(sim) < t1) {
         failed |= bd_sim_step(sim, 1, err, sizeof err);
-        sf += sim->pulleys[0].drive_torque / R;
-        sv += sim->pulleys[0].omega * R;
+        bd_pulley_state p = drive_pulley(sim);
+        sf += p.drive_torque_Nm / R;
+        sv += p.omega_rad_s * R;
         n++;
     }
     CHECK(!failed);
@@ -179,9 +182,9 @@ static void dol_start(void)
     char err[256];
     int failed = 0;
     double t_sim = -1.0;
-    while (sim->t < 3.0 * t95 && t_sim < 0.0) {
+    while (bd_sim_time(sim) < 3.0 * t95 && t_sim < 0.0) {
         failed |= bd_sim_step(sim, 1, err, sizeof err);
-        if (belt_speed(sim) >= 0.95 * vf) t_sim = sim->t;
+        if (bd_sim_belt_speed(sim) >= 0.95 * vf) t_sim = bd_sim_time(sim);
     }
     CHECK(!failed);
     printf("DOL start: M = %.1f kg, final speed %.4f m/s (Kloss), 95%% of it at %.3f s "
@@ -228,8 +231,7 @@ static void loaded_steady_and_coast(void)
     mean_force(sim, 2.0, 3.0, &F, &v);
     /* idler loads: both strands' belt, the material from the feed point on
      * (the carrying span's idlers stand under 98% of it) */
-    const bd_path_segment *carry = bd_path_span(&sim->path, 1);
-    double Lc = carry->length, Lr = bd_path_span(&sim->path, 0)->length;
+    double Lc = bd_sim_span_length(sim, 1), Lr = bd_sim_span_length(sim, 0);
     double Ll = 0.98 * Lc;
     double want = F_ROLL * G * (M_BELT * (Lc + Lr) + M_LOAD * Ll) + M_LOAD * v * v;
     printf("loaded steady: drive force %.2f N at %.4f m/s; resistances f g (m'G (Lc+Lr) + "
@@ -238,7 +240,7 @@ static void loaded_steady_and_coast(void)
     CHECK_REL(F, want, 0.05);
 
     /* coast from t = 3 s */
-    double M = rigid_mass(sim), v0 = belt_speed(sim);
+    double M = rigid_mass(sim), v0 = bd_sim_belt_speed(sim);
     double Fr = F - M_LOAD * v * v;
     double vs = 0.02 * v0;
     double k = sqrt(M_LOAD / Fr);
@@ -247,9 +249,9 @@ static void loaded_steady_and_coast(void)
     char err[256];
     int failed = 0;
     double t_stop = -1.0;
-    while (sim->t < 3.0 + 2.0 * t_est && t_stop < 0.0) {
+    while (bd_sim_time(sim) < 3.0 + 2.0 * t_est && t_stop < 0.0) {
         failed |= bd_sim_step(sim, 1, err, sizeof err);
-        if (belt_speed(sim) <= vs) t_stop = sim->t - 3.0;
+        if (bd_sim_belt_speed(sim) <= vs) t_stop = bd_sim_time(sim) - 3.0;
     }
     CHECK(!failed);
     printf("coast stop: M = %.1f kg, v0 = %.4f m/s, F_r = %.2f N: to 2%% of v0 in %.3f s "
@@ -271,20 +273,23 @@ static void brake_holds(void)
     char err[256];
     int failed = 0;
     double t_stopped = -1.0;
-    while (sim->t < 6.0 && t_stopped < 0.0) {
+    while (bd_sim_time(sim) < 6.0 && t_stopped < 0.0) {
         failed |= bd_sim_step(sim, 1, err, sizeof err);
-        if (sim->t > 2.5 && fabs(belt_speed(sim)) < 0.005) t_stopped = sim->t;
+        double t = bd_sim_time(sim);
+        if (t > 2.5 && fabs(bd_sim_belt_speed(sim)) < 0.005) t_stopped = t;
     }
     CHECK(t_stopped > 0.0);
     /* after the stop the belt rings elastically against the held pulley
      * (its mean speed swings through zero); holding means no net travel */
     double belt_x = 0.0, pulley_x = 0.0, swing = 0.0, torque = 0.0;
-    while (t_stopped > 0.0 && sim->t < t_stopped + 1.0) {
+    const double dt = bd_sim_time_step(sim);
+    while (t_stopped > 0.0 && bd_sim_time(sim) < t_stopped + 1.0) {
         failed |= bd_sim_step(sim, 1, err, sizeof err);
-        belt_x += belt_speed(sim) * sim->dt;
-        pulley_x += sim->pulleys[0].omega * R * sim->dt;
-        swing = fmax(swing, fabs(belt_speed(sim)));
-        torque = sim->pulleys[0].drive_torque;
+        bd_pulley_state p = drive_pulley(sim);
+        belt_x += bd_sim_belt_speed(sim) * dt;
+        pulley_x += p.omega_rad_s * R * dt;
+        swing = fmax(swing, fabs(bd_sim_belt_speed(sim)));
+        torque = p.drive_torque_Nm;
     }
     CHECK(!failed);
     printf("brake: stopped at %.3f s; over the next 1 s the belt travels %+.5f m (its mean speed "

@@ -14,7 +14,8 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "sim/engine.h"
+#include "beltdyn/model.h"
+#include "beltdyn/sim.h"
 #include "testlib.h"
 
 static const char *model =
@@ -37,20 +38,26 @@ int main(void)
     CHECK(bd_sim_stabilize(sim, stdout) == 0);
     CHECK(bd_test_run_to(sim, 2.0) == 0);
     /* the carry bay in the middle of the span: idlers k and k+1 */
-    int k = sim->idlers_per_set[0] / 2 - 1;
-    const bd_idler *i0 = &sim->idlers[k], *i1 = &sim->idlers[k + 1];
-    double a = sim->idler_spacing[0];
-    double x0 = i0->centre[0], y0 = i0->centre[1] + i0->radius;
-    double x1 = i1->centre[0], y1 = i1->centre[1] + i1->radius;
+    int per_set;
+    double a;
+    bd_sim_idler_set(sim, 0, &per_set, &a);
+    int k = per_set / 2 - 1;
+    bd_idler_state i0, i1;
+    bd_sim_idler(sim, k, &i0);
+    bd_sim_idler(sim, k + 1, &i1);
+    double x0 = i0.x_m, y0 = i0.y_m + i0.radius_m;
+    double x1 = i1.x_m, y1 = i1.y_m + i1.radius_m;
     CHECK_REL(x1 - x0, a, 1e-9);
     double sag = 0.0, tension = 0.0;
-    for (int j = 0; j < sim->n; j++) {
-        if (sim->x[j] <= x0 || sim->x[j] >= x1 || sim->y[j] < -0.1)
+    bd_node_state nd;
+    for (int j = 0; j < bd_sim_node_count(sim); j++) {
+        bd_sim_node(sim, j, &nd);
+        if (nd.x_m <= x0 || nd.x_m >= x1 || nd.y_m < -0.1)
             continue;   /* the carry strand only, between the two idlers */
-        double base = y0 + (y1 - y0) * (sim->x[j] - x0) / (x1 - x0);
-        if (base - sim->y[j] > sag) {
-            sag = base - sim->y[j];
-            tension = sim->tension[j];
+        double base = y0 + (y1 - y0) * (nd.x_m - x0) / (x1 - x0);
+        if (base - nd.y_m > sag) {
+            sag = base - nd.y_m;
+            tension = nd.tension_N;
         }
     }
     double want = 20.0 * 9.81 * a * a / (8.0 * tension);

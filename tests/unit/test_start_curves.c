@@ -20,7 +20,8 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "sim/engine.h"
+#include "beltdyn/model.h"
+#include "beltdyn/sim.h"
 #include "testlib.h"
 
 static const double PI = 3.14159265358979323846;
@@ -84,14 +85,17 @@ static void following(const char *curve, double delay, double creep)
     double sum_v = 0.0, sum_ref = 0.0, window_end = WINDOW;
     long count = 0;
     int failed = 0;
-    while (sim->t < delay + T + 1.0) {
+    bd_pulley_state drive;
+    while (bd_sim_time(sim) < delay + T + 1.0) {
         failed |= bd_sim_step(sim, 1, err, sizeof err);
-        double v = sim->pulleys[0].omega * R, ref = target(curve, delay, creep, sim->t);
+        bd_sim_pulley(sim, 0, &drive);
+        double t = bd_sim_time(sim);
+        double v = drive.omega_rad_s * R, ref = target(curve, delay, creep, t);
         raw = fmax(raw, fabs(v - ref));
         sum_v += v;
         sum_ref += ref;
         count++;
-        if (sim->t < window_end)
+        if (t < window_end)
             continue;
         double d = fabs(sum_v - sum_ref) / (double)count;
         if (d > worst) {
@@ -121,19 +125,22 @@ static void saturation(void)
     int steps = 0, at_limit = 0;
     double above = 0.0;
     int failed = 0;
-    while (sim->t < T) {
+    bd_pulley_state drive;
+    while (bd_sim_time(sim) < T) {
         failed |= bd_sim_step(sim, 1, err, sizeof err);
-        double M = sim->pulleys[0].drive_torque;
+        bd_sim_pulley(sim, 0, &drive);
+        double M = drive.drive_torque_Nm;
         above = fmax(above, fabs(M) - limit);
-        if (sim->t > 0.2) {
+        if (bd_sim_time(sim) > 0.2) {
             steps++;
             at_limit += fabs(M - limit) < 1e-9;
         }
     }
-    double lag = target("linear", 0.0, 0.0, sim->t) - sim->pulleys[0].omega * R;
+    bd_sim_pulley(sim, 0, &drive);
+    double lag = target("linear", 0.0, 0.0, bd_sim_time(sim)) - drive.omega_rad_s * R;
     printf("saturation: torque at max_torque = %g N m in %d of %d steps of the ramp "
            "(largest excess %.3g N m); pulley %.3f m/s behind the curve at t = %.1f s\n",
-           limit, at_limit, steps, above, lag, sim->t);
+           limit, at_limit, steps, above, lag, bd_sim_time(sim));
     CHECK(!failed);
     CHECK(above <= 0.0);
     CHECK(at_limit == steps);

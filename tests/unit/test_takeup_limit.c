@@ -14,8 +14,8 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "sim/engine.h"
-#include "parts/parts.h"
+#include "beltdyn/model.h"
+#include "beltdyn/sim.h"
 #include "testlib.h"
 
 static const char *model =
@@ -44,19 +44,19 @@ int main(void)
     opt.out_dir = dir;
     char err[512] = "";
     CHECK(bd_sim_run(sim, &opt, err, sizeof err) == BD_RUN_OK);
-    const bd_pulley_body *p = &sim->pulleys[1];
-    const bd_takeup *tk = &sim->parts[p->first_part].u.takeup;
-    CHECK(sim->parts[p->first_part].type == BD_PART_TAKEUP);
-    printf("travel %.4f .. %.4f m, arrivals at a limit %d\n", p->travel_min, p->travel_max,
-           tk->limit_hits);
-    CHECK(p->travel_min >= -0.05 - 1e-12);
-    CHECK(p->travel_max <= 0.05 + 1e-12);
-    CHECK_ABS(p->travel_max, 0.05, 1e-12);
-    CHECK(tk->limit_hits >= 1);
+    bd_takeup_state tk = {0};
+    CHECK(bd_sim_takeup(sim, 1, &tk) == 0);
+    printf("travel %.4f .. %.4f m, arrivals at a limit %d\n", tk.travel_min_m, tk.travel_max_m,
+           tk.limit_hits);
+    CHECK(tk.travel_min_m >= -0.05 - 1e-12);
+    CHECK(tk.travel_max_m <= 0.05 + 1e-12);
+    CHECK_ABS(tk.travel_max_m, 0.05, 1e-12);
+    CHECK(tk.limit_hits >= 1);
     int said = 0;
-    for (int i = 0; i < sim->warning_count; i++) {
-        printf("warning: %s\n", sim->warnings[i]);
-        if (strstr(sim->warnings[i], "takeup 'bottom' reached the end of its travel (0.05 m)"))
+    for (int i = 0; i < bd_sim_warning_count(sim); i++) {
+        const char *w = bd_sim_warning(sim, i);
+        printf("warning: %s\n", w);
+        if (strstr(w, "takeup 'bottom' reached the end of its travel (0.05 m)"))
             said++;
     }
     CHECK(said == 1);

@@ -21,8 +21,8 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "sim/engine.h"
-#include "parts/parts.h"
+#include "beltdyn/model.h"
+#include "beltdyn/sim.h"
 #include "testlib.h"
 
 static const double PI = 3.14159265358979323846;
@@ -66,8 +66,10 @@ static void held(const char *formulation, const char *belt)
     CHECK(bd_test_run_to(sim, 1.0) == 0);
     double sum = 0.0, n = 0.0;
     char err[256];
-    while (sim->t < 2.0 && bd_sim_step(sim, 1, err, sizeof err) == 0) {
-        sum += sim->pulleys[0].drive_torque;
+    bd_pulley_state a;
+    while (bd_sim_time(sim) < 2.0 && bd_sim_step(sim, 1, err, sizeof err) == 0) {
+        bd_sim_pulley(sim, 0, &a);
+        sum += a.drive_torque_Nm;
         n++;
     }
     double f = def.pulleys[0].drive.transmission.friction;
@@ -75,9 +77,8 @@ static void held(const char *formulation, const char *belt)
         f /= sin(0.5 * 38.0 * PI / 180.0);
     double theta_m = PI - 2.0 * asin((0.3 - 0.1) / (3.0 * (0.1 + 0.3)));
     double want = 0.3 * 2.0 * 1000.0 * tanh(0.5 * f * theta_m);
-    double w_m, slip_m, slip_p;
-    bd_transmission_state(bd_pulley_drive_part(sim, &sim->pulleys[0]), &sim->pulleys[0], &w_m,
-                          &slip_m, &slip_p);
+    bd_sim_pulley(sim, 0, &a);
+    double slip_m = a.slip_motor_mps, slip_p = a.slip_pulley_mps;
     printf("held %s %s belt: pulley torque %.2f N m (closed form %.2f, %+.3f%%), slip on the "
            "motor sheave %.3f m/s, on the pulley sheave %.2e m/s\n", formulation, belt, sum / n,
            want, 100.0 * (sum / n / want - 1.0), slip_m, slip_p);
@@ -88,7 +89,7 @@ static void held(const char *formulation, const char *belt)
      * from the conveyor step by step), under 0.1 m/s against the motor
      * sheave's hundreds */
     CHECK(fabs(slip_p) < 0.1);
-    CHECK(fabs(sim->pulleys[0].omega * 0.3) < 0.01);
+    CHECK(fabs(a.omega_rad_s * 0.3) < 0.01);
     bd_sim_free(sim);
     bd_model_def_free(&def);
 }
@@ -136,20 +137,23 @@ static void dol(double pretension, double *max_slip, double *end_slip, double *b
     bd_test_make_sim(yaml, &def, &sim);
     char err[256];
     *max_slip = 0.0;
-    double w_m = 0.0, slip_m = 0.0, slip_p = 0.0;
-    while (sim->t < 6.0) {
+    double w_m = 0.0, slip_m = 0.0;
+    bd_pulley_state head;
+    while (bd_sim_time(sim) < 6.0) {
         if (bd_sim_step(sim, 1, err, sizeof err)) {
             fprintf(stderr, "DOL run failed: %s\n", err);
             CHECK(0);
             break;
         }
-        bd_transmission_state(bd_pulley_drive_part(sim, &sim->pulleys[1]), &sim->pulleys[1],
-                              &w_m, &slip_m, &slip_p);
+        bd_sim_pulley(sim, 1, &head);
+        w_m = head.motor_omega_rad_s;
+        slip_m = head.slip_motor_mps;
         if (fabs(slip_m) > *max_slip)
             *max_slip = fabs(slip_m);
     }
     *end_slip = fabs(slip_m);
-    *belt_speed = sim->pulleys[1].omega * 0.25;
+    bd_sim_pulley(sim, 1, &head);
+    *belt_speed = head.omega_rad_s * 0.25;
     printf("DOL start, pretension %g N: largest slip on the motor sheave %.3f m/s, at the end "
            "%.4f m/s; motor at %.0f rpm, belt at %.3f m/s\n", pretension,
            *max_slip, *end_slip, w_m * 60.0 / (2.0 * PI) * 12.0 / 3.0, *belt_speed);

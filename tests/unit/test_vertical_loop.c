@@ -32,7 +32,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "sim/engine.h"
+#include "beltdyn/model.h"
+#include "beltdyn/sim.h"
 #include "testlib.h"
 
 static const double PI = 3.14159265358979323846;
@@ -69,7 +70,19 @@ static void make(char *buf, size_t len, double mu, const char *drive, const char
 /* height of a probe above the lower tangent points */
 static double probe_height(const bd_sim *sim, int i)
 {
-    return sim->probes[i].tr.p[1] - sim->pulleys[1].cy;
+    bd_probe_state pr;
+    bd_pulley_state bottom;
+    bd_sim_probe(sim, i, &pr);
+    bd_sim_pulley(sim, 1, &bottom);
+    return pr.y_m - bottom.y_m;
+}
+
+/* belt tension at probe i now, N */
+static double probe_tension(const bd_sim *sim, int i)
+{
+    bd_probe_state pr;
+    bd_sim_probe(sim, i, &pr);
+    return pr.tension_N;
 }
 
 static void statics(void)
@@ -84,10 +97,10 @@ static void statics(void)
     for (int pass = 0; pass < 2; pass++) {
         if (pass == 1)
             CHECK(bd_test_run_to(sim, 1.0) == 0);
-        for (int i = 0; i < sim->probe_count; i++) {
+        for (int i = 0; i < bd_sim_probe_count(sim); i++) {
             double y = probe_height(sim, i);
             double want = 0.5 * (F + mp * g + mpl * g * (PI * R + 2.0 * y));
-            CHECK_REL(bd_belt_point_tension(sim, &sim->probes[i].tr), want, 0.02);
+            CHECK_REL(probe_tension(sim, i), want, 0.02);
         }
     }
     bd_sim_free(sim);
@@ -113,12 +126,13 @@ static void wave_speed(void)
     bd_model_def def;
     bd_sim *sim;
     bd_test_make_sim(text, &def, &sim);
-    int steps = (int)(0.6 / sim->dt);
+    const double dt = bd_sim_time_step(sim);
+    int steps = (int)(0.6 / dt);
     double *a = calloc((size_t)steps, sizeof *a), *b = calloc((size_t)steps, sizeof *b);
     char err[256];
     for (int k = 0; k < steps; k++) {
-        a[k] = bd_belt_point_tension(sim, &sim->probes[0].tr);   /* 20 m below top */
-        b[k] = bd_belt_point_tension(sim, &sim->probes[2].tr);   /* 80 m below top */
+        a[k] = probe_tension(sim, 0);   /* 20 m below top */
+        b[k] = probe_tension(sim, 2);   /* 80 m below top */
         CHECK(bd_sim_step(sim, 1, err, sizeof err) == 0);
     }
     /* the front is a drop of tension on the strand leaving the driven
@@ -131,12 +145,12 @@ static void wave_speed(void)
             kpeak = k;
         }
     CHECK(fabs(peak) > 10e3);
-    double ta = crossing(a, kpeak + 1, a0 + 0.5 * peak, sim->dt);
-    double tb = crossing(b, steps, b0 + 0.5 * peak, sim->dt);
+    double ta = crossing(a, kpeak + 1, a0 + 0.5 * peak, dt);
+    double tb = crossing(b, steps, b0 + 0.5 * peak, dt);
     double dist = probe_height(sim, 0) - probe_height(sim, 2);
     double c = sqrt(7.62e6 / 100.0);
-    printf("%s wave: front at %.5f s and %.5f s over %.2f m: %.1f m/s (analytic %.1f)\n", formulation, ta, tb,
-           dist, dist / (tb - ta), c);
+    printf("%s wave: front at %.5f s and %.5f s over %.2f m: %.1f m/s (analytic %.1f)\n",
+           formulation, ta, tb, dist, dist / (tb - ta), c);
     CHECK_REL(dist / (tb - ta), c, 0.03);
     free(a);
     free(b);
@@ -155,7 +169,7 @@ static void takeup_frequency(void)
     bd_model_def def;
     bd_sim *sim;
     bd_test_make_sim(text, &def, &sim);
-    double Lh = 0.5 * sim->path.length, EA = 7.62e6, mpl = 100.0, c = sqrt(EA / mpl);
+    double Lh = 0.5 * bd_sim_belt_length(sim), EA = 7.62e6, mpl = 100.0, c = sqrt(EA / mpl);
     /* first root of β tan β = r */
     double r = mpl * Lh / (0.5 * (M + mp)), beta = 0.8;
     for (int it = 0; it < 100; it++)
@@ -163,13 +177,16 @@ static void takeup_frequency(void)
     double f_analytic = beta * c / Lh / (2.0 * PI);
     double offset_analytic = 0.1 * F * Lh / (2.0 * EA);
     /* sample the carriage travel for 12 s */
-    int steps = (int)(12.0 / sim->dt);
+    const double dt = bd_sim_time_step(sim);
+    int steps = (int)(12.0 / dt);
     double *q = malloc((size_t)steps * sizeof *q);
     char err[256];
     double qmin = INFINITY, qmax = -INFINITY;
+    bd_pulley_state bottom;
     for (int k = 0; k < steps; k++) {
         CHECK(bd_sim_step(sim, 1, err, sizeof err) == 0);
-        q[k] = sim->pulleys[1].q;
+        bd_sim_pulley(sim, 1, &bottom);
+        q[k] = bottom.travel_m;
         if (q[k] < qmin)
             qmin = q[k];
         if (q[k] > qmax)
@@ -181,7 +198,7 @@ static void takeup_frequency(void)
     int cycles = -1;
     for (int k = 1; k < steps; k++)
         if (q[k - 1] < mid && q[k] >= mid) {
-            double t = (k - 1 + (mid - q[k - 1]) / (q[k] - q[k - 1])) * sim->dt;
+            double t = (k - 1 + (mid - q[k - 1]) / (q[k] - q[k - 1])) * dt;
             if (cycles < 0)
                 first = t;
             last = t;
@@ -191,7 +208,7 @@ static void takeup_frequency(void)
     /* the static offset: the mean over whole cycles */
     double sum = 0.0;
     int count = 0;
-    for (int k = (int)(first / sim->dt); k < (int)(last / sim->dt); k++) {
+    for (int k = (int)(first / dt); k < (int)(last / dt); k++) {
         sum += q[k];
         count++;
     }
