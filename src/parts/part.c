@@ -14,14 +14,14 @@ static int parts_of(const bd_pulley_def *pd)
 
 int bd_parts_create(bd_sim *sim, bd_diag *diag)
 {
-    const bd_model_def *def = sim->def;
+    const bd_model_def *def = sim->model->def;
     int total = 0;
-    for (int i = 0; i < sim->pulley_count; i++)
+    for (int i = 0; i < sim->model->pulley_count; i++)
         total += parts_of(&def->pulleys[i]);
     sim->part_count = total;
     sim->parts = bd_xcalloc((size_t)total, sizeof *sim->parts);
     int at = 0;
-    for (int i = 0; i < sim->pulley_count; i++) {
+    for (int i = 0; i < sim->model->pulley_count; i++) {
         bd_pulley_body *p = &sim->pulleys[i];
         const bd_pulley_def *pd = p->def;
         p->first_part = at;
@@ -108,7 +108,7 @@ void bd_part_advance(bd_sim *sim, bd_part *part, double omega_old, double w_mid,
     bd_energy *en = &sim->energy;
     switch (part->type) {
     case BD_PART_DRIVE:
-        en->input += p->drive_torque * w_mid * sim->dt;
+        en->input += p->drive_torque * w_mid * sim->model->dt;
         break;
     case BD_PART_TRANSMISSION:
         bd_transmission_advance(sim, part, omega_old, ke, w_nc);

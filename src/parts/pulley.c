@@ -21,7 +21,7 @@ void bd_pulley_body_init(bd_sim *sim, bd_pulley_body *p, const bd_pulley_def *pd
     /* a massless pulley would have an undefined speed when the belt
      * slips on it everywhere: floor its inertia at 1% of the inertia of
      * the belt wrapped on it (documented in docs/physics.md) */
-    double floor_inertia = 0.01 * sim->belt_mpl * BD_PI * pd->radius * pd->radius * pd->radius;
+    double floor_inertia = 0.01 * sim->model->belt_mpl * BD_PI * pd->radius * pd->radius * pd->radius;
     if (p->inertia < floor_inertia)
         p->inertia = floor_inertia;
     p->cx = pd->x;
@@ -32,7 +32,7 @@ void bd_pulley_body_init(bd_sim *sim, bd_pulley_body *p, const bd_pulley_def *pd
         p->movable = pd->takeup.type != BD_TAKEUP_FIXED;
         p->carriage_mass = pd->mass + pd->takeup.mass;
         if (p->movable && p->carriage_mass <= 0.0)
-            p->carriage_mass = 1e-3 * sim->belt_mpl * pd->radius;
+            p->carriage_mass = 1e-3 * sim->model->belt_mpl * pd->radius;
     }
 }
 
@@ -61,8 +61,8 @@ double bd_pulley_external_torque(bd_sim *sim, bd_pulley_body *p)
  * takeup carriage */
 void bd_pulleys_advance(bd_sim *sim, double *ke, double *w_nc)
 {
-    const double dt = sim->dt;
-    for (int i = 0; i < sim->pulley_count; i++) {
+    const double dt = sim->model->dt;
+    for (int i = 0; i < sim->model->pulley_count; i++) {
         bd_pulley_body *p = &sim->pulleys[i];
         double w_mid = p->omega + 0.5 * p->alpha * dt;
         *ke += 0.5 * p->inertia * w_mid * w_mid;

@@ -181,7 +181,7 @@ bd_transmission *bd_transmission_create(const bd_sim *sim, bd_pulley_body *p)
     /* ζ of the motor sheave turning against the two spans */
     double w_t = tr->r_m * sqrt(2.0 * tr->k / tr->J_m);
     tr->c = SPAN_DAMPING_RATIO * 2.0 * tr->J_m * w_t / (2.0 * tr->r_m * tr->r_m);
-    double sub = ceil(sim->dt * w_t / 0.1);
+    double sub = ceil(sim->model->dt * w_t / 0.1);
     tr->sub = sub < 1.0 ? 1 : (sub > MAX_SUBSTEPS ? MAX_SUBSTEPS : (int)sub);
     return tr;
 }
@@ -195,7 +195,7 @@ void bd_transmission_tune(const bd_sim *sim, bd_part *part)
     bd_transmission *tr = part->u.transmission.belt;
     bd_drive *d = &part->u.transmission.drive;
     d->ctrl_inertia += tr->J_m * tr->i * tr->i;
-    double w_max = 0.25 * tr->J_m * tr->i * tr->i / (sim->dt * d->ctrl_inertia);
+    double w_max = 0.25 * tr->J_m * tr->i * tr->i / (sim->model->dt * d->ctrl_inertia);
     if (d->ctrl_bandwidth > w_max)
         d->ctrl_bandwidth = w_max;
 }
@@ -218,7 +218,7 @@ void bd_transmission_advance(bd_sim *sim, bd_part *part, double omega_old, doubl
     bd_transmission *tr = part->u.transmission.belt;
     bd_pulley_body *p = &sim->pulleys[part->pulley];
     const int sub = tr->sub;
-    const double h = sim->dt / sub, m = tr->m_w, J = tr->J_m;
+    const double h = sim->model->dt / sub, m = tr->m_w, J = tr->J_m;
     const double b = tr->def->bearing_damping;
     double torque_sum = 0.0, input = 0.0, wnc = 0.0, dw = 0.0;
     for (int k = 0; k < sub; k++) {
@@ -262,7 +262,7 @@ void bd_transmission_advance(bd_sim *sim, bd_part *part, double omega_old, doubl
     /* the pulley takes the sheave's torque as an outside, non-conservative
      * one (it was booked as drive input without a transmission) */
     double w_mid = 0.5 * (omega_old + p->omega);
-    *w_nc += wnc + p->drive_torque * w_mid * sim->dt;
+    *w_nc += wnc + p->drive_torque * w_mid * sim->model->dt;
     *ke += tr->ke;
 }
 

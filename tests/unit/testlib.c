@@ -34,7 +34,7 @@ int bd_test_make_sim(const char *yaml, bd_model_def *def, bd_sim **sim)
 int bd_test_run_to(bd_sim *sim, double t)
 {
     char err[512];
-    while (sim->t < t - 0.5 * sim->dt)
+    while (bd_sim_time(sim) < t - 0.5 * bd_sim_time_step(sim))
         if (bd_sim_step(sim, 1, err, sizeof err)) {
             fprintf(stderr, "run failed: %s\n", err);
             return 1;

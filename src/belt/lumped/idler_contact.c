@@ -46,13 +46,13 @@ static void idler_contact(bd_sim *sim, bd_idler *id)
     bd_tracker_update(sim, &id->tr);
     id->alpha = 0.0;
     id->torque = 0.0;
-    int e = id->tr.element, j = e + 1 == sim->n ? 0 : e + 1;
+    int e = id->tr.element, j = e + 1 == sim->model->n ? 0 : e + 1;
     double g = id->tr.gamma, h = 1.0 - g;
     double px = sim->x[e] + g * (sim->x[j] - sim->x[e]);
     double py = sim->y[e] + g * (sim->y[j] - sim->y[e]);
     double rx = px - id->centre[0], ry = py - id->centre[1];
     double d2 = rx * rx + ry * ry;
-    double Rc = id->radius + IDLER_CONTACT_GAP * sim->l0;
+    double Rc = id->radius + IDLER_CONTACT_GAP * sim->model->l0;
     if (d2 >= Rc * Rc)
         return;
     double d = sqrt(d2);
@@ -63,7 +63,7 @@ static void idler_contact(bd_sim *sim, bd_idler *id)
     double m_eff = 1.0 / (h * h / me + g * g / mj);
     double aon = nx * (h * sim->fx[e] / me + g * sim->fx[j] / mj)
                + ny * (h * sim->fy[e] / me + g * sim->fy[j] / mj);
-    double dt = sim->dt;
+    double dt = sim->model->dt;
     double fn = id->k_contact * (id->radius - d - dt * (nx * vcx + ny * vcy) - dt * dt * aon)
               / (1.0 + id->k_contact * dt * dt / m_eff);
     if (fn <= 0.0)
@@ -95,7 +95,7 @@ static void idler_contact(bd_sim *sim, bd_idler *id)
         return;
     double R = id->radius;
     double vr = vt - id->omega * R;
-    double num = vr / sim->dt + h * (tx * sim->fx[e] + ty * sim->fy[e]) / me
+    double num = vr / sim->model->dt + h * (tx * sim->fx[e] + ty * sim->fy[e]) / me
                + g * (tx * sim->fx[j] + ty * sim->fy[j]) / mj;
     double den = h * h / me + g * g / mj + R * R / id->inertia;
     double f = num / den;
@@ -116,6 +116,6 @@ static void idler_contact(bd_sim *sim, bd_idler *id)
 /* the supports phase: every idler, after the wraps */
 void bd_lumped_idlers(bd_sim *sim)
 {
-    for (int i = 0; i < sim->idler_count; i++)
+    for (int i = 0; i < sim->model->idler_count; i++)
         idler_contact(sim, &sim->idlers[i]);
 }

@@ -45,15 +45,15 @@ static bd_wrap_contact *wrap_of(const bd_sim *sim, const bd_pulley_body *p)
 static void normal_forces(bd_sim *sim, bd_pulley_body *p)
 {
     bd_wrap_contact *W = wrap_of(sim, p);
-    const double l0 = sim->l0;
-    const int n = sim->n;
+    const double l0 = sim->model->l0;
+    const int n = sim->model->n;
     double R = p->radius;
     /* predictive contact: a node within this gap of the shell may reach it
      * during the step; the implicit force says whether it does */
     double Rc = R + CONTACT_GAP * l0;
     /* the shell's velocity at the end of the step, with the carriage's
      * acceleration of the last step (a moving takeup pulley) */
-    double vp_end = p->qdot + sim->dt * p->qddot;
+    double vp_end = p->qdot + sim->model->dt * p->qddot;
     double vpx = vp_end * p->axis[0], vpy = vp_end * p->axis[1];
     int found = 0, first_found = 0, last_found = 0;
     W->contact_count = 0;
@@ -75,7 +75,7 @@ static void normal_forces(bd_sim *sim, bd_pulley_body *p)
         double m = sim->mass[k];
         double Fo = nx * sim->fx[k] + ny * sim->fy[k];
         double delta = R - a;
-        double dt = sim->dt;
+        double dt = sim->model->dt;
         double fn = W->k_contact * (delta - dt * vn - dt * dt * Fo / m)
                   / (1.0 + W->k_contact * dt * dt / m);
         if (fn <= 0.0)
@@ -106,7 +106,7 @@ static void normal_forces(bd_sim *sim, bd_pulley_body *p)
 static void friction_forces(bd_sim *sim, bd_pulley_body *p, double T_p)
 {
     bd_wrap_contact *W = wrap_of(sim, p);
-    const double dt = sim->dt, R = p->radius;
+    const double dt = sim->model->dt, R = p->radius;
     const double vpx = p->qdot * p->axis[0], vpy = p->qdot * p->axis[1];
     const int nc = W->contact_count;
     double alpha = 0.0;
@@ -182,7 +182,7 @@ void bd_lumped_wrap(bd_sim *sim, bd_pulley_body *p, double external_torque)
 double bd_lumped_wrap_energy(const bd_sim *sim, const bd_pulley_body *p)
 {
     const bd_wrap_contact *W = wrap_of(sim, p);
-    const int n = sim->n;
+    const int n = sim->model->n;
     double e = 0.0, R = p->radius;
     int span = W->win_count + 2 * WINDOW_MARGIN;
     if (span > W->win_max)
