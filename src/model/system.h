@@ -62,8 +62,7 @@ typedef struct bd_drive_monitor {
  * it has one. What is mounted on it (drive, transmission, takeup) are its
  * parts (parts/parts.h). It never knows which belt formulation carries it:
  * the formulation's wrap coupling fills the "coupling" fields. */
-typedef struct bd_pulley_body {
-    /* build */
+typedef struct bd_pulley_model {
     const bd_pulley_def *def;
     double radius;          /* m */
     double inertia;         /* kg·m², pulley + drive inertia (floored > 0) */
@@ -75,7 +74,12 @@ typedef struct bd_pulley_body {
     double carriage_mass;   /* kg moving along the axis (pulley + takeup) */
     double wrap_pull;       /* N along the axis: the weight of a wrap the belt
                                formulation does not resolve (axial), else 0 */
+    double x0, y0;          /* m, centre at t = 0 (a takeup's as laid) */
     int first_part, part_count; /* its parts: sim->parts[first_part ..] */
+} bd_pulley_model;
+
+typedef struct bd_pulley_body {
+    const bd_pulley_model *m;   /* its compiled model (model->pulleys[i]) */
     /* step, part torques: what the drive and bearing put on it */
     double drive_torque;    /* N·m last applied by the drive */
     double bearing_torque;  /* N·m bearing torque this step */
@@ -148,6 +152,7 @@ typedef struct bd_model {
     double *s_node0;                  /* [n] m, initial path coordinate of node i */
     /* counts of the parts, sensors and supports */
     int pulley_count, idler_count, probe_count;
+    bd_pulley_model *pulleys;         /* [pulley_count] */
     int *idlers_per_set;              /* [def->idler_set_count] */
     double *idler_spacing;            /* [def->idler_set_count] m, actual spacing */
     /* material */

@@ -23,9 +23,9 @@ double bd_takeup_advance(bd_sim *sim, bd_takeup *tk, bd_pulley_body *p, double *
      * −∫q·dF, with q at the middle of the interval the force changed over */
     *input += -(F - tk->force_prev) * (p->q - 0.5 * p->qdot * sim->model->dt);
     tk->force_prev = F;
-    double pull = F - p->def->mass * sim->model->gravity * p->axis[1] + p->f_axis;
+    double pull = F - p->m->def->mass * sim->model->gravity * p->m->axis[1] + p->f_axis;
     double q_old = p->qdot;
-    p->qddot = pull / p->carriage_mass;
+    p->qddot = pull / p->m->carriage_mass;
     p->qdot += p->qddot * sim->model->dt;
     double q_new = p->q + p->qdot * sim->model->dt;
     if (td->has_travel && (q_new < td->travel_min || q_new > td->travel_max)) {
@@ -47,8 +47,8 @@ double bd_takeup_advance(bd_sim *sim, bd_takeup *tk, bd_pulley_body *p, double *
     }
     double dq = q_new - p->q;
     p->q = q_new;
-    p->cx += dq * p->axis[0];
-    p->cy += dq * p->axis[1];
+    p->cx += dq * p->m->axis[0];
+    p->cy += dq * p->m->axis[1];
     if (p->q < p->travel_min)
         p->travel_min = p->q;
     if (p->q > p->travel_max)

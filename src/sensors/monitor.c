@@ -54,7 +54,7 @@ void bd_monitor_reset(bd_sim *sim, bd_pulley_body *p)
     m->slack_min = INFINITY;
     m->swing_max = -INFINITY;
     m->swing_min = INFINITY;
-    const bd_drive_def *d = &p->def->drive;
+    const bd_drive_def *d = &p->m->def->drive;
     m->ramp_end = d->control == BD_CONTROL_SPEED ? d->start_delay + d->start_time : 0.0;
     m->tight_max_t = m->slack_min_t = 0.0;
     m->win_sum = 0.0;
@@ -138,7 +138,7 @@ void bd_monitor_update(bd_sim *sim, bd_pulley_body *p)
     double v_in = in.speed;
     double v_out = out.speed;
     window_acceleration(m, v_in, t);
-    slip(m, p->omega * p->radius, 0.5 * (v_in + v_out), t);
+    slip(m, p->omega * p->m->radius, 0.5 * (v_in + v_out), t);
 }
 
 /* tight-side tension range after the ramp; 0 while the ramp runs */
@@ -163,9 +163,9 @@ void bd_sim_result(const bd_sim *sim, bd_run_result *r)
     r->tension_min_N = sim->tension_min;
     for (int i = 0; i < sim->model->pulley_count; i++) {
         const bd_pulley_body *p = &sim->pulleys[i];
-        if (p->movable && p->travel_max - p->travel_min > r->travel_range_m)
+        if (p->m->movable && p->travel_max - p->travel_min > r->travel_range_m)
             r->travel_range_m = p->travel_max - p->travel_min;
-        if (!p->def->has_drive)
+        if (!p->m->def->has_drive)
             continue;
         const bd_drive_monitor *m = &p->mon;
         int first = r->drives++ == 0;

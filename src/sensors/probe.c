@@ -8,7 +8,7 @@ void bd_sensors_update(bd_sim *sim)
     for (int i = 0; i < sim->model->probe_count; i++)
         belt->point_update(sim, &sim->probes[i].tr);
     for (int i = 0; i < sim->model->pulley_count; i++)
-        if (sim->pulleys[i].def->has_drive)
+        if (sim->pulleys[i].m->def->has_drive)
             bd_monitor_update(sim, &sim->pulleys[i]);
 }
 

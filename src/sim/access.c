@@ -61,8 +61,8 @@ int bd_sim_pulley(const bd_sim *sim, int i, bd_pulley_state *out)
     out->travel_m = p->q;
     out->x_m = p->cx;
     out->y_m = p->cy;
-    out->radius_m = p->radius;
-    out->inertia_kgm2 = p->inertia;
+    out->radius_m = p->m->radius;
+    out->inertia_kgm2 = p->m->inertia;
     const bd_part *d = bd_pulley_drive_part(sim, p);
     out->has_transmission = d && d->type == BD_PART_TRANSMISSION;
     out->motor_omega_rad_s = out->slip_motor_mps = out->slip_pulley_mps = 0.0;

@@ -22,18 +22,18 @@ static void prepare_drives(bd_sim *sim)
         belt_mass += sim->mass[i];
     int speed_drives = 0;
     for (int i = 0; i < sim->model->pulley_count; i++)
-        if (sim->pulleys[i].def->has_drive
-            && sim->pulleys[i].def->drive.control == BD_CONTROL_SPEED)
+        if (sim->pulleys[i].m->def->has_drive
+            && sim->pulleys[i].m->def->drive.control == BD_CONTROL_SPEED)
             speed_drives++;
     for (int i = 0; i < sim->model->pulley_count; i++) {
         bd_pulley_body *p = &sim->pulleys[i];
-        if (!p->def->has_drive)
+        if (!p->m->def->has_drive)
             continue;
-        double R = p->radius;
+        double R = p->m->radius;
         double J = belt_mass * R * R;
         for (int k = 0; k < sim->model->pulley_count; k++) {
-            double r = sim->pulleys[k].radius;
-            J += sim->pulleys[k].inertia * (R / r) * (R / r);
+            double r = sim->pulleys[k].m->radius;
+            J += sim->pulleys[k].m->inertia * (R / r) * (R / r);
         }
         J = sim->model->belt->support_inertia(sim, R, J);
         bd_drive_prepare(sim, bd_part_drive(bd_pulley_drive_part(sim, p)), p,
@@ -58,15 +58,20 @@ int bd_sim_create(const bd_model_def *def, bd_sim **out, bd_diag *diag)
     sim->own->EI = def->belt.bending_stiffness;
     sim->own->belt_mpl = def->belt.mass_per_length;
     sim->own->pulley_count = def->pulley_count;
+    sim->own->pulleys = bd_xcalloc((size_t)def->pulley_count, sizeof *sim->own->pulleys);
     sim->pulleys = bd_xcalloc((size_t)def->pulley_count, sizeof *sim->pulleys);
-    for (int i = 0; i < def->pulley_count; i++)
-        bd_pulley_body_init(sim, &sim->pulleys[i], &def->pulleys[i]);
+    for (int i = 0; i < def->pulley_count; i++) {
+        bd_pulley_model_init(sim->own, &sim->own->pulleys[i], &def->pulleys[i]);
+        sim->pulleys[i].m = &sim->own->pulleys[i];
+        sim->pulleys[i].cx = def->pulleys[i].x;
+        sim->pulleys[i].cy = def->pulleys[i].y;
+    }
     if (sim->model->belt->build(sim, diag)) {
         bd_sim_free(sim);
         return 1;
     }
     for (int i = 0; i < sim->model->pulley_count; i++)
-        if (sim->pulleys[i].def->has_drive)
+        if (sim->pulleys[i].m->def->has_drive)
             bd_monitor_init(sim, &sim->pulleys[i]);
     if (bd_time_step_choose(sim, diag) || bd_parts_create(sim, diag)) {
         bd_sim_free(sim);
@@ -105,6 +110,7 @@ void bd_sim_free(bd_sim *sim)
         free(m->s_node0);
         free(m->idlers_per_set);
         free(m->idler_spacing);
+        free(m->pulleys);
         bd_path_free(&m->path);
         free(m);
     }

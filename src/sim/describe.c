@@ -16,7 +16,7 @@ void bd_sim_describe(const bd_sim *sim, FILE *f)
     }
     int dof = sim->model->belt->node_dof * sim->model->n + sim->model->pulley_count + sim->model->idler_count;
     for (int i = 0; i < sim->model->pulley_count; i++)
-        dof += sim->pulleys[i].movable;
+        dof += sim->pulleys[i].m->movable;
     fprintf(f, "model: %s\n", def->name);
     fprintf(f, "formulation: %s\n", sim->model->belt->description);
     fprintf(f, "belt loop length: %.3f m\n", sim->model->path.length);
@@ -34,9 +34,9 @@ void bd_sim_describe(const bd_sim *sim, FILE *f)
         const bd_pulley_body *p = &sim->pulleys[i];
         const bd_path_segment *sp = bd_path_span(&sim->model->path, i);
         fprintf(f, "  %-12s wrap %6.1f deg, span after it %.3f m, inertia %.4g kg m2%s%s\n",
-                p->def->name, bd_path_wrap_angle(&sim->model->path, i) * 180.0 / BD_PI,
-                sp->length, p->inertia, p->def->has_drive ? ", drive" : "",
-                p->def->has_takeup ? ", takeup" : "");
+                p->m->def->name, bd_path_wrap_angle(&sim->model->path, i) * 180.0 / BD_PI,
+                sp->length, p->m->inertia, p->m->def->has_drive ? ", drive" : "",
+                p->m->def->has_takeup ? ", takeup" : "");
     }
     if (def->idler_set_count > 0)
         fprintf(f, "idlers:\n");

@@ -18,9 +18,9 @@ double bd_energy_potential(const bd_sim *sim)
     double e = belt->potential(sim);
     for (int i = 0; i < sim->model->pulley_count; i++) {
         const bd_pulley_body *p = &sim->pulleys[i];
-        e += p->def->mass * g * p->cy;
+        e += p->m->def->mass * g * p->cy;
         e += belt->wrap_energy(sim, p);
-        for (int k = p->first_part; k < p->first_part + p->part_count; k++)
+        for (int k = p->m->first_part; k < p->m->first_part + p->m->part_count; k++)
             e += bd_part_potential(sim, &sim->parts[k]);
     }
     return e + bd_parts_stored_energy(sim);

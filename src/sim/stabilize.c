@@ -77,9 +77,9 @@ int bd_sim_stabilize(bd_sim *sim, FILE *log)
         p->q = 0.0;
         p->travel_min = p->travel_max = 0.0;
         p->torque_max_abs = 0.0;
-        for (int m = p->first_part; m < p->first_part + p->part_count; m++)
+        for (int m = p->m->first_part; m < p->m->first_part + p->m->part_count; m++)
             bd_part_reset(&sim->parts[m]);
-        if (p->def->has_drive)
+        if (p->m->def->has_drive)
             bd_monitor_reset(sim, p);
     }
     sim->tension_max = -INFINITY;

@@ -209,16 +209,16 @@ static int tension_level(bd_sim *sim, const double *W_mid, double *Tc, bd_diag *
     for (int i = 0; i < sim->model->pulley_count; i++) {
         const bd_pulley_body *p = &sim->pulleys[i];
         const bd_axial_pulley *ap = &bd_axial_of(sim)->pulleys[i];
-        if (!p->movable)
+        if (!p->m->movable)
             continue;
         int e_out = ap->node, e_in = (ap->node + sim->model->n - 1) % sim->model->n;
-        double F = bd_table_eval(&p->def->takeup.force, 0.0);
-        double pull = F - p->def->mass * sim->model->gravity * p->axis[1] + p->wrap_pull;
+        double F = bd_table_eval(&p->m->def->takeup.force, 0.0);
+        double pull = F - p->m->def->mass * sim->model->gravity * p->m->axis[1] + p->m->wrap_pull;
         double denom = ap->c_out - ap->c_in;
         if (fabs(denom) < 1e-6) {
-            bd_diag_error(diag, def->source, p->def->takeup.mark,
+            bd_diag_error(diag, def->source, p->m->def->takeup.mark,
                           "pulleys[%d] '%s': takeup axis is perpendicular to the belt's pull "
-                          "on the pulley; it cannot set the tension", i, p->def->name);
+                          "on the pulley; it cannot set the tension", i, p->m->def->name);
             return 1;
         }
         *Tc = -(pull + W_mid[e_out] * ap->c_out - W_mid[e_in] * ap->c_in) / denom;
@@ -243,7 +243,7 @@ static void setup_pulleys(bd_sim *sim, const int *pnode)
         ap->law.v_thr = pd->velocity_threshold;
         ap->law.f_thr = pd->force_threshold;
         if (pd->has_takeup) {
-            const double *a = p->axis;
+            const double *a = p->m->axis;
             const bd_path_segment *in = bd_path_span(&sim->model->path, (i + np - 1) % np);
             const bd_path_segment *out = bd_path_span(&sim->model->path, i);
             ap->c_in = in->dir[0] * a[0] + in->dir[1] * a[1];
@@ -275,7 +275,7 @@ static void setup_pulleys(bd_sim *sim, const int *pnode)
                 mid_out += L;
             double w_in = weight_between(sim, mid_in, a0);    /* T(a0) = T_in + w_in */
             double w_out = weight_between(sim, a1, mid_out);  /* T(a1) = T_out − w_out */
-            p->wrap_pull = -m_wrap * sim->model->gravity * a[1] - w_out * ap->c_out - w_in * ap->c_in;
+            sim->own->pulleys[i].wrap_pull = -m_wrap * sim->model->gravity * a[1] - w_out * ap->c_out - w_in * ap->c_in;
         }
     }
 }
@@ -478,7 +478,7 @@ double bd_axial_stable_step(const bd_sim *sim, bd_time_step_limit *limit)
         double C = 2.0 * (ax->c[b] + ax->c[i]) + node_resist(sim, i, 1) / BD_AXIAL_ROLLING_SPEED;
         for (int p = 0; p < sim->model->pulley_count; p++) {
             const bd_axial_pulley *ap = &ax->pulleys[p];
-            if (!sim->pulleys[p].movable)
+            if (!sim->pulleys[p].m->movable)
                 continue;
             int e_in = (ap->node + n - 1) % n;
             if (i == e_in || i == (e_in + 1) % n)
@@ -493,12 +493,12 @@ double bd_axial_stable_step(const bd_sim *sim, bd_time_step_limit *limit)
     for (int p = 0; p < sim->model->pulley_count; p++) {
         const bd_pulley_body *pb = &sim->pulleys[p];
         const bd_axial_pulley *ap = &ax->pulleys[p];
-        if (!pb->movable)
+        if (!pb->m->movable)
             continue;
         double ki = ax->k[(ap->node + n - 1) % n], ko = ax->k[ap->node];
         double K = ki * (ap->c_in * ap->c_in + 2.0 * fabs(ap->c_in))
                  + ko * (ap->c_out * ap->c_out + 2.0 * fabs(ap->c_out));
-        double d = mode_step(K, 0.0, pb->carriage_mass);
+        double d = mode_step(K, 0.0, pb->m->carriage_mass);
         if (d < dt)
             dt = d;
     }

@@ -84,14 +84,14 @@ void bd_axial_wrap(bd_sim *sim, bd_pulley_body *p, double Q)
     const bd_axial *ax = bd_axial_of(sim);
     bd_axial_pulley *ap = bd_axial_pulley_of(sim, p);
     const int n = sim->model->n, i = ap->node;
-    const double dt = sim->model->dt, R = p->radius;
+    const double dt = sim->model->dt, R = p->m->radius;
     int e_in = i == 0 ? n - 1 : i - 1;
     double T_in = sim->tension[e_in], T_out = sim->tension[i];
     double F = 0.0;
     if (!sim->friction_off) {
         double m = sim->mass[i];
-        double v_free = sim->vx[i] + dt * sim->fx[i] / m - R * (p->omega + dt * Q / p->inertia);
-        double kappa = dt * (1.0 / m + R * R / p->inertia);
+        double v_free = sim->vx[i] + dt * sim->fx[i] / m - R * (p->omega + dt * Q / p->m->inertia);
+        double kappa = dt * (1.0 / m + R * R / p->m->inertia);
         F = bd_bpl_solve(&ap->law, T_in, T_out, sim->vx[i], v_free, kappa);
     }
     sim->fx[i] += F;
@@ -99,7 +99,7 @@ void bd_axial_wrap(bd_sim *sim, bd_pulley_body *p, double Q)
     ap->belt_force = F;
     p->torque_friction = -R * F;
     p->torque_external = Q;
-    p->alpha = (Q - R * F) / p->inertia;
+    p->alpha = (Q - R * F) / p->m->inertia;
     /* recorded here, said after the run (bd_axial_report_events) */
     if ((T_in <= 0.0 || T_out <= 0.0) && !ap->slack_warned && !sim->friction_off) {
         ap->slack_warned = 1;
@@ -107,12 +107,12 @@ void bd_axial_wrap(bd_sim *sim, bd_pulley_body *p, double Q)
         ap->slack_arriving = T_in <= 0.0;
         ap->slack_tension = T_in <= 0.0 ? T_in : T_out;
     }
-    if (p->movable) {
+    if (p->m->movable) {
         /* the belt's pull on the carriage along its axis, and its dashpot part */
         int j = i + 1 == n ? 0 : i + 1;
         double Td_in = ax->c[e_in] * (ax->gap_rate[e_in] + sim->vx[i] - sim->vx[e_in]);
         double Td_out = ax->c[i] * (ax->gap_rate[i] + sim->vx[j] - sim->vx[i]);
-        p->f_axis = T_out * ap->c_out - T_in * ap->c_in + p->wrap_pull;
+        p->f_axis = T_out * ap->c_out - T_in * ap->c_in + p->m->wrap_pull;
         p->fnc_axis = Td_out * ap->c_out - Td_in * ap->c_in;
     }
 }
@@ -138,7 +138,7 @@ void bd_axial_takeup_geometry(bd_sim *sim)
     const int n = sim->model->n;
     bd_axial *ax = bd_axial_of(sim);
     for (int p = 0; p < sim->model->pulley_count; p++) {
-        if (sim->pulleys[p].movable) {
+        if (sim->pulleys[p].m->movable) {
             int i = ax->pulleys[p].node, e_in = i == 0 ? n - 1 : i - 1;
             ax->gap_rate[e_in] = 0.0;
             ax->gap_rate[i] = 0.0;
@@ -147,7 +147,7 @@ void bd_axial_takeup_geometry(bd_sim *sim)
     for (int p = 0; p < sim->model->pulley_count; p++) {
         const bd_pulley_body *pb = &sim->pulleys[p];
         const bd_axial_pulley *ap = &ax->pulleys[p];
-        if (!pb->movable)
+        if (!pb->m->movable)
             continue;
         int i = ap->node, e_in = i == 0 ? n - 1 : i - 1;
         double dq = pb->q - pb->q_step_start;
@@ -155,8 +155,8 @@ void bd_axial_takeup_geometry(bd_sim *sim)
         ax->gap[i] -= ap->c_out * dq;
         ax->gap_rate[e_in] += ap->c_in * pb->qdot;
         ax->gap_rate[i] -= ap->c_out * pb->qdot;
-        sim->x[i] += dq * pb->axis[0];
-        sim->y[i] += dq * pb->axis[1];
+        sim->x[i] += dq * pb->m->axis[0];
+        sim->y[i] += dq * pb->m->axis[1];
     }
 }
 
@@ -291,7 +291,7 @@ void bd_axial_report_events(bd_sim *sim)
         if (ap->slack_warned)
             bd_sim_warn(sim, "pulley '%s': a belt end lost its tension at t = %.3f s (%s side, "
                         "%.0f N); the belt-pulley law (seed 004) holds only while both ends "
-                        "are in tension", sim->pulleys[i].def->name, ap->slack_t,
+                        "are in tension", sim->pulleys[i].m->def->name, ap->slack_t,
                         ap->slack_arriving ? "arriving" : "leaving", ap->slack_tension);
     }
 }

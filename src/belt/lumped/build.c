@@ -33,8 +33,12 @@ static void setup_pulleys(bd_sim *sim, const bd_layout *lay)
         bd_pulley_body *p = &sim->pulleys[i];
         bd_wrap_contact *W = &L->wraps[i];
         if (i == lay->takeup) {
-            p->cx += lay->takeup_shift * p->axis[0];
-            p->cy += lay->takeup_shift * p->axis[1];
+            /* the takeup pulley as laid: where the belt's loop closes */
+            bd_pulley_model *pm = &sim->own->pulleys[i];
+            p->cx += lay->takeup_shift * pm->axis[0];
+            p->cy += lay->takeup_shift * pm->axis[1];
+            pm->x0 = p->cx;
+            pm->y0 = p->cy;
         }
         /* contact: stiff and linearly implicit (pulley_contact.c) */
         W->k_contact = 100.0 * L->k_axial;
@@ -119,12 +123,12 @@ static void setup_idlers(bd_sim *sim)
 static void onto_shell(bd_sim *sim, const bd_pulley_body *pb, int ref, int k, double sense)
 {
     double c = hypot(sim->x[k] - sim->x[ref], sim->y[k] - sim->y[ref]);
-    if (c >= 2.0 * pb->radius)
+    if (c >= 2.0 * pb->m->radius)
         return;
     double a = atan2(sim->y[ref] - pb->cy, sim->x[ref] - pb->cx)
-             + sense * 2.0 * asin(c / (2.0 * pb->radius));
-    sim->x[k] = pb->cx + pb->radius * cos(a);
-    sim->y[k] = pb->cy + pb->radius * sin(a);
+             + sense * 2.0 * asin(c / (2.0 * pb->m->radius));
+    sim->x[k] = pb->cx + pb->m->radius * cos(a);
+    sim->y[k] = pb->cy + pb->m->radius * sin(a);
 }
 
 static void straighten_spans(bd_sim *sim)
@@ -150,12 +154,12 @@ static void straighten_spans(bd_sim *sim)
          * node of the wrap; likewise the arrival node */
         int a = prev, b = (last + 1) % n;
         if (sim->model->s_node0[i] - g->s0 < 0.5 * sim->model->l0) {
-            onto_shell(sim, &sim->pulleys[gp->pulley], prev, i, sim->pulleys[gp->pulley].wrap);
+            onto_shell(sim, &sim->pulleys[gp->pulley], prev, i, sim->pulleys[gp->pulley].m->wrap);
             a = i;
         }
         if (g->s0 + g->length - sim->model->s_node0[last] < 0.5 * sim->model->l0 && last != a) {
             onto_shell(sim, &sim->pulleys[gn->pulley], (last + 1) % n, last,
-                       -sim->pulleys[gn->pulley].wrap);
+                       -sim->pulleys[gn->pulley].m->wrap);
             b = last;
         }
         double ax = sim->x[a], ay = sim->y[a], bx = sim->x[b], by = sim->y[b];
@@ -200,11 +204,11 @@ static void place_nodes(bd_sim *sim, const bd_layout *lay)
             const bd_pulley_body *pb = &sim->pulleys[k];
             double rx = sim->x[i] - pb->cx, ry = sim->y[i] - pb->cy;
             double r = hypot(rx, ry);
-            if (r > pb->radius * (1.0 + 1e-9))
+            if (r > pb->m->radius * (1.0 + 1e-9))
                 continue;
             double inward = -(kx * rx + ky * ry) / r;   /* pull towards the centre */
             double depth = inward > 0.0 ? inward / bd_lumped_of(sim)->wraps[k].k_contact : 0.0;
-            double target = pb->radius - depth;
+            double target = pb->m->radius - depth;
             sim->x[i] = pb->cx + rx * target / r;
             sim->y[i] = pb->cy + ry * target / r;
         }
