@@ -103,16 +103,19 @@ typedef struct bd_pulley_body {
 
 /* An idler the belt rolls over, as a body of its own (the lumped belt;
  * the axial belt spreads its idlers along the path instead). */
-typedef struct bd_idler {
-    /* build */
+typedef struct bd_idler_model {
     double centre[2];      /* m */
     double radius;         /* m */
     double inertia;        /* kg·m² */
-    double mu_s, mu_d;
-    double rolling;        /* rolling resistance coefficient */
+    double mu_s, mu_d;     /* belt–idler friction, - */
+    double rolling;        /* rolling resistance coefficient, - */
     double k_contact;      /* N/m penalty stiffness */
     int set;               /* index of its idler set */
-    /* step */
+    double s;              /* m, path coordinate of its contact point */
+} bd_idler_model;
+
+typedef struct bd_idler {
+    const bd_idler_model *m;   /* its compiled model (model->idlers[i]) */
     bd_tracker tr;         /* the belt element over it (supports phase) */
     double omega;          /* rad/s, + = surface moves with the belt (parts) */
     double alpha;          /* rad/s² this step (supports) */
@@ -153,6 +156,7 @@ typedef struct bd_model {
     /* counts of the parts, sensors and supports */
     int pulley_count, idler_count, probe_count;
     bd_pulley_model *pulleys;         /* [pulley_count] */
+    bd_idler_model *idlers;           /* [idler_count] */
     int *idlers_per_set;              /* [def->idler_set_count] */
     double *idler_spacing;            /* [def->idler_set_count] m, actual spacing */
     /* material */

@@ -79,12 +79,12 @@ int bd_sim_idler(const bd_sim *sim, int i, bd_idler_state *out)
     if (i < 0 || i >= sim->model->idler_count)
         return -1;
     const bd_idler *id = &sim->idlers[i];
-    out->x_m = id->centre[0];
-    out->y_m = id->centre[1];
-    out->radius_m = id->radius;
-    out->inertia_kgm2 = id->inertia;
+    out->x_m = id->m->centre[0];
+    out->y_m = id->m->centre[1];
+    out->radius_m = id->m->radius;
+    out->inertia_kgm2 = id->m->inertia;
     out->omega_rad_s = id->omega;
-    out->set = id->set;
+    out->set = id->m->set;
     return 0;
 }
 

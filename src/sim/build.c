@@ -111,6 +111,7 @@ void bd_sim_free(bd_sim *sim)
         free(m->idlers_per_set);
         free(m->idler_spacing);
         free(m->pulleys);
+        free(m->idlers);
         bd_path_free(&m->path);
         free(m);
     }

@@ -75,6 +75,7 @@ static void setup_idlers(bd_sim *sim)
     for (int k = 0; k < def->idler_set_count; k++)
         total += bd_idler_set_layout(sim, k, &sim->own->idler_spacing[k]);
     sim->own->idler_count = total;
+    sim->own->idlers = bd_xcalloc((size_t)total, sizeof *sim->own->idlers);
     sim->idlers = bd_xcalloc((size_t)total, sizeof *sim->idlers);
     int at = 0;
     for (int k = 0; k < def->idler_set_count; k++) {
@@ -87,7 +88,9 @@ static void setup_idlers(bd_sim *sim)
             ny = -ny;
         }
         for (int j = 0; j < sim->model->idlers_per_set[k]; j++) {
+            bd_idler_model *im = &sim->own->idlers[at];
             bd_idler *id = &sim->idlers[at++];
+            id->m = im;
             double s = sp->s0 + (j + 1) * sim->model->idler_spacing[k];
             bd_tracker_init(sim, &id->tr, s);
             /* touch the belt as laid (not the ideal path): no initial kick */
@@ -95,16 +98,17 @@ static void setup_idlers(bd_sim *sim)
             double g = id->tr.gamma;
             id->tr.p[0] = sim->x[e] + g * (sim->x[e1] - sim->x[e]);
             id->tr.p[1] = sim->y[e] + g * (sim->y[e1] - sim->y[e]);
-            id->radius = set->radius;
-            id->centre[0] = id->tr.p[0] + nx * set->radius;
-            id->centre[1] = id->tr.p[1] + ny * set->radius;
-            id->inertia = set->inertia > 0.0 ? set->inertia : 1e-6;
-            id->mu_s = set->friction.mu_static;
-            id->mu_d = set->friction.mu_dynamic;
-            id->rolling = set->rolling_resistance;
+            im->s = s;
+            im->radius = set->radius;
+            im->centre[0] = id->tr.p[0] + nx * set->radius;
+            im->centre[1] = id->tr.p[1] + ny * set->radius;
+            im->inertia = set->inertia > 0.0 ? set->inertia : 1e-6;
+            im->mu_s = set->friction.mu_static;
+            im->mu_d = set->friction.mu_dynamic;
+            im->rolling = set->rolling_resistance;
             /* stiff, linearly implicit contact (idler_contact.c) */
-            id->k_contact = 100.0 * bd_lumped_of(sim)->k_axial;
-            id->set = k;
+            im->k_contact = 100.0 * bd_lumped_of(sim)->k_axial;
+            im->set = k;
         }
     }
 }
@@ -337,8 +341,8 @@ double bd_lumped_stable_step(const bd_sim *sim, bd_time_step_limit *limit)
 double bd_lumped_support_inertia(const bd_sim *sim, double R, double J)
 {
     for (int k = 0; k < sim->model->idler_count; k++) {
-        double r = sim->idlers[k].radius;
-        J += sim->idlers[k].inertia * (R / r) * (R / r);
+        double r = sim->idlers[k].m->radius;
+        J += sim->idlers[k].m->inertia * (R / r) * (R / r);
     }
     return J;
 }
