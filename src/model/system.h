@@ -145,6 +145,7 @@ typedef struct bd_energy {
 typedef struct bd_model {
     const bd_model_def *def;          /* the validated definition it came from */
     const struct bd_belt_ops *belt;   /* the belt formulation */
+    void *belt_model;                 /* the formulation's compiled data */
     bd_path path;                     /* the belt's path at rest */
     double gravity;                   /* m/s² */
     /* belt: n nodes, n elements */

@@ -53,13 +53,14 @@ static double overlap(double a, double b, double c, double d, double L, double *
  * feed point. A free front rides with the belt (axial_step.c). */
 static void init_load(bd_sim *sim)
 {
+    bd_axial_model *am = bd_axial_model_build(sim);
     const bd_material_def *mat = &sim->model->def->material;
     bd_axial *ax = bd_axial_of(sim);
     if (!mat->present)
         return;
-    bd_path_loaded_region(&sim->model->path, mat, &ax->s_feed, &ax->load_len);
+    bd_path_loaded_region(&sim->model->path, mat, &am->s_feed, &am->load_len);
     ax->d_tail = 0.0;
-    ax->d_head = mat->initially_loaded ? ax->load_len : 0.0;
+    ax->d_head = mat->initially_loaded ? am->load_len : 0.0;
     /* an empty belt that is not fed stays empty */
     ax->head_free = !mat->initially_loaded && mat->feeding;
     ax->tail_free = !mat->feeding && mat->initially_loaded;
@@ -69,11 +70,12 @@ static void init_load(bd_sim *sim)
  * `full` all that can be loaded; 0 when empty */
 static int loaded_zone(const bd_sim *sim, int full, double *from, double *to)
 {
+    bd_axial_model *am = bd_axial_model_build(sim);
     const bd_axial *ax = bd_axial_of(sim);
-    double d0 = full ? 0.0 : ax->d_tail, d1 = full ? ax->load_len : ax->d_head;
+    double d0 = full ? 0.0 : ax->d_tail, d1 = full ? am->load_len : ax->d_head;
     if (!sim->model->def->material.present || d1 <= d0)
         return 0;
-    *from = fmod(ax->s_feed + d0, sim->model->path.length);
+    *from = fmod(am->s_feed + d0, sim->model->path.length);
     *to = *from + (d1 - d0);
     return 1;
 }
@@ -157,11 +159,12 @@ static void alloc_arrays(bd_sim *sim)
 {
     size_t n = (size_t)sim->model->n;
     bd_alloc_node_arrays(sim);
-    bd_axial_of(sim)->pulleys = bd_xcalloc((size_t)sim->model->pulley_count,
-                                           sizeof *bd_axial_of(sim)->pulleys);
     bd_axial *ax = bd_axial_of(sim);
-    double **d[] = {&ax->u,  &ax->gap,   &ax->gap_rate, &ax->k,      &ax->c,
-                    &ax->td, &ax->l0,    &ax->s_len,    &ax->f_const, &ax->resist};
+    bd_axial_model *am = bd_axial_model_build(sim);
+    ax->pulleys = bd_xcalloc((size_t)sim->model->pulley_count, sizeof *ax->pulleys);
+    am->pulleys = bd_xcalloc((size_t)sim->model->pulley_count, sizeof *am->pulleys);
+    double **d[] = {&ax->u,  &ax->gap, &ax->gap_rate, &ax->td,    &ax->f_const, &ax->resist,
+                    &am->k, &am->c,   &am->l0,       &am->s_len};
     for (size_t i = 0; i < sizeof d / sizeof d[0]; i++)
         *d[i] = bd_xcalloc(n, sizeof(double));
 }
@@ -191,8 +194,9 @@ static double weight_between(const bd_sim *sim, double a, double b)
 /* the weight over the two halves of every element */
 static void element_weights(bd_sim *sim, double *h1, double *h2)
 {
+    bd_axial_model *am = bd_axial_model_build(sim);
     for (int e = 0; e < sim->model->n; e++) {
-        double s0 = sim->model->s_node0[e], half = 0.5 * bd_axial_of(sim)->s_len[e];
+        double s0 = sim->model->s_node0[e], half = 0.5 * am->s_len[e];
         h1[e] = weight_between(sim, s0, s0 + half);
         h2[e] = weight_between(sim, s0 + half, s0 + 2.0 * half);
     }
@@ -204,11 +208,12 @@ static void element_weights(bd_sim *sim, double *h1, double *h2)
  * tension without a takeup (model-format.md `initial_tension`) */
 static int tension_level(bd_sim *sim, const double *W_mid, double *Tc, bd_diag *diag)
 {
+    bd_axial_model *am = bd_axial_model_build(sim);
     const bd_model_def *def = sim->model->def;
     *Tc = def->belt.initial_tension;
     for (int i = 0; i < sim->model->pulley_count; i++) {
         const bd_pulley_body *p = &sim->pulleys[i];
-        const bd_axial_pulley *ap = &bd_axial_of(sim)->pulleys[i];
+        const bd_axial_pulley *ap = &am->pulleys[i];
         if (!p->m->movable)
             continue;
         int e_out = ap->node, e_in = (ap->node + sim->model->n - 1) % sim->model->n;
@@ -229,12 +234,13 @@ static int tension_level(bd_sim *sim, const double *W_mid, double *Tc, bd_diag *
 
 static void setup_pulleys(bd_sim *sim, const int *pnode)
 {
+    bd_axial_model *am = bd_axial_model_build(sim);
     const bd_model_def *def = sim->model->def;
     const int np = def->pulley_count;
     for (int i = 0; i < np; i++) {
         const bd_pulley_def *pd = &def->pulleys[i];
         bd_pulley_body *p = &sim->pulleys[i];
-        bd_axial_pulley *ap = &bd_axial_of(sim)->pulleys[i];
+        bd_axial_pulley *ap = &am->pulleys[i];
         ap->node = pnode[i];
         const bd_path_segment *arc = bd_path_arc(&sim->model->path, i);
         ap->law.f = pd->friction.mu_dynamic;
@@ -257,8 +263,8 @@ static void setup_pulleys(bd_sim *sim, const int *pnode)
                                 * loaded_length(sim, 0, arc->s0, arc->s0 + arc->length);
             int n = sim->model->n, e_in = (ap->node + n - 1) % n;
             double L = sim->model->path.length;
-            double mid_in = sim->model->s_node0[e_in] + 0.5 * bd_axial_of(sim)->s_len[e_in];
-            double mid_out = sim->model->s_node0[ap->node] + 0.5 * bd_axial_of(sim)->s_len[ap->node];
+            double mid_in = sim->model->s_node0[e_in] + 0.5 * am->s_len[e_in];
+            double mid_out = sim->model->s_node0[ap->node] + 0.5 * am->s_len[ap->node];
             double a0 = arc->s0, a1 = arc->s0 + arc->length;
             /* unwrap the arc next to the node */
             while (a0 - sim->model->s_node0[ap->node] > 0.5 * L) {
@@ -283,9 +289,10 @@ static void setup_pulleys(bd_sim *sim, const int *pnode)
 /* the path interval [a, z] of node i's half elements */
 static void node_range(const bd_sim *sim, int i, double *a, double *z)
 {
+    bd_axial_model *am = bd_axial_model_build(sim);
     int b = i == 0 ? sim->model->n - 1 : i - 1;
-    *a = sim->model->s_node0[i] - 0.5 * bd_axial_of(sim)->s_len[b];
-    *z = sim->model->s_node0[i] + 0.5 * bd_axial_of(sim)->s_len[i];
+    *a = sim->model->s_node0[i] - 0.5 * am->s_len[b];
+    *z = sim->model->s_node0[i] + 0.5 * am->s_len[i];
 }
 
 /* idlers: rotating mass I/r² spread along their span */
@@ -342,6 +349,7 @@ static double node_resist(const bd_sim *sim, int i, int full)
  * both set a node's load here. */
 void bd_axial_node_load(bd_sim *sim, int i)
 {
+    bd_axial_model *am = bd_axial_model_build(sim);
     int b = i == 0 ? sim->model->n - 1 : i - 1;
     double a, z;
     node_range(sim, i, &a, &z);
@@ -349,8 +357,8 @@ void bd_axial_node_load(bd_sim *sim, int i)
     sim->mass[i] += m - sim->material[i];
     sim->material[i] = m;
     /* the same halves as element_weights */
-    double sb = sim->model->s_node0[b], hb = 0.5 * bd_axial_of(sim)->s_len[b];
-    double si = sim->model->s_node0[i], hi = 0.5 * bd_axial_of(sim)->s_len[i];
+    double sb = sim->model->s_node0[b], hb = 0.5 * am->s_len[b];
+    double si = sim->model->s_node0[i], hi = 0.5 * am->s_len[i];
     bd_axial_of(sim)->f_const[i] = -(weight_between(sim, sb + hb, sb + 2.0 * hb)
                            + weight_between(sim, si, si + hi));
     bd_axial_of(sim)->resist[i] = node_resist(sim, i, 0);
@@ -362,6 +370,8 @@ int bd_axial_build(bd_sim *sim, bd_diag *diag)
     if (bd_path_build(def, &sim->own->path, diag))
         return 1;
     sim->belt_data = bd_xcalloc(1, sizeof(bd_axial));
+    sim->own->belt_model = bd_xcalloc(1, sizeof(bd_axial_model));
+    bd_axial_model *am = bd_axial_model_build(sim);
     double target = def->belt.element_length > 0.0 ? def->belt.element_length : 1.0;
     int *pnode;
     place_stations(sim, target, &pnode);
@@ -371,7 +381,7 @@ int bd_axial_build(bd_sim *sim, bd_diag *diag)
     for (int e = 0; e < n; e++) {
         int j = e + 1 == n ? 0 : e + 1;
         double ds = sim->model->s_node0[j] - sim->model->s_node0[e];
-        bd_axial_of(sim)->s_len[e] = ds > 0.0 ? ds : ds + L;
+        am->s_len[e] = ds > 0.0 ? ds : ds + L;
     }
     init_load(sim);
     setup_pulleys(sim, pnode);
@@ -382,7 +392,7 @@ int bd_axial_build(bd_sim *sim, bd_diag *diag)
     double *h1 = bd_xcalloc((size_t)n, sizeof *h1), *h2 = bd_xcalloc((size_t)n, sizeof *h2);
     double *W_mid = bd_xcalloc((size_t)n, sizeof *W_mid);
     element_weights(sim, h1, h2);
-    const bd_axial_pulley *ap = bd_axial_of(sim)->pulleys;
+    const bd_axial_pulley *ap = am->pulleys;
     int origin = ap[0].node;
     for (int i = 0; i < sim->model->pulley_count; i++)
         if (def->pulleys[i].has_drive) {
@@ -406,12 +416,12 @@ int bd_axial_build(bd_sim *sim, bd_diag *diag)
     double EA = sim->model->EA, zeta = def->belt.damping_ratio, l0_sum = 0.0;
     for (int e = 0; e < n; e++) {
         double T = rest ? 0.0 : Tc + W_mid[e];
-        double l0 = bd_axial_of(sim)->s_len[e] / (1.0 + T / EA);
-        bd_axial_of(sim)->l0[e] = l0;
-        bd_axial_of(sim)->gap[e] = bd_axial_of(sim)->s_len[e] - l0;
-        bd_axial_of(sim)->k[e] = EA / l0;
+        double l0 = am->s_len[e] / (1.0 + T / EA);
+        am->l0[e] = l0;
+        bd_axial_of(sim)->gap[e] = am->s_len[e] - l0;
+        am->k[e] = EA / l0;
         /* seed 001 eq 4.3 per element: c = 2ζ·√(k·m_e) */
-        bd_axial_of(sim)->c[e] = 2.0 * zeta * sqrt(bd_axial_of(sim)->k[e] * sim->model->belt_mpl * l0);
+        am->c[e] = 2.0 * zeta * sqrt(am->k[e] * sim->model->belt_mpl * l0);
         sim->tension[e] = T;
         l0_sum += l0;
     }
@@ -433,18 +443,18 @@ int bd_axial_build(bd_sim *sim, bd_diag *diag)
     spread_idlers(sim);
     /* the lightest node carries no material: load leaving a node never
      * takes it below this, and the stable step is taken with it */
-    bd_axial_of(sim)->min_mass = INFINITY;
+    am->min_mass = INFINITY;
     for (int i = 0; i < n; i++) {
-        if (sim->mass[i] < bd_axial_of(sim)->min_mass)
-            bd_axial_of(sim)->min_mass = sim->mass[i];
+        if (sim->mass[i] < am->min_mass)
+            am->min_mass = sim->mass[i];
         bd_axial_node_load(sim, i);
     }
 
     bd_setup_probes_and_feed(sim);
-    bd_axial_of(sim)->feed_node = -1;
+    am->feed_node = -1;
     if (def->material.present) {
         if (sim->has_feed)
-            bd_axial_of(sim)->feed_node = sim->feed.gamma < 0.5 ? sim->feed.element
+            am->feed_node = sim->feed.gamma < 0.5 ? sim->feed.element
                                                       : (sim->feed.element + 1) % n;
         bd_axial_of(sim)->e_tail = sim->feed.element;
         bd_axial_of(sim)->e_head = sim->feed.element;
@@ -467,24 +477,24 @@ static double mode_step(double K, double C, double m)
 
 double bd_axial_stable_step(const bd_sim *sim, bd_time_step_limit *limit)
 {
+    bd_axial_model *am = bd_axial_model_build(sim);
     *limit = BD_LIMIT_AXIAL;
     const int n = sim->model->n;
-    const bd_axial *ax = bd_axial_of(sim);
     double dt = INFINITY;
     for (int i = 0; i < n; i++) {
         int b = i == 0 ? n - 1 : i - 1;
-        double K = 2.0 * (ax->k[b] + ax->k[i]);
+        double K = 2.0 * (am->k[b] + am->k[i]);
         /* the rolling resistance's slope with the most load the node can carry */
-        double C = 2.0 * (ax->c[b] + ax->c[i]) + node_resist(sim, i, 1) / BD_AXIAL_ROLLING_SPEED;
+        double C = 2.0 * (am->c[b] + am->c[i]) + node_resist(sim, i, 1) / BD_AXIAL_ROLLING_SPEED;
         for (int p = 0; p < sim->model->pulley_count; p++) {
-            const bd_axial_pulley *ap = &ax->pulleys[p];
+            const bd_axial_pulley *ap = &am->pulleys[p];
             if (!sim->pulleys[p].m->movable)
                 continue;
             int e_in = (ap->node + n - 1) % n;
             if (i == e_in || i == (e_in + 1) % n)
-                K += ax->k[e_in] * fabs(ap->c_in);
+                K += am->k[e_in] * fabs(ap->c_in);
             if (i == ap->node || i == (ap->node + 1) % n)
-                K += ax->k[ap->node] * fabs(ap->c_out);
+                K += am->k[ap->node] * fabs(ap->c_out);
         }
         double d = mode_step(K, C, sim->mass[i] - sim->material[i]);
         if (d < dt)
@@ -492,10 +502,10 @@ double bd_axial_stable_step(const bd_sim *sim, bd_time_step_limit *limit)
     }
     for (int p = 0; p < sim->model->pulley_count; p++) {
         const bd_pulley_body *pb = &sim->pulleys[p];
-        const bd_axial_pulley *ap = &ax->pulleys[p];
+        const bd_axial_pulley *ap = &am->pulleys[p];
         if (!pb->m->movable)
             continue;
-        double ki = ax->k[(ap->node + n - 1) % n], ko = ax->k[ap->node];
+        double ki = am->k[(ap->node + n - 1) % n], ko = am->k[ap->node];
         double K = ki * (ap->c_in * ap->c_in + 2.0 * fabs(ap->c_in))
                  + ko * (ap->c_out * ap->c_out + 2.0 * fabs(ap->c_out));
         double d = mode_step(K, 0.0, pb->m->carriage_mass);
@@ -513,22 +523,29 @@ void bd_axial_free(bd_sim *sim)
     free(ax->u);
     free(ax->gap);
     free(ax->gap_rate);
-    free(ax->k);
-    free(ax->c);
     free(ax->td);
-    free(ax->l0);
-    free(ax->s_len);
     free(ax->f_const);
     free(ax->resist);
     free(ax->pulleys);
     free(ax);
     sim->belt_data = NULL;
+    bd_axial_model *am = sim->own ? sim->own->belt_model : NULL;
+    if (am) {
+        free(am->k);
+        free(am->c);
+        free(am->l0);
+        free(am->s_len);
+        free(am->pulleys);
+        free(am);
+        sim->own->belt_model = NULL;
+    }
 }
 
 /* a point fixed on the path: its place between the two stations around
  * it, which stay where they are */
 void bd_axial_point_init(const bd_sim *sim, bd_tracker *tr, double s)
 {
+    bd_axial_model *am = bd_axial_model_build(sim);
     bd_belt_point_place(sim, tr, s);
     int lo = tr->element;
     double rel = tr->s - sim->model->s_node0[lo];
@@ -536,5 +553,5 @@ void bd_axial_point_init(const bd_sim *sim, bd_tracker *tr, double s)
         tr->element = sim->model->n - 1;
         rel = tr->s + sim->model->path.length - sim->model->s_node0[sim->model->n - 1];
     }
-    tr->gamma = rel / bd_axial_of(sim)->s_len[tr->element];
+    tr->gamma = rel / am->s_len[tr->element];
 }

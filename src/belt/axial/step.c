@@ -39,9 +39,10 @@ static void element_pass(bd_sim *sim)
     const bd_axial *ax = bd_axial_of(sim);
     const int n = sim->model->n, z = n - 1;
     const double *u = ax->u, *v = sim->vx;
-    elements(z, u, v, ax->k, ax->c, ax->gap, ax->gap_rate, ax->td, sim->tension);
+    const bd_axial_model *am = bd_axial_model_of(sim);
+    elements(z, u, v, am->k, am->c, ax->gap, ax->gap_rate, ax->td, sim->tension);
     double cu[2] = {u[z], u[0]}, cv[2] = {v[z], v[0]};
-    elements(1, cu, cv, ax->k + z, ax->c + z, ax->gap + z, ax->gap_rate + z, ax->td + z,
+    elements(1, cu, cv, am->k + z, am->c + z, ax->gap + z, ax->gap_rate + z, ax->td + z,
              sim->tension + z);
 }
 
@@ -82,7 +83,10 @@ static void node_pass(bd_sim *sim)
 void bd_axial_wrap(bd_sim *sim, bd_pulley_body *p, double Q)
 {
     const bd_axial *ax = bd_axial_of(sim);
-    bd_axial_pulley *ap = bd_axial_pulley_of(sim, p);
+    const int ip = (int)(p - sim->pulleys);
+    const bd_axial_model *am = bd_axial_model_of(sim);
+    const bd_axial_pulley *ap = &am->pulleys[ip];
+    bd_axial_pulley_state *as = &bd_axial_of(sim)->pulleys[ip];
     const int n = sim->model->n, i = ap->node;
     const double dt = sim->model->dt, R = p->m->radius;
     int e_in = i == 0 ? n - 1 : i - 1;
@@ -96,22 +100,22 @@ void bd_axial_wrap(bd_sim *sim, bd_pulley_body *p, double Q)
     }
     sim->fx[i] += F;
     sim->fnx[i] += F;
-    ap->belt_force = F;
+    as->belt_force = F;
     p->torque_friction = -R * F;
     p->torque_external = Q;
     p->alpha = (Q - R * F) / p->m->inertia;
     /* recorded here, said after the run (bd_axial_report_events) */
-    if ((T_in <= 0.0 || T_out <= 0.0) && !ap->slack_warned && !sim->friction_off) {
-        ap->slack_warned = 1;
-        ap->slack_t = sim->t;
-        ap->slack_arriving = T_in <= 0.0;
-        ap->slack_tension = T_in <= 0.0 ? T_in : T_out;
+    if ((T_in <= 0.0 || T_out <= 0.0) && !as->slack_warned && !sim->friction_off) {
+        as->slack_warned = 1;
+        as->slack_t = sim->t;
+        as->slack_arriving = T_in <= 0.0;
+        as->slack_tension = T_in <= 0.0 ? T_in : T_out;
     }
     if (p->m->movable) {
         /* the belt's pull on the carriage along its axis, and its dashpot part */
         int j = i + 1 == n ? 0 : i + 1;
-        double Td_in = ax->c[e_in] * (ax->gap_rate[e_in] + sim->vx[i] - sim->vx[e_in]);
-        double Td_out = ax->c[i] * (ax->gap_rate[i] + sim->vx[j] - sim->vx[i]);
+        double Td_in = am->c[e_in] * (ax->gap_rate[e_in] + sim->vx[i] - sim->vx[e_in]);
+        double Td_out = am->c[i] * (ax->gap_rate[i] + sim->vx[j] - sim->vx[i]);
         p->f_axis = T_out * ap->c_out - T_in * ap->c_in + p->m->wrap_pull;
         p->fnc_axis = Td_out * ap->c_out - Td_in * ap->c_in;
     }
@@ -123,7 +127,7 @@ void bd_axial_forces(bd_sim *sim)
     node_pass(sim);
     bd_tension_extremes(sim);
     /* the feed point accelerates the material landing on it to belt speed */
-    int fd = bd_axial_of(sim)->feed_node;
+    int fd = bd_axial_model_of(sim)->feed_node;
     const double *v = sim->vx;
     if (fd >= 0 && sim->has_feed && v[fd] > 0.0) {
         double F = -sim->model->material_mpl * v[fd] * v[fd];
@@ -139,14 +143,14 @@ void bd_axial_takeup_geometry(bd_sim *sim)
     bd_axial *ax = bd_axial_of(sim);
     for (int p = 0; p < sim->model->pulley_count; p++) {
         if (sim->pulleys[p].m->movable) {
-            int i = ax->pulleys[p].node, e_in = i == 0 ? n - 1 : i - 1;
+            int i = bd_axial_model_of(sim)->pulleys[p].node, e_in = i == 0 ? n - 1 : i - 1;
             ax->gap_rate[e_in] = 0.0;
             ax->gap_rate[i] = 0.0;
         }
     }
     for (int p = 0; p < sim->model->pulley_count; p++) {
         const bd_pulley_body *pb = &sim->pulleys[p];
-        const bd_axial_pulley *ap = &ax->pulleys[p];
+        const bd_axial_pulley *ap = &bd_axial_model_of(sim)->pulleys[p];
         if (!pb->m->movable)
             continue;
         int i = ap->node, e_in = i == 0 ? n - 1 : i - 1;
@@ -165,7 +169,7 @@ void bd_axial_takeup_geometry(bd_sim *sim)
 static int front_node(const bd_sim *sim, double s, int *e)
 {
     const int n = sim->model->n;
-    const double L = sim->model->path.length, *s0 = sim->model->s_node0, *len = bd_axial_of(sim)->s_len;
+    const double L = sim->model->path.length, *s0 = sim->model->s_node0, *len = bd_axial_model_of(sim)->s_len;
     for (int it = 0; it < n; it++) {
         double rel = s - s0[*e];
         rel -= L * floor(rel / L + 0.5);   /* into [−L/2, L/2) */
@@ -202,12 +206,12 @@ static void reload_node(bd_sim *sim, int i)
 static int move_front(bd_sim *sim, double *d, int *e, double lo, double hi)
 {
     const int n = sim->model->n;
-    const double L = sim->model->path.length, s_feed = bd_axial_of(sim)->s_feed;
+    const double L = sim->model->path.length, s_feed = bd_axial_model_of(sim)->s_feed;
     int k0 = front_node(sim, s_feed + *d, e);
     int j = *e + 1 == n ? 0 : *e + 1;
     double rel = s_feed + *d - sim->model->s_node0[*e];
     rel -= L * floor(rel / L);
-    double g = rel / bd_axial_of(sim)->s_len[*e];
+    double g = rel / bd_axial_model_of(sim)->s_len[*e];
     double v = (1.0 - g) * sim->vx[*e] + g * sim->vx[j];
     double d_new = *d + v * sim->model->dt;
     d_new = d_new < lo ? lo : (d_new > hi ? hi : d_new);
@@ -230,7 +234,7 @@ static int move_front(bd_sim *sim, double *d, int *e, double lo, double hi)
 void bd_axial_material(bd_sim *sim)
 {
     bd_axial *ax = bd_axial_of(sim);
-    if (ax->head_free && move_front(sim, &ax->d_head, &ax->e_head, ax->d_tail, ax->load_len))
+    if (ax->head_free && move_front(sim, &ax->d_head, &ax->e_head, ax->d_tail, bd_axial_model_of(sim)->load_len))
         ax->head_free = 0;
     if (ax->tail_free)
         move_front(sim, &ax->d_tail, &ax->e_tail, 0.0, ax->d_head);
@@ -261,7 +265,7 @@ void bd_axial_integrate(bd_sim *sim, double *ke_out, double *w_nc_out)
 double bd_axial_elastic_energy(const bd_sim *sim)
 {
     const int n = sim->model->n;
-    const double *u = bd_axial_of(sim)->u, *gap = bd_axial_of(sim)->gap, *k = bd_axial_of(sim)->k;
+    const double *u = bd_axial_of(sim)->u, *gap = bd_axial_of(sim)->gap, *k = bd_axial_model_of(sim)->k;
     double e = 0.0;
     for (int i = 0; i < n; i++) {
         int j = i + 1 == n ? 0 : i + 1;
@@ -287,7 +291,7 @@ double bd_axial_potential(const bd_sim *sim)
 void bd_axial_report_events(bd_sim *sim)
 {
     for (int i = 0; i < sim->model->pulley_count; i++) {
-        const bd_axial_pulley *ap = &bd_axial_of(sim)->pulleys[i];
+        const bd_axial_pulley_state *ap = &bd_axial_of(sim)->pulleys[i];
         if (ap->slack_warned)
             bd_sim_warn(sim, "pulley '%s': a belt end lost its tension at t = %.3f s (%s side, "
                         "%.0f N); the belt-pulley law (seed 004) holds only while both ends "
@@ -313,7 +317,7 @@ static void point_update(const bd_sim *sim, bd_tracker *tr)
 
 static double element_s(const bd_sim *sim, int e)
 {
-    double s = sim->model->s_node0[e] + 0.5 * bd_axial_of(sim)->s_len[e];
+    double s = sim->model->s_node0[e] + 0.5 * bd_axial_model_of(sim)->s_len[e];
     return s < sim->model->path.length ? s : s - sim->model->path.length;
 }
 

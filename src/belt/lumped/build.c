@@ -41,7 +41,6 @@ static void setup_pulleys(bd_sim *sim, const bd_layout *lay)
             pm->y0 = p->cy;
         }
         /* contact: stiff and linearly implicit (pulley_contact.c) */
-        W->k_contact = 100.0 * L->k_axial;
         double wrap = bd_path_wrap_angle(&sim->model->path, i);
         W->win_max = (int)ceil((wrap + 0.5) * pd->radius / sim->model->l0) + 16;
         W->c_node = bd_xcalloc((size_t)W->win_max, sizeof *W->c_node);
@@ -107,7 +106,7 @@ static void setup_idlers(bd_sim *sim)
             im->mu_d = set->friction.mu_dynamic;
             im->rolling = set->rolling_resistance;
             /* stiff, linearly implicit contact (idler_contact.c) */
-            im->k_contact = 100.0 * bd_lumped_of(sim)->k_axial;
+            im->k_contact = bd_lumped_model_of(sim)->k_contact;
             im->set = k;
         }
     }
@@ -211,7 +210,7 @@ static void place_nodes(bd_sim *sim, const bd_layout *lay)
             if (r > pb->m->radius * (1.0 + 1e-9))
                 continue;
             double inward = -(kx * rx + ky * ry) / r;   /* pull towards the centre */
-            double depth = inward > 0.0 ? inward / bd_lumped_of(sim)->wraps[k].k_contact : 0.0;
+            double depth = inward > 0.0 ? inward / bd_lumped_model_of(sim)->k_contact : 0.0;
             double target = pb->m->radius - depth;
             sim->x[i] = pb->cx + rx * target / r;
             sim->y[i] = pb->cy + ry * target / r;
@@ -258,12 +257,16 @@ int bd_lumped_build(bd_sim *sim, bd_diag *diag)
     lay.path.segments = NULL;
     sim->own->n = lay.n;
     sim->own->l0 = lay.l0;
-    L->k_axial = sim->model->EA / sim->model->l0;
+    bd_lumped_model *LM = bd_xcalloc(1, sizeof *LM);
+    sim->own->belt_model = LM;
+    LM->k_axial = sim->model->EA / sim->model->l0;
     double m_el = sim->model->belt_mpl * sim->model->l0;
     /* seed 001 eq 4.3: c = 2·m·ζ·√(k/m) with m the element mass */
-    L->c_axial = 2.0 * def->belt.damping_ratio * sqrt(L->k_axial * m_el);
+    LM->c_axial = 2.0 * def->belt.damping_ratio * sqrt(LM->k_axial * m_el);
     /* seed 001 eq 4.11: k_θ = EI/l */
-    L->k_bend = sim->model->EI / sim->model->l0;
+    LM->k_bend = sim->model->EI / sim->model->l0;
+    /* contacts: stiff and linearly implicit (pulley_contact.c, idler_contact.c) */
+    LM->k_contact = 100.0 * LM->k_axial;
 
     bd_alloc_node_arrays(sim);
     size_t n = (size_t)sim->model->n;
@@ -312,6 +315,10 @@ void bd_lumped_free(bd_sim *sim)
     free(L->wraps);
     free(L);
     sim->belt_data = NULL;
+    if (sim->own) {
+        free(sim->own->belt_model);
+        sim->own->belt_model = NULL;
+    }
 }
 
 /* Stable time step. For central differences a mode of circular frequency ω
@@ -326,7 +333,7 @@ void bd_lumped_free(bd_sim *sim)
  * (eq 4.3, per element) damps that mode with ζ = 2ζ_e. */
 double bd_lumped_stable_step(const bd_sim *sim, bd_time_step_limit *limit)
 {
-    const bd_lumped *L = bd_lumped_of(sim);
+    const bd_lumped_model *L = bd_lumped_model_of(sim);
     double m = sim->model->belt_mpl * sim->model->l0;   /* lightest node: no material */
     double w_axial = 4.0 * L->k_axial;
     double w_bend = 16.0 * L->k_bend / (sim->model->l0 * sim->model->l0);

@@ -44,7 +44,8 @@ static void element_pass(bd_sim *sim)
 {
     bd_lumped *L = bd_lumped_of(sim);
     const int n = sim->model->n, z = n - 1;
-    const double k = L->k_axial, c = L->c_axial, l0 = sim->model->l0;
+    const bd_lumped_model *LM = bd_lumped_model_of(sim);
+    const double k = LM->k_axial, c = LM->c_axial, l0 = sim->model->l0;
     const double *x = sim->x, *y = sim->y, *vx = sim->vx, *vy = sim->vy;
     elements(z, x, y, vx, vy, k, c, l0, L->ux, L->uy, L->len, L->td, sim->tension);
     double cx[2] = {x[z], x[0]}, cy[2] = {y[z], y[0]};
@@ -87,7 +88,7 @@ static void bending_forces(bd_sim *sim)
 {
     const bd_lumped *L = bd_lumped_of(sim);
     const int n = sim->model->n;
-    const double kb = L->k_bend;
+    const double kb = bd_lumped_model_of(sim)->k_bend;
     const double *ux = L->ux, *uy = L->uy, *len = L->len;
     double *fx = sim->fx, *fy = sim->fy;
     for (int i = 0; i < n; i++) {
@@ -113,7 +114,7 @@ void bd_lumped_forces(bd_sim *sim)
     element_pass(sim);
     node_pass(sim);
     bd_tension_extremes(sim);
-    if (bd_lumped_of(sim)->k_bend > 0.0)
+    if (bd_lumped_model_of(sim)->k_bend > 0.0)
         bending_forces(sim);
 }
 
@@ -160,7 +161,7 @@ void bd_lumped_integrate(bd_sim *sim, double *ke_out, double *w_nc_out)
 
 double bd_lumped_elastic_energy(const bd_sim *sim)
 {
-    const bd_lumped *L = bd_lumped_of(sim);
+    const bd_lumped_model *L = bd_lumped_model_of(sim);
     const int n = sim->model->n;
     double e = 0.0;
     for (int i = 0; i < n; i++) {

@@ -45,7 +45,7 @@ static bd_wrap_contact *wrap_of(const bd_sim *sim, const bd_pulley_body *p)
 static void normal_forces(bd_sim *sim, bd_pulley_body *p)
 {
     bd_wrap_contact *W = wrap_of(sim, p);
-    const double l0 = sim->model->l0;
+    const double l0 = sim->model->l0, k_c = bd_lumped_model_of(sim)->k_contact;
     const int n = sim->model->n;
     double R = p->m->radius;
     /* predictive contact: a node within this gap of the shell may reach it
@@ -76,11 +76,11 @@ static void normal_forces(bd_sim *sim, bd_pulley_body *p)
         double Fo = nx * sim->fx[k] + ny * sim->fy[k];
         double delta = R - a;
         double dt = sim->model->dt;
-        double fn = W->k_contact * (delta - dt * vn - dt * dt * Fo / m)
-                  / (1.0 + W->k_contact * dt * dt / m);
+        double fn = k_c * (delta - dt * vn - dt * dt * Fo / m)
+                  / (1.0 + k_c * dt * dt / m);
         if (fn <= 0.0)
             continue;
-        double fd = fn - (delta > 0.0 ? W->k_contact * delta : 0.0);
+        double fd = fn - (delta > 0.0 ? k_c * delta : 0.0);
         sim->fx[k] += fn * nx;
         sim->fy[k] += fn * ny;
         sim->fnx[k] += fd * nx;
@@ -191,7 +191,7 @@ double bd_lumped_wrap_energy(const bd_sim *sim, const bd_pulley_body *p)
         int k = ((W->win_first - WINDOW_MARGIN + w) % n + n) % n;
         double a = hypot(sim->x[k] - p->cx, sim->y[k] - p->cy);
         if (a < R)
-            e += 0.5 * W->k_contact * (R - a) * (R - a);
+            e += 0.5 * bd_lumped_model_of(sim)->k_contact * (R - a) * (R - a);
     }
     return e;
 }
