@@ -17,7 +17,7 @@ const bd_belt_ops *bd_belt_ops_for(bd_formulation f)
 
 void bd_alloc_node_arrays(bd_sim *sim)
 {
-    size_t n = (size_t)sim->n;
+    size_t n = (size_t)sim->model->n;
     double **d[] = {&sim->x,   &sim->y,   &sim->vx,   &sim->vy,       &sim->fx,      &sim->fy,
                     &sim->fnx, &sim->fny, &sim->mass, &sim->material, &sim->tension};
     for (size_t i = 0; i < sizeof d / sizeof d[0]; i++)
@@ -26,32 +26,32 @@ void bd_alloc_node_arrays(bd_sim *sim)
 
 void bd_setup_probes_and_feed(bd_sim *sim)
 {
-    const bd_model_def *def = sim->def;
+    const bd_model_def *def = sim->model->def;
     const bd_simulation_def *sd = &def->simulation;
-    sim->probe_count = sd->probe_count;
+    sim->own->probe_count = sd->probe_count;
     sim->probes = bd_xcalloc((size_t)sd->probe_count, sizeof *sim->probes);
     for (int i = 0; i < sd->probe_count; i++) {
         bd_probe *pr = &sim->probes[i];
-        sim->belt->point_init(sim, &pr->tr, bd_path_span_s(&sim->path, sd->probes[i].span,
+        sim->model->belt->point_init(sim, &pr->tr, bd_path_span_s(&sim->model->path, sd->probes[i].span,
                                                            sd->probes[i].at));
         pr->tension_max = -INFINITY;
         pr->tension_min = INFINITY;
     }
     if (def->material.present) {
-        sim->material_mpl = def->material.mass_per_length;
-        sim->discharge_pulley = def->material.discharge;
+        sim->own->material_mpl = def->material.mass_per_length;
+        sim->own->discharge_pulley = def->material.discharge;
         sim->has_feed = def->material.feeding;
-        sim->belt->point_init(sim, &sim->feed, bd_path_span_s(&sim->path, def->material.feed_span,
+        sim->model->belt->point_init(sim, &sim->feed, bd_path_span_s(&sim->model->path, def->material.feed_span,
                                                               def->material.feed_at));
     }
 }
 
 int bd_idler_set_layout(bd_sim *sim, int k, double *spacing)
 {
-    const bd_model_def *def = sim->def;
+    const bd_model_def *def = sim->model->def;
     const bd_idler_set_def *set = &def->idler_sets[k];
-    const bd_path_segment *sp = bd_path_span(&sim->path, set->span);
-    sim->idlers_per_set[k] = 0;
+    const bd_path_segment *sp = bd_path_span(&sim->model->path, set->span);
+    sim->own->idlers_per_set[k] = 0;
     *spacing = set->spacing;
     if (fabs(sp->dir[0]) < 1e-6) {
         bd_sim_warn(sim, "idlers on span '%s': the span is vertical; no idlers placed",
@@ -63,14 +63,14 @@ int bd_idler_set_layout(bd_sim *sim, int k, double *spacing)
     int count = (int)lround(sp->length / set->spacing) - 1;
     if (count < 0)
         count = 0;
-    sim->idlers_per_set[k] = count;
+    sim->own->idlers_per_set[k] = count;
     *spacing = sp->length / (count + 1);
     return count;
 }
 
 double bd_belt_point_tension(const bd_sim *sim, const bd_tracker *tr)
 {
-    int n = sim->n, e = tr->element;
+    int n = sim->model->n, e = tr->element;
     double g = tr->gamma;
     if (g >= 0.5) {
         int j = e + 1 == n ? 0 : e + 1;
@@ -82,17 +82,17 @@ double bd_belt_point_tension(const bd_sim *sim, const bd_tracker *tr)
 
 void bd_belt_point_place(const bd_sim *sim, bd_tracker *tr, double s)
 {
-    double L = sim->path.length;
+    double L = sim->model->path.length;
     s = fmod(s, L);
     if (s < 0.0)
         s += L;
     tr->s = s;
-    bd_path_point(&sim->path, s, tr->p, tr->dir);
+    bd_path_point(&sim->model->path, s, tr->p, tr->dir);
     /* the node with the largest initial s not beyond the point */
-    int lo = 0, hi = sim->n - 1;
+    int lo = 0, hi = sim->model->n - 1;
     while (lo < hi) {
         int mid = (lo + hi + 1) / 2;
-        if (sim->s_node0[mid] <= s)
+        if (sim->model->s_node0[mid] <= s)
             lo = mid;
         else
             hi = mid - 1;
@@ -105,7 +105,7 @@ void bd_belt_point_place(const bd_sim *sim, bd_tracker *tr, double s)
  * on its own) */
 void bd_tension_extremes(bd_sim *sim)
 {
-    const int n = sim->n;
+    const int n = sim->model->n;
     const double *restrict T = sim->tension;
     double hi = -INFINITY, lo = INFINITY;
     int ihi = 0, ilo = 0, nan = 0;

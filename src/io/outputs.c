@@ -80,7 +80,7 @@ int bd_outputs_open(bd_outputs *o, const bd_sim *sim, const char *dir, int hdf5,
         snprintf(o->final_path[BD_OUT_HDF5], sizeof o->final_path[BD_OUT_HDF5], "%s/tension.h5", d);
         snprintf(o->part_path[BD_OUT_HDF5], sizeof o->part_path[BD_OUT_HDF5], "%s/.tension.h5.part",
                  d);
-        o->h5 = bd_h5_open(o->part_path[BD_OUT_HDF5], sim->def->name, sim->n, sim->path.length,
+        o->h5 = bd_h5_open(o->part_path[BD_OUT_HDF5], sim->model->def->name, sim->model->n, sim->model->path.length,
                            err, errlen);
         if (!o->h5) {
             fclose(o->history);
@@ -94,7 +94,7 @@ int bd_outputs_open(bd_outputs *o, const bd_sim *sim, const char *dir, int hdf5,
     static char hbuf[1 << 16], tbuf[1 << 20];
     setvbuf(o->history, hbuf, _IOFBF, sizeof hbuf);
     setvbuf(o->tension, tbuf, _IOFBF, sizeof tbuf);
-    o->bins = sim->n;
+    o->bins = sim->model->n;
     o->env_max = malloc((size_t)o->bins * sizeof *o->env_max);
     o->env_min = malloc((size_t)o->bins * sizeof *o->env_min);
     for (int i = 0; i < o->bins; i++) {
@@ -102,16 +102,16 @@ int bd_outputs_open(bd_outputs *o, const bd_sim *sim, const char *dir, int hdf5,
         o->env_min[i] = INFINITY;
     }
     /* history header */
-    const bd_model_def *def = sim->def;
+    const bd_model_def *def = sim->model->def;
     fprintf(o->history, "t_s");
-    for (int i = 0; i < sim->probe_count; i++)
+    for (int i = 0; i < sim->model->probe_count; i++)
         fprintf(o->history, ",%s.tension_N,%s.speed_mps", def->simulation.probes[i].name,
                 def->simulation.probes[i].name);
-    for (int i = 0; i < sim->pulley_count; i++)
+    for (int i = 0; i < sim->model->pulley_count; i++)
         if (def->pulleys[i].has_drive)
             fprintf(o->history, ",%s.omega_rad_s,%s.torque_Nm", def->pulleys[i].name,
                     def->pulleys[i].name);
-    for (int i = 0; i < sim->pulley_count; i++)
+    for (int i = 0; i < sim->model->pulley_count; i++)
         if (def->pulleys[i].has_takeup)
             fprintf(o->history, ",%s.travel_m", def->pulleys[i].name);
     fprintf(o->history, ",kinetic_J,potential_J,dissipated_J,input_J\n");
@@ -121,18 +121,18 @@ int bd_outputs_open(bd_outputs *o, const bd_sim *sim, const char *dir, int hdf5,
 
 void bd_outputs_row(bd_outputs *o, bd_sim *sim, double t)
 {
-    const bd_model_def *def = sim->def;
+    const bd_model_def *def = sim->model->def;
     FILE *h = o->history;
     fprintf(h, "%.6f", t);
-    for (int i = 0; i < sim->probe_count; i++) {
+    for (int i = 0; i < sim->model->probe_count; i++) {
         bd_probe *pr = &sim->probes[i];
         bd_probe_read(sim, pr);
         fprintf(h, ",%.6g,%.6g", pr->tension, pr->speed);
     }
-    for (int i = 0; i < sim->pulley_count; i++)
+    for (int i = 0; i < sim->model->pulley_count; i++)
         if (def->pulleys[i].has_drive)
             fprintf(h, ",%.6g,%.6g", sim->pulleys[i].omega, sim->pulleys[i].drive_torque);
-    for (int i = 0; i < sim->pulley_count; i++)
+    for (int i = 0; i < sim->model->pulley_count; i++)
         if (def->pulleys[i].has_takeup)
             fprintf(h, ",%.6g", sim->pulleys[i].q);
     const bd_energy *en = &sim->energy;
@@ -140,12 +140,12 @@ void bd_outputs_row(bd_outputs *o, bd_sim *sim, double t)
 
     /* tension along the belt, and the Eulerian envelope */
     FILE *f = o->tension;
-    double L = sim->path.length;
+    double L = sim->model->path.length;
     double *h5s = o->h5 ? bd_h5_s(o->h5) : NULL;
     double *h5T = o->h5 ? bd_h5_tension(o->h5) : NULL;
     double *h5v = o->h5 ? bd_h5_speed(o->h5) : NULL;
-    for (int e = 0; e < sim->n; e++) {
-        int j = e + 1 == sim->n ? 0 : e + 1;
+    for (int e = 0; e < sim->model->n; e++) {
+        int j = e + 1 == sim->model->n ? 0 : e + 1;
         double s = bd_element_s(sim, e);
         double T = sim->tension[e];
         double v = bd_element_speed(sim, e);
@@ -190,7 +190,7 @@ static int write_envelope(bd_outputs *o, const bd_sim *sim)
     if (!f)
         return 1;
     fprintf(f, "s_m,tension_max_N,tension_min_N\n");
-    double L = sim->path.length;
+    double L = sim->model->path.length;
     for (int b = 0; b < o->bins; b++) {
         /* a bin no element centre fell in takes its nearest filled one */
         int k = b;
@@ -237,18 +237,18 @@ static void add_static(cJSON *root, cJSON *warnings, const bd_model_def *def)
 
 static int write_summary(bd_outputs *o, const bd_sim *sim, double wall, const char *status)
 {
-    const bd_model_def *def = sim->def;
+    const bd_model_def *def = sim->model->def;
     cJSON *root = cJSON_CreateObject();
     cJSON_AddStringToObject(root, "model", def->name);
     bd_json_add_number(root, "duration_s", sim->t);
-    bd_json_add_number(root, "time_step_s", sim->dt);
+    bd_json_add_number(root, "time_step_s", sim->model->dt);
     bd_json_add_number(root, "steps", (double)sim->steps);
-    bd_json_add_number(root, "nodes", sim->n);
-    bd_json_add_number(root, "belt_length_m", sim->path.length);
+    bd_json_add_number(root, "nodes", sim->model->n);
+    bd_json_add_number(root, "belt_length_m", sim->model->path.length);
     bd_json_add_number(root, "wall_time_s", wall);
     cJSON_AddStringToObject(root, "status", status);
-    bd_json_add_number(root, "time_step_limit_s", sim->dt_limit);
-    cJSON_AddStringToObject(root, "time_step_limited_by", bd_time_step_limit_name(sim->limit_kind));
+    bd_json_add_number(root, "time_step_limit_s", sim->model->dt_limit);
+    cJSON_AddStringToObject(root, "time_step_limited_by", bd_time_step_limit_name(sim->model->limit_kind));
     if (def->belt.rated_tension > 0.0)
         bd_json_add_number(root, "rated_tension_N", def->belt.rated_tension);
     cJSON *ten = cJSON_AddObjectToObject(root, "tension");
@@ -259,7 +259,7 @@ static int write_summary(bd_outputs *o, const bd_sim *sim, double wall, const ch
     bd_json_add_number(ten, "min_time_s", sim->tension_min_t);
     bd_json_add_number(ten, "min_s_m", sim->tension_min_s);
     cJSON *probes = cJSON_AddObjectToObject(root, "probes");
-    for (int i = 0; i < sim->probe_count; i++) {
+    for (int i = 0; i < sim->model->probe_count; i++) {
         const bd_probe *pr = &sim->probes[i];
         cJSON *p = cJSON_AddObjectToObject(probes, def->simulation.probes[i].name);
         bd_json_add_number(p, "tension_max_N", pr->tension_max);
@@ -268,7 +268,7 @@ static int write_summary(bd_outputs *o, const bd_sim *sim, double wall, const ch
         bd_json_add_number(p, "speed_final_mps", pr->speed);
     }
     cJSON *pulleys = cJSON_AddObjectToObject(root, "pulleys");
-    for (int i = 0; i < sim->pulley_count; i++) {
+    for (int i = 0; i < sim->model->pulley_count; i++) {
         const bd_pulley_body *pb = &sim->pulleys[i];
         cJSON *p = cJSON_AddObjectToObject(pulleys, def->pulleys[i].name);
         bd_json_add_number(p, "omega_final_rad_s", pb->omega);

@@ -44,14 +44,14 @@ void bd_sim_report_events(bd_sim *sim)
 {
     for (int k = 0; k < sim->part_count; k++)
         bd_part_report_events(sim, &sim->parts[k]);
-    if (sim->belt->report_events)
-        sim->belt->report_events(sim);
+    if (sim->model->belt->report_events)
+        sim->model->belt->report_events(sim);
 }
 
 int bd_sim_run(bd_sim *sim, const bd_run_options *opt, char *err, size_t errlen)
 {
     double wall0 = wall_seconds();
-    if (sim->def->simulation.stabilize && bd_sim_stabilize(sim, NULL)) {
+    if (sim->model->def->simulation.stabilize && bd_sim_stabilize(sim, NULL)) {
         snprintf(err, errlen, "%s", sim->fail_msg);
         return BD_RUN_FAILED;
     }
@@ -59,9 +59,9 @@ int bd_sim_run(bd_sim *sim, const bd_run_options *opt, char *err, size_t errlen)
     if (bd_outputs_open(&out, sim, opt->out_dir, opt->hdf5, err, errlen))
         return BD_RUN_BAD_INPUT;
     energy_start(sim);
-    const double duration = sim->def->simulation.duration;
-    const double interval = sim->def->simulation.output_interval;
-    const double dt = sim->dt;
+    const double duration = sim->model->def->simulation.duration;
+    const double interval = sim->model->def->simulation.output_interval;
+    const double dt = sim->model->dt;
     bd_outputs_row(&out, sim, sim->t);
     double next_out = interval;
     double last_progress = 0.0;

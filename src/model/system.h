@@ -62,8 +62,7 @@ typedef struct bd_drive_monitor {
  * it has one. What is mounted on it (drive, transmission, takeup) are its
  * parts (parts/parts.h). It never knows which belt formulation carries it:
  * the formulation's wrap coupling fills the "coupling" fields. */
-typedef struct bd_pulley_body {
-    /* build */
+typedef struct bd_pulley_model {
     const bd_pulley_def *def;
     double radius;          /* m */
     double inertia;         /* kg·m², pulley + drive inertia (floored > 0) */
@@ -75,7 +74,12 @@ typedef struct bd_pulley_body {
     double carriage_mass;   /* kg moving along the axis (pulley + takeup) */
     double wrap_pull;       /* N along the axis: the weight of a wrap the belt
                                formulation does not resolve (axial), else 0 */
+    double x0, y0;          /* m, centre at t = 0 (a takeup's as laid) */
     int first_part, part_count; /* its parts: sim->parts[first_part ..] */
+} bd_pulley_model;
+
+typedef struct bd_pulley_body {
+    const bd_pulley_model *m;   /* its compiled model (model->pulleys[i]) */
     /* step, part torques: what the drive and bearing put on it */
     double drive_torque;    /* N·m last applied by the drive */
     double bearing_torque;  /* N·m bearing torque this step */
@@ -99,16 +103,19 @@ typedef struct bd_pulley_body {
 
 /* An idler the belt rolls over, as a body of its own (the lumped belt;
  * the axial belt spreads its idlers along the path instead). */
-typedef struct bd_idler {
-    /* build */
+typedef struct bd_idler_model {
     double centre[2];      /* m */
     double radius;         /* m */
     double inertia;        /* kg·m² */
-    double mu_s, mu_d;
-    double rolling;        /* rolling resistance coefficient */
+    double mu_s, mu_d;     /* belt–idler friction, - */
+    double rolling;        /* rolling resistance coefficient, - */
     double k_contact;      /* N/m penalty stiffness */
     int set;               /* index of its idler set */
-    /* step */
+    double s;              /* m, path coordinate of its contact point */
+} bd_idler_model;
+
+typedef struct bd_idler {
+    const bd_idler_model *m;   /* its compiled model (model->idlers[i]) */
     bd_tracker tr;         /* the belt element over it (supports phase) */
     double omega;          /* rad/s, + = surface moves with the belt (parts) */
     double alpha;          /* rad/s² this step (supports) */
@@ -131,20 +138,44 @@ typedef struct bd_energy {
     double balance_error_rel; /* largest so far */
 } bd_energy;
 
-struct bd_sim {
-    /* build: the model, the belt formulation and its own data */
-    const bd_model_def *def;
-    const struct bd_belt_ops *belt;
-    void *belt_data;
-    bd_path path;
-    double gravity;        /* m/s² */
-
-    /* belt: n nodes, n elements (build) */
+/* The compiled model: what bd_sim_create derives from the model
+ * definition and no step changes. It is written while the simulation is
+ * built (through sim->own) and read-only afterwards (through sim->model).
+ * Arrays are commented with their sizes. */
+typedef struct bd_model {
+    const bd_model_def *def;          /* the validated definition it came from */
+    const struct bd_belt_ops *belt;   /* the belt formulation */
+    void *belt_model;                 /* the formulation's compiled data */
+    bd_path path;                     /* the belt's path at rest */
+    double gravity;                   /* m/s² */
+    /* belt: n nodes, n elements */
     int n;
-    double l0;             /* m, (mean) unstretched element length */
-    double EA, EI;         /* N, N·m² */
-    double belt_mpl;       /* kg/m */
-    double *s_node0;       /* [n] m initial path coordinate of node i */
+    double l0;                        /* m, (mean) unstretched element length */
+    double EA, EI;                    /* N, N·m² */
+    double belt_mpl;                  /* kg/m */
+    double *s_node0;                  /* [n] m, initial path coordinate of node i */
+    /* counts of the parts, sensors and supports */
+    int pulley_count, idler_count, probe_count;
+    bd_pulley_model *pulleys;         /* [pulley_count] */
+    bd_idler_model *idlers;           /* [idler_count] */
+    int *idlers_per_set;              /* [def->idler_set_count] */
+    double *idler_spacing;            /* [def->idler_set_count] m, actual spacing */
+    /* material */
+    double material_mpl;              /* kg/m on the loaded belt */
+    int discharge_pulley;
+    /* time step and what limits it */
+    double dt, dt_limit;              /* s */
+    bd_time_step_limit limit_kind;
+} bd_model;
+
+/* A simulation: the compiled model and the state that the step loop
+ * advances. */
+struct bd_sim {
+    const bd_model *model;     /* read-only once built */
+    bd_model *own;             /* the same, owned and writable while building */
+    void *belt_data;           /* the formulation's own data */
+
+    /* belt nodes and elements [model->n] */
     /* step: integrate phase */
     double *x, *y;         /* [n] m */
     double *vx, *vy;       /* [n] m/s at the half step */
@@ -156,29 +187,20 @@ struct bd_sim {
     double *mass;          /* [n] kg belt + material */
     double *material;      /* [n] kg of material on the node */
 
-    /* parts (build; their state as their structs say) */
-    int pulley_count;
-    bd_pulley_body *pulleys;   /* [pulley_count] */
+    /* parts: their build and state fields as their structs say */
+    bd_pulley_body *pulleys;   /* [model->pulley_count] */
     int part_count;
     struct bd_part *parts;     /* [part_count] in pulley order */
-    int idler_count;
-    bd_idler *idlers;          /* [idler_count] */
-    int *idlers_per_set;       /* [idler_set_count] */
-    double *idler_spacing;     /* [idler_set_count] actual spacing, m */
+    bd_idler *idlers;          /* [model->idler_count] */
     /* sensors */
-    int probe_count;
-    bd_probe *probes;          /* [probe_count] */
+    bd_probe *probes;          /* [model->probe_count] */
 
-    /* material feed/discharge (build; has_feed is off while stabilizing) */
+    /* material feed (has_feed is off while stabilizing) */
     int has_feed;
     bd_tracker feed;
-    double material_mpl;   /* kg/m */
-    int discharge_pulley;
 
-    /* time: dt, dt_limit, limit_kind build; t, steps step */
-    double dt, dt_limit;
-    bd_time_step_limit limit_kind;
-    double t;
+    /* time (step) */
+    double t;              /* s */
     long steps;
     /* element tension extremes of the current step (forces phase) */
     double step_tension_max, step_tension_min;

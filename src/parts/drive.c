@@ -47,9 +47,9 @@ void bd_drive_prepare(bd_sim *sim, bd_drive *dr, const bd_pulley_body *p,
     /* 2 Hz speed loop, slowed if the explicit step could not carry it: the
      * proportional gain acts like a damper 2ω_c·J on the pulley and the belt
      * sticking to it, stable for Δt·2ω_c·J/I_local < 2; keep it below 0.5 */
-    double I_local = p->inertia + sim->belt_mpl * BD_PI * p->radius * p->radius * p->radius;
+    double I_local = p->m->inertia + sim->model->belt_mpl * BD_PI * p->m->radius * p->m->radius * p->m->radius;
     double w = 2.0 * BD_PI * 2.0;
-    double w_max = 0.25 * I_local / (sim->dt * reflected_inertia);
+    double w_max = 0.25 * I_local / (sim->model->dt * reflected_inertia);
     dr->ctrl_bandwidth = w < w_max ? w : w_max;
     if (d->control == BD_CONTROL_MOTOR) {
         const bd_motor_def *m = &d->motor;
@@ -72,14 +72,14 @@ double bd_drive_torque(const bd_sim *sim, bd_drive *dr, const bd_pulley_body *p,
     if (stopped && d->stop_mode == BD_STOP_BRAKE) {
         /* brake: the torque that would stop the pulley this step, at most
          * brake_torque; it holds the pulley once stopped */
-        return -clip(omega * p->inertia / sim->dt, d->brake_torque);
+        return -clip(omega * p->m->inertia / sim->model->dt, d->brake_torque);
     }
     switch (d->control) {
     case BD_CONTROL_SPEED: {
-        double R = p->radius;
+        double R = p->m->radius;
         double w_ref = bd_start_curve_speed(d, t) / R;
-        double w_ref_next = bd_start_curve_speed(d, t + sim->dt) / R;
-        double a_ref = (w_ref_next - w_ref) / sim->dt;
+        double w_ref_next = bd_start_curve_speed(d, t + sim->model->dt) / R;
+        double a_ref = (w_ref_next - w_ref) / sim->model->dt;
         double err = w_ref - omega;
         double wc = dr->ctrl_bandwidth;
         double J = dr->ctrl_inertia;
@@ -87,7 +87,7 @@ double bd_drive_torque(const bd_sim *sim, bd_drive *dr, const bd_pulley_body *p,
         T = clip(T_unclipped, d->max_torque);
         /* integrate only while not saturated (anti-windup) */
         if (T == T_unclipped)
-            dr->integral += err * sim->dt;
+            dr->integral += err * sim->model->dt;
         return T;
     }
     case BD_CONTROL_TORQUE:

@@ -14,25 +14,25 @@ static int parts_of(const bd_pulley_def *pd)
 
 int bd_parts_create(bd_sim *sim, bd_diag *diag)
 {
-    const bd_model_def *def = sim->def;
+    const bd_model_def *def = sim->model->def;
     int total = 0;
-    for (int i = 0; i < sim->pulley_count; i++)
+    for (int i = 0; i < sim->model->pulley_count; i++)
         total += parts_of(&def->pulleys[i]);
     sim->part_count = total;
     sim->parts = bd_xcalloc((size_t)total, sizeof *sim->parts);
     int at = 0;
-    for (int i = 0; i < sim->pulley_count; i++) {
-        bd_pulley_body *p = &sim->pulleys[i];
-        const bd_pulley_def *pd = p->def;
-        p->first_part = at;
-        p->part_count = parts_of(pd);
+    for (int i = 0; i < sim->model->pulley_count; i++) {
+        bd_pulley_model *pm = &sim->own->pulleys[i];
+        const bd_pulley_def *pd = pm->def;
+        pm->first_part = at;
+        pm->part_count = parts_of(pd);
         if (pd->has_drive) {
             bd_part *part = &sim->parts[at++];
             part->pulley = i;
             if (pd->drive.has_transmission) {
                 part->type = BD_PART_TRANSMISSION;
                 part->u.transmission.drive.def = &pd->drive;
-                part->u.transmission.belt = bd_transmission_create(sim, p);
+                part->u.transmission.belt = bd_transmission_create(sim, pm);
                 if (!part->u.transmission.belt) {
                     bd_diag_error(diag, def->source, pd->drive.mark,
                                   "pulleys[%d] '%s': out of memory for its transmission", i,
@@ -67,7 +67,7 @@ void bd_parts_free(bd_sim *sim)
 
 bd_part *bd_pulley_drive_part(const bd_sim *sim, const bd_pulley_body *p)
 {
-    for (int k = p->first_part; k < p->first_part + p->part_count; k++) {
+    for (int k = p->m->first_part; k < p->m->first_part + p->m->part_count; k++) {
         bd_part *part = &sim->parts[k];
         if (part->type == BD_PART_DRIVE || part->type == BD_PART_TRANSMISSION)
             return part;
@@ -108,7 +108,7 @@ void bd_part_advance(bd_sim *sim, bd_part *part, double omega_old, double w_mid,
     bd_energy *en = &sim->energy;
     switch (part->type) {
     case BD_PART_DRIVE:
-        en->input += p->drive_torque * w_mid * sim->dt;
+        en->input += p->drive_torque * w_mid * sim->model->dt;
         break;
     case BD_PART_TRANSMISSION:
         bd_transmission_advance(sim, part, omega_old, ke, w_nc);
@@ -118,7 +118,7 @@ void bd_part_advance(bd_sim *sim, bd_part *part, double omega_old, double w_mid,
         p->q_step_start = p->q;
         *w_nc += bd_takeup_advance(sim, &part->u.takeup, p, &en->input);
         double qm = 0.5 * (qdot_old + p->qdot);
-        *ke += 0.5 * p->carriage_mass * qm * qm;
+        *ke += 0.5 * p->m->carriage_mass * qm * qm;
         break;
     }
     }
@@ -129,7 +129,7 @@ double bd_part_potential(const bd_sim *sim, const bd_part *part)
     const bd_pulley_body *p = &sim->pulleys[part->pulley];
     switch (part->type) {
     case BD_PART_TAKEUP:
-        return -(bd_takeup_force(&part->u.takeup, sim->t) + p->wrap_pull) * p->q;
+        return -(bd_takeup_force(&part->u.takeup, sim->t) + p->m->wrap_pull) * p->q;
     case BD_PART_DRIVE:
     case BD_PART_TRANSMISSION: break;
     }
@@ -161,7 +161,7 @@ void bd_part_report_events(bd_sim *sim, const bd_part *part)
         const bd_takeup *tk = &part->u.takeup;
         if (tk->limit_hits > 0)
             bd_sim_warn(sim, "takeup '%s' reached the end of its travel (%g m) at t = %.3f s%s",
-                        sim->pulleys[part->pulley].def->name, tk->limit_first_q,
+                        sim->pulleys[part->pulley].m->def->name, tk->limit_first_q,
                         tk->limit_first_t, tk->limit_hits > 1 ? " and again later" : "");
         break;
     }

@@ -73,8 +73,8 @@ void bd_part_report_events(bd_sim *sim, const bd_part *part);
 
 /* pulley.c */
 
-/* what every pulley body takes from its definition (build) */
-void bd_pulley_body_init(bd_sim *sim, bd_pulley_body *p, const bd_pulley_def *pd);
+/* what every pulley's model takes from its definition (build) */
+void bd_pulley_model_init(bd_model *model, bd_pulley_model *pm, const bd_pulley_def *pd);
 /* part torques phase: the drive's (or transmission's) and the bearing's
  * torque on pulley p this step */
 double bd_pulley_external_torque(bd_sim *sim, bd_pulley_body *p);
@@ -100,7 +100,7 @@ double bd_takeup_force(const bd_takeup *tk, double t);
 double bd_takeup_advance(bd_sim *sim, bd_takeup *tk, bd_pulley_body *p, double *input);
 
 /* transmission.c: belt transmissions of drives (seed 004) */
-struct bd_transmission *bd_transmission_create(const bd_sim *sim, bd_pulley_body *p);
+struct bd_transmission *bd_transmission_create(const bd_sim *sim, bd_pulley_model *pm);
 /* torque of the transmission on its pulley this step */
 double bd_transmission_torque(bd_sim *sim, bd_part *part);
 /* advance the transmission over the step in which its pulley went from

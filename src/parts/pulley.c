@@ -9,30 +9,30 @@
 
 #include "base/constants.h"
 
-void bd_pulley_body_init(bd_sim *sim, bd_pulley_body *p, const bd_pulley_def *pd)
+void bd_pulley_model_init(bd_model *model, bd_pulley_model *pm, const bd_pulley_def *pd)
 {
-    p->def = pd;
-    p->radius = pd->radius;
-    p->wrap = pd->wrap;
-    p->mu_s = pd->friction.mu_static;
-    p->mu_d = pd->friction.mu_dynamic;
-    p->bearing_damping = pd->bearing_damping;
-    p->inertia = pd->inertia + (pd->has_drive ? pd->drive.inertia : 0.0);
+    pm->def = pd;
+    pm->radius = pd->radius;
+    pm->wrap = pd->wrap;
+    pm->mu_s = pd->friction.mu_static;
+    pm->mu_d = pd->friction.mu_dynamic;
+    pm->bearing_damping = pd->bearing_damping;
+    pm->inertia = pd->inertia + (pd->has_drive ? pd->drive.inertia : 0.0);
     /* a massless pulley would have an undefined speed when the belt
      * slips on it everywhere: floor its inertia at 1% of the inertia of
      * the belt wrapped on it (documented in docs/physics.md) */
-    double floor_inertia = 0.01 * sim->belt_mpl * BD_PI * pd->radius * pd->radius * pd->radius;
-    if (p->inertia < floor_inertia)
-        p->inertia = floor_inertia;
-    p->cx = pd->x;
-    p->cy = pd->y;
+    double floor_inertia = 0.01 * model->belt_mpl * BD_PI * pd->radius * pd->radius * pd->radius;
+    if (pm->inertia < floor_inertia)
+        pm->inertia = floor_inertia;
+    pm->x0 = pd->x;
+    pm->y0 = pd->y;
     if (pd->has_takeup) {
-        p->axis[0] = pd->takeup.axis[0];
-        p->axis[1] = pd->takeup.axis[1];
-        p->movable = pd->takeup.type != BD_TAKEUP_FIXED;
-        p->carriage_mass = pd->mass + pd->takeup.mass;
-        if (p->movable && p->carriage_mass <= 0.0)
-            p->carriage_mass = 1e-3 * sim->belt_mpl * pd->radius;
+        pm->axis[0] = pd->takeup.axis[0];
+        pm->axis[1] = pd->takeup.axis[1];
+        pm->movable = pd->takeup.type != BD_TAKEUP_FIXED;
+        pm->carriage_mass = pd->mass + pd->takeup.mass;
+        if (pm->movable && pm->carriage_mass <= 0.0)
+            pm->carriage_mass = 1e-3 * model->belt_mpl * pd->radius;
     }
 }
 
@@ -41,7 +41,7 @@ double bd_pulley_external_torque(bd_sim *sim, bd_pulley_body *p)
 {
     double T_drive = 0.0;
     int any = 0;
-    for (int k = p->first_part; k < p->first_part + p->part_count; k++) {
+    for (int k = p->m->first_part; k < p->m->first_part + p->m->part_count; k++) {
         bd_part *part = &sim->parts[k];
         if (part->type == BD_PART_TAKEUP)
             continue;
@@ -52,7 +52,7 @@ double bd_pulley_external_torque(bd_sim *sim, bd_pulley_body *p)
     p->drive_torque = T_drive;
     if (fabs(T_drive) > p->torque_max_abs)
         p->torque_max_abs = fabs(T_drive);
-    p->bearing_torque = -p->bearing_damping * p->omega;
+    p->bearing_torque = -p->m->bearing_damping * p->omega;
     return T_drive + p->bearing_torque;
 }
 
@@ -61,15 +61,15 @@ double bd_pulley_external_torque(bd_sim *sim, bd_pulley_body *p)
  * takeup carriage */
 void bd_pulleys_advance(bd_sim *sim, double *ke, double *w_nc)
 {
-    const double dt = sim->dt;
-    for (int i = 0; i < sim->pulley_count; i++) {
+    const double dt = sim->model->dt;
+    for (int i = 0; i < sim->model->pulley_count; i++) {
         bd_pulley_body *p = &sim->pulleys[i];
         double w_mid = p->omega + 0.5 * p->alpha * dt;
-        *ke += 0.5 * p->inertia * w_mid * w_mid;
+        *ke += 0.5 * p->m->inertia * w_mid * w_mid;
         *w_nc += (p->torque_friction + p->bearing_torque) * w_mid * dt;
         double w_old = p->omega;
         p->omega += p->alpha * dt;
-        for (int k = p->first_part; k < p->first_part + p->part_count; k++)
+        for (int k = p->m->first_part; k < p->m->first_part + p->m->part_count; k++)
             bd_part_advance(sim, &sim->parts[k], w_old, w_mid, ke, w_nc);
     }
 }

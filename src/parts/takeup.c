@@ -21,13 +21,13 @@ double bd_takeup_advance(bd_sim *sim, bd_takeup *tk, bd_pulley_body *p, double *
     double F = bd_takeup_force(tk, sim->t);
     /* a changing set force changes the potential −F·q: that is work put in,
      * −∫q·dF, with q at the middle of the interval the force changed over */
-    *input += -(F - tk->force_prev) * (p->q - 0.5 * p->qdot * sim->dt);
+    *input += -(F - tk->force_prev) * (p->q - 0.5 * p->qdot * sim->model->dt);
     tk->force_prev = F;
-    double pull = F - p->def->mass * sim->gravity * p->axis[1] + p->f_axis;
+    double pull = F - p->m->def->mass * sim->model->gravity * p->m->axis[1] + p->f_axis;
     double q_old = p->qdot;
-    p->qddot = pull / p->carriage_mass;
-    p->qdot += p->qddot * sim->dt;
-    double q_new = p->q + p->qdot * sim->dt;
+    p->qddot = pull / p->m->carriage_mass;
+    p->qdot += p->qddot * sim->model->dt;
+    double q_new = p->q + p->qdot * sim->model->dt;
     if (td->has_travel && (q_new < td->travel_min || q_new > td->travel_max)) {
         q_new = q_new < td->travel_min ? td->travel_min : td->travel_max;
         p->qdot = 0.0;
@@ -47,11 +47,11 @@ double bd_takeup_advance(bd_sim *sim, bd_takeup *tk, bd_pulley_body *p, double *
     }
     double dq = q_new - p->q;
     p->q = q_new;
-    p->cx += dq * p->axis[0];
-    p->cy += dq * p->axis[1];
+    p->cx += dq * p->m->axis[0];
+    p->cy += dq * p->m->axis[1];
     if (p->q < p->travel_min)
         p->travel_min = p->q;
     if (p->q > p->travel_max)
         p->travel_max = p->q;
-    return p->fnc_axis * 0.5 * (q_old + p->qdot) * sim->dt;
+    return p->fnc_axis * 0.5 * (q_old + p->qdot) * sim->model->dt;
 }

@@ -144,9 +144,9 @@ static void span_solve_run(span_solve *ss, int friction)
 
 /* the transmission of the drive on pulley p; it takes the drive's inertia
  * from the pulley to the motor side. NULL when out of memory. */
-bd_transmission *bd_transmission_create(const bd_sim *sim, bd_pulley_body *p)
+bd_transmission *bd_transmission_create(const bd_sim *sim, bd_pulley_model *pm)
 {
-    const bd_pulley_def *pd = p->def;
+    const bd_pulley_def *pd = pm->def;
     const bd_transmission_def *td = &pd->drive.transmission;
     bd_transmission *tr = calloc(1, sizeof *tr);
     if (!tr)
@@ -159,8 +159,8 @@ bd_transmission *bd_transmission_create(const bd_sim *sim, bd_pulley_body *p)
     tr->J_m = pd->drive.inertia / (tr->i * tr->i);
     if (tr->J_m < 1e-6)
         tr->J_m = 1e-6;
-    if (p->inertia - pd->drive.inertia > 0.0)
-        p->inertia -= pd->drive.inertia;
+    if (pm->inertia - pd->drive.inertia > 0.0)
+        pm->inertia -= pd->drive.inertia;
     tr->k = td->span_stiffness;
     tr->T0 = td->pretension;
     double f = td->v_belt ? bd_bpl_vbelt_friction(td->friction, td->sheave_angle)
@@ -181,7 +181,7 @@ bd_transmission *bd_transmission_create(const bd_sim *sim, bd_pulley_body *p)
     /* ζ of the motor sheave turning against the two spans */
     double w_t = tr->r_m * sqrt(2.0 * tr->k / tr->J_m);
     tr->c = SPAN_DAMPING_RATIO * 2.0 * tr->J_m * w_t / (2.0 * tr->r_m * tr->r_m);
-    double sub = ceil(sim->dt * w_t / 0.1);
+    double sub = ceil(sim->model->dt * w_t / 0.1);
     tr->sub = sub < 1.0 ? 1 : (sub > MAX_SUBSTEPS ? MAX_SUBSTEPS : (int)sub);
     return tr;
 }
@@ -195,7 +195,7 @@ void bd_transmission_tune(const bd_sim *sim, bd_part *part)
     bd_transmission *tr = part->u.transmission.belt;
     bd_drive *d = &part->u.transmission.drive;
     d->ctrl_inertia += tr->J_m * tr->i * tr->i;
-    double w_max = 0.25 * tr->J_m * tr->i * tr->i / (sim->dt * d->ctrl_inertia);
+    double w_max = 0.25 * tr->J_m * tr->i * tr->i / (sim->model->dt * d->ctrl_inertia);
     if (d->ctrl_bandwidth > w_max)
         d->ctrl_bandwidth = w_max;
 }
@@ -218,7 +218,7 @@ void bd_transmission_advance(bd_sim *sim, bd_part *part, double omega_old, doubl
     bd_transmission *tr = part->u.transmission.belt;
     bd_pulley_body *p = &sim->pulleys[part->pulley];
     const int sub = tr->sub;
-    const double h = sim->dt / sub, m = tr->m_w, J = tr->J_m;
+    const double h = sim->model->dt / sub, m = tr->m_w, J = tr->J_m;
     const double b = tr->def->bearing_damping;
     double torque_sum = 0.0, input = 0.0, wnc = 0.0, dw = 0.0;
     for (int k = 0; k < sub; k++) {
@@ -226,7 +226,7 @@ void bd_transmission_advance(bd_sim *sim, bd_part *part, double omega_old, doubl
         double w_p = omega_old + (p->omega - omega_old) * (k + 0.5) / sub + dw;
         double dx = tr->x_m - tr->x_p;
         double Qb = -b * tr->w_m;
-        span_solve ss = {tr, h, tr->Q_m + Qb, w_p, dx, p->inertia, 0.0, 0.0, 0.0, 0.0};
+        span_solve ss = {tr, h, tr->Q_m + Qb, w_p, dx, p->m->inertia, 0.0, 0.0, 0.0, 0.0};
         span_solve_run(&ss, !sim->friction_off);
         double w_new = tr->w_m + h * (ss.Q - tr->r_m * ss.F_m) / J;
         double vm = 0.5 * (tr->v_m + ss.v_m), vp = 0.5 * (tr->v_p + ss.v_p);
@@ -238,7 +238,7 @@ void bd_transmission_advance(bd_sim *sim, bd_part *part, double omega_old, doubl
                 - 2.0 * tr->c * dv_new * (vm - vp)) * h;
         torque_sum += -tr->r_p * ss.F_p;
         /* the pulley: the actual sheave torque instead of the applied one */
-        double ddw = h * (-tr->r_p * ss.F_p - p->drive_torque) / p->inertia;
+        double ddw = h * (-tr->r_p * ss.F_p - p->drive_torque) / p->m->inertia;
         wnc += (-tr->r_p * ss.F_p - p->drive_torque) * (w_p + 0.5 * ddw) * h;
         dw += ddw;
         tr->v_m = ss.v_m;
@@ -256,13 +256,13 @@ void bd_transmission_advance(bd_sim *sim, bd_part *part, double omega_old, doubl
     }
     tr->torque_p = torque_sum / sub;
     /* the pulley's kinetic energy changes with the correction */
-    *ke += 0.5 * p->inertia * (dw * dw + 2.0 * dw * 0.5 * (omega_old + p->omega));
+    *ke += 0.5 * p->m->inertia * (dw * dw + 2.0 * dw * 0.5 * (omega_old + p->omega));
     p->omega += dw;
     sim->energy.input += input;
     /* the pulley takes the sheave's torque as an outside, non-conservative
      * one (it was booked as drive input without a transmission) */
     double w_mid = 0.5 * (omega_old + p->omega);
-    *w_nc += wnc + p->drive_torque * w_mid * sim->dt;
+    *w_nc += wnc + p->drive_torque * w_mid * sim->model->dt;
     *ke += tr->ke;
 }
 

@@ -38,12 +38,12 @@ static double offset_on(const bd_path_segment *span)
 void bd_monitor_init(bd_sim *sim, bd_pulley_body *p)
 {
     int i = (int)(p - sim->pulleys);
-    int before = (i + sim->pulley_count - 1) % sim->pulley_count;
-    const bd_path_segment *arc = bd_path_arc(&sim->path, i);
-    double s_in = arc->s0 - offset_on(bd_path_span(&sim->path, before));
-    double s_out = arc->s0 + arc->length + offset_on(bd_path_span(&sim->path, i));
-    sim->belt->point_init(sim, &p->mon.tight, s_in);
-    sim->belt->point_init(sim, &p->mon.slack, s_out);
+    int before = (i + sim->model->pulley_count - 1) % sim->model->pulley_count;
+    const bd_path_segment *arc = bd_path_arc(&sim->model->path, i);
+    double s_in = arc->s0 - offset_on(bd_path_span(&sim->model->path, before));
+    double s_out = arc->s0 + arc->length + offset_on(bd_path_span(&sim->model->path, i));
+    sim->model->belt->point_init(sim, &p->mon.tight, s_in);
+    sim->model->belt->point_init(sim, &p->mon.slack, s_out);
     bd_monitor_reset(sim, p);
 }
 
@@ -54,7 +54,7 @@ void bd_monitor_reset(bd_sim *sim, bd_pulley_body *p)
     m->slack_min = INFINITY;
     m->swing_max = -INFINITY;
     m->swing_min = INFINITY;
-    const bd_drive_def *d = &p->def->drive;
+    const bd_drive_def *d = &p->m->def->drive;
     m->ramp_end = d->control == BD_CONTROL_SPEED ? d->start_delay + d->start_time : 0.0;
     m->tight_max_t = m->slack_min_t = 0.0;
     m->win_sum = 0.0;
@@ -112,7 +112,7 @@ static void slip(bd_drive_monitor *m, double v_surface, double v_belt, double t)
 void bd_monitor_update(bd_sim *sim, bd_pulley_body *p)
 {
     bd_drive_monitor *m = &p->mon;
-    const bd_belt_ops *belt = sim->belt;
+    const bd_belt_ops *belt = sim->model->belt;
     belt->point_update(sim, &m->tight);
     belt->point_update(sim, &m->slack);
     double t = sim->t;
@@ -138,7 +138,7 @@ void bd_monitor_update(bd_sim *sim, bd_pulley_body *p)
     double v_in = in.speed;
     double v_out = out.speed;
     window_acceleration(m, v_in, t);
-    slip(m, p->omega * p->radius, 0.5 * (v_in + v_out), t);
+    slip(m, p->omega * p->m->radius, 0.5 * (v_in + v_out), t);
 }
 
 /* tight-side tension range after the ramp; 0 while the ramp runs */
@@ -161,11 +161,11 @@ void bd_sim_result(const bd_sim *sim, bd_run_result *r)
     r->tight_swing_N = 0.0;
     r->tension_max_N = sim->tension_max;
     r->tension_min_N = sim->tension_min;
-    for (int i = 0; i < sim->pulley_count; i++) {
+    for (int i = 0; i < sim->model->pulley_count; i++) {
         const bd_pulley_body *p = &sim->pulleys[i];
-        if (p->movable && p->travel_max - p->travel_min > r->travel_range_m)
+        if (p->m->movable && p->travel_max - p->travel_min > r->travel_range_m)
             r->travel_range_m = p->travel_max - p->travel_min;
-        if (!p->def->has_drive)
+        if (!p->m->def->has_drive)
             continue;
         const bd_drive_monitor *m = &p->mon;
         int first = r->drives++ == 0;

@@ -4,18 +4,18 @@
 
 void bd_sensors_update(bd_sim *sim)
 {
-    const bd_belt_ops *belt = sim->belt;
-    for (int i = 0; i < sim->probe_count; i++)
+    const bd_belt_ops *belt = sim->model->belt;
+    for (int i = 0; i < sim->model->probe_count; i++)
         belt->point_update(sim, &sim->probes[i].tr);
-    for (int i = 0; i < sim->pulley_count; i++)
-        if (sim->pulleys[i].def->has_drive)
+    for (int i = 0; i < sim->model->pulley_count; i++)
+        if (sim->pulleys[i].m->def->has_drive)
             bd_monitor_update(sim, &sim->pulleys[i]);
 }
 
 void bd_probe_read(bd_sim *sim, bd_probe *pr)
 {
     bd_belt_sample b;
-    sim->belt->sample(sim, &pr->tr, &b);
+    sim->model->belt->sample(sim, &pr->tr, &b);
     pr->tension = b.tension;
     pr->speed = b.speed;
     if (pr->tension > pr->tension_max)

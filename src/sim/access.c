@@ -6,21 +6,21 @@
 #include "parts/parts.h"
 
 double bd_sim_time(const bd_sim *sim) { return sim->t; }
-double bd_sim_time_step(const bd_sim *sim) { return sim->dt; }
-int bd_sim_node_count(const bd_sim *sim) { return sim->n; }
-const char *bd_sim_formulation(const bd_sim *sim) { return sim->belt->name; }
-double bd_sim_belt_length(const bd_sim *sim) { return sim->path.length; }
+double bd_sim_time_step(const bd_sim *sim) { return sim->model->dt; }
+int bd_sim_node_count(const bd_sim *sim) { return sim->model->n; }
+const char *bd_sim_formulation(const bd_sim *sim) { return sim->model->belt->name; }
+double bd_sim_belt_length(const bd_sim *sim) { return sim->model->path.length; }
 
 double bd_sim_span_length(const bd_sim *sim, int pulley)
 {
-    if (pulley < 0 || pulley >= sim->pulley_count)
+    if (pulley < 0 || pulley >= sim->model->pulley_count)
         return 0.0;
-    return bd_path_span(&sim->path, pulley)->length;
+    return bd_path_span(&sim->model->path, pulley)->length;
 }
 
 int bd_sim_node(const bd_sim *sim, int i, bd_node_state *out)
 {
-    if (i < 0 || i >= sim->n)
+    if (i < 0 || i >= sim->model->n)
         return -1;
     out->x_m = sim->x[i];
     out->y_m = sim->y[i];
@@ -34,8 +34,8 @@ int bd_sim_node(const bd_sim *sim, int i, bd_node_state *out)
 double bd_sim_belt_speed(const bd_sim *sim)
 {
     double p = 0.0, m = 0.0;
-    for (int i = 0; i < sim->n; i++) {
-        p += sim->mass[i] * sim->belt->node_speed(sim, i);
+    for (int i = 0; i < sim->model->n; i++) {
+        p += sim->mass[i] * sim->model->belt->node_speed(sim, i);
         m += sim->mass[i];
     }
     return p / m;
@@ -44,16 +44,16 @@ double bd_sim_belt_speed(const bd_sim *sim)
 double bd_sim_belt_mass(const bd_sim *sim)
 {
     double m = 0.0;
-    for (int i = 0; i < sim->n; i++)
+    for (int i = 0; i < sim->model->n; i++)
         m += sim->mass[i];
     return m;
 }
 
-int bd_sim_pulley_count(const bd_sim *sim) { return sim->pulley_count; }
+int bd_sim_pulley_count(const bd_sim *sim) { return sim->model->pulley_count; }
 
 int bd_sim_pulley(const bd_sim *sim, int i, bd_pulley_state *out)
 {
-    if (i < 0 || i >= sim->pulley_count)
+    if (i < 0 || i >= sim->model->pulley_count)
         return -1;
     const bd_pulley_body *p = &sim->pulleys[i];
     out->omega_rad_s = p->omega;
@@ -61,8 +61,8 @@ int bd_sim_pulley(const bd_sim *sim, int i, bd_pulley_state *out)
     out->travel_m = p->q;
     out->x_m = p->cx;
     out->y_m = p->cy;
-    out->radius_m = p->radius;
-    out->inertia_kgm2 = p->inertia;
+    out->radius_m = p->m->radius;
+    out->inertia_kgm2 = p->m->inertia;
     const bd_part *d = bd_pulley_drive_part(sim, p);
     out->has_transmission = d && d->type == BD_PART_TRANSMISSION;
     out->motor_omega_rad_s = out->slip_motor_mps = out->slip_pulley_mps = 0.0;
@@ -74,10 +74,10 @@ int bd_sim_pulley(const bd_sim *sim, int i, bd_pulley_state *out)
 
 int bd_sim_takeup(const bd_sim *sim, int pulley, bd_takeup_state *out)
 {
-    if (pulley < 0 || pulley >= sim->pulley_count)
+    if (pulley < 0 || pulley >= sim->model->pulley_count)
         return -1;
     const bd_pulley_body *p = &sim->pulleys[pulley];
-    for (int k = p->first_part; k < p->first_part + p->part_count; k++) {
+    for (int k = p->m->first_part; k < p->m->first_part + p->m->part_count; k++) {
         const bd_part *part = &sim->parts[k];
         if (part->type != BD_PART_TAKEUP)
             continue;
@@ -90,40 +90,40 @@ int bd_sim_takeup(const bd_sim *sim, int pulley, bd_takeup_state *out)
     return -1;
 }
 
-int bd_sim_idler_count(const bd_sim *sim) { return sim->idler_count; }
+int bd_sim_idler_count(const bd_sim *sim) { return sim->model->idler_count; }
 
 int bd_sim_idler(const bd_sim *sim, int i, bd_idler_state *out)
 {
-    if (i < 0 || i >= sim->idler_count)
+    if (i < 0 || i >= sim->model->idler_count)
         return -1;
     const bd_idler *id = &sim->idlers[i];
-    out->x_m = id->centre[0];
-    out->y_m = id->centre[1];
-    out->radius_m = id->radius;
-    out->inertia_kgm2 = id->inertia;
+    out->x_m = id->m->centre[0];
+    out->y_m = id->m->centre[1];
+    out->radius_m = id->m->radius;
+    out->inertia_kgm2 = id->m->inertia;
     out->omega_rad_s = id->omega;
-    out->set = id->set;
+    out->set = id->m->set;
     return 0;
 }
 
 int bd_sim_idler_set(const bd_sim *sim, int k, int *count, double *spacing_m)
 {
-    if (k < 0 || k >= sim->def->idler_set_count)
+    if (k < 0 || k >= sim->model->def->idler_set_count)
         return -1;
-    *count = sim->idlers_per_set[k];
-    *spacing_m = sim->idler_spacing[k];
+    *count = sim->model->idlers_per_set[k];
+    *spacing_m = sim->model->idler_spacing[k];
     return 0;
 }
 
-int bd_sim_probe_count(const bd_sim *sim) { return sim->probe_count; }
+int bd_sim_probe_count(const bd_sim *sim) { return sim->model->probe_count; }
 
 int bd_sim_probe(const bd_sim *sim, int i, bd_probe_state *out)
 {
-    if (i < 0 || i >= sim->probe_count)
+    if (i < 0 || i >= sim->model->probe_count)
         return -1;
     const bd_tracker *tr = &sim->probes[i].tr;
     bd_belt_sample b;
-    sim->belt->sample(sim, tr, &b);
+    sim->model->belt->sample(sim, tr, &b);
     out->tension_N = b.tension;
     out->speed_mps = b.speed;
     out->x_m = tr->p[0];

@@ -18,24 +18,24 @@
 static void prepare_drives(bd_sim *sim)
 {
     double belt_mass = 0.0;
-    for (int i = 0; i < sim->n; i++)
+    for (int i = 0; i < sim->model->n; i++)
         belt_mass += sim->mass[i];
     int speed_drives = 0;
-    for (int i = 0; i < sim->pulley_count; i++)
-        if (sim->pulleys[i].def->has_drive
-            && sim->pulleys[i].def->drive.control == BD_CONTROL_SPEED)
+    for (int i = 0; i < sim->model->pulley_count; i++)
+        if (sim->pulleys[i].m->def->has_drive
+            && sim->pulleys[i].m->def->drive.control == BD_CONTROL_SPEED)
             speed_drives++;
-    for (int i = 0; i < sim->pulley_count; i++) {
+    for (int i = 0; i < sim->model->pulley_count; i++) {
         bd_pulley_body *p = &sim->pulleys[i];
-        if (!p->def->has_drive)
+        if (!p->m->def->has_drive)
             continue;
-        double R = p->radius;
+        double R = p->m->radius;
         double J = belt_mass * R * R;
-        for (int k = 0; k < sim->pulley_count; k++) {
-            double r = sim->pulleys[k].radius;
-            J += sim->pulleys[k].inertia * (R / r) * (R / r);
+        for (int k = 0; k < sim->model->pulley_count; k++) {
+            double r = sim->pulleys[k].m->radius;
+            J += sim->pulleys[k].m->inertia * (R / r) * (R / r);
         }
-        J = sim->belt->support_inertia(sim, R, J);
+        J = sim->model->belt->support_inertia(sim, R, J);
         bd_drive_prepare(sim, bd_part_drive(bd_pulley_drive_part(sim, p)), p,
                          J / (speed_drives > 0 ? speed_drives : 1));
     }
@@ -49,22 +49,29 @@ int bd_sim_create(const bd_model_def *def, bd_sim **out, bd_diag *diag)
 {
     *out = NULL;
     bd_sim *sim = bd_xcalloc(1, sizeof *sim);
-    sim->def = def;
-    sim->belt = bd_belt_ops_for(def->belt.formulation);
-    sim->gravity = def->gravity;
-    sim->EA = def->belt.axial_stiffness;
-    sim->EI = def->belt.bending_stiffness;
-    sim->belt_mpl = def->belt.mass_per_length;
-    sim->pulley_count = def->pulley_count;
+    sim->own = bd_xcalloc(1, sizeof *sim->own);
+    sim->model = sim->own;
+    sim->own->def = def;
+    sim->own->belt = bd_belt_ops_for(def->belt.formulation);
+    sim->own->gravity = def->gravity;
+    sim->own->EA = def->belt.axial_stiffness;
+    sim->own->EI = def->belt.bending_stiffness;
+    sim->own->belt_mpl = def->belt.mass_per_length;
+    sim->own->pulley_count = def->pulley_count;
+    sim->own->pulleys = bd_xcalloc((size_t)def->pulley_count, sizeof *sim->own->pulleys);
     sim->pulleys = bd_xcalloc((size_t)def->pulley_count, sizeof *sim->pulleys);
-    for (int i = 0; i < def->pulley_count; i++)
-        bd_pulley_body_init(sim, &sim->pulleys[i], &def->pulleys[i]);
-    if (sim->belt->build(sim, diag)) {
+    for (int i = 0; i < def->pulley_count; i++) {
+        bd_pulley_model_init(sim->own, &sim->own->pulleys[i], &def->pulleys[i]);
+        sim->pulleys[i].m = &sim->own->pulleys[i];
+        sim->pulleys[i].cx = def->pulleys[i].x;
+        sim->pulleys[i].cy = def->pulleys[i].y;
+    }
+    if (sim->model->belt->build(sim, diag)) {
         bd_sim_free(sim);
         return 1;
     }
-    for (int i = 0; i < sim->pulley_count; i++)
-        if (sim->pulleys[i].def->has_drive)
+    for (int i = 0; i < sim->model->pulley_count; i++)
+        if (sim->pulleys[i].m->def->has_drive)
             bd_monitor_init(sim, &sim->pulleys[i]);
     if (bd_time_step_choose(sim, diag) || bd_parts_create(sim, diag)) {
         bd_sim_free(sim);
@@ -74,7 +81,7 @@ int bd_sim_create(const bd_model_def *def, bd_sim **out, bd_diag *diag)
     bd_sim_start_at_rest(sim);
     sim->tension_max = -INFINITY;
     sim->tension_min = INFINITY;
-    for (int i = 0; i < sim->pulley_count; i++) {
+    for (int i = 0; i < sim->model->pulley_count; i++) {
         sim->pulleys[i].travel_min = 0.0;
         sim->pulleys[i].travel_max = 0.0;
     }
@@ -86,20 +93,27 @@ void bd_sim_free(bd_sim *sim)
 {
     if (!sim)
         return;
-    sim->belt->free(sim);
+    sim->model->belt->free(sim);
     bd_parts_free(sim);
-    double *arrays[] = {sim->x,   sim->y,   sim->vx,   sim->vy,       sim->fx,      sim->fy,
-                        sim->fnx, sim->fny, sim->mass, sim->material, sim->tension, sim->s_node0};
+    double *arrays[] = {sim->x,   sim->y,   sim->vx,   sim->vy,       sim->fx,     sim->fy,
+                        sim->fnx, sim->fny, sim->mass, sim->material, sim->tension};
     for (size_t i = 0; i < sizeof arrays / sizeof arrays[0]; i++)
         free(arrays[i]);
     free(sim->pulleys);
     free(sim->idlers);
-    free(sim->idlers_per_set);
-    free(sim->idler_spacing);
     free(sim->probes);
     for (int i = 0; i < sim->warning_count; i++)
         free(sim->warnings[i]);
     free(sim->warnings);
-    bd_path_free(&sim->path);
+    bd_model *m = sim->own;
+    if (m) {
+        free(m->s_node0);
+        free(m->idlers_per_set);
+        free(m->idler_spacing);
+        free(m->pulleys);
+        free(m->idlers);
+        bd_path_free(&m->path);
+        free(m);
+    }
     free(sim);
 }

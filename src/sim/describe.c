@@ -8,44 +8,44 @@
 
 void bd_sim_describe(const bd_sim *sim, FILE *f)
 {
-    const bd_model_def *def = sim->def;
+    const bd_model_def *def = sim->model->def;
     double belt_mass = 0.0, material = 0.0;
-    for (int i = 0; i < sim->n; i++) {
+    for (int i = 0; i < sim->model->n; i++) {
         belt_mass += sim->mass[i] - sim->material[i];
         material += sim->material[i];
     }
-    int dof = sim->belt->node_dof * sim->n + sim->pulley_count + sim->idler_count;
-    for (int i = 0; i < sim->pulley_count; i++)
-        dof += sim->pulleys[i].movable;
+    int dof = sim->model->belt->node_dof * sim->model->n + sim->model->pulley_count + sim->model->idler_count;
+    for (int i = 0; i < sim->model->pulley_count; i++)
+        dof += sim->pulleys[i].m->movable;
     fprintf(f, "model: %s\n", def->name);
-    fprintf(f, "formulation: %s\n", sim->belt->description);
-    fprintf(f, "belt loop length: %.3f m\n", sim->path.length);
-    fprintf(f, "belt elements: %d (unstretched length %.4f m)\n", sim->n, sim->l0);
-    fprintf(f, "belt nodes: %d\n", sim->n);
-    fprintf(f, "degrees of freedom: %d (%s)\n", dof, sim->belt->dof_text);
-    fprintf(f, "stable time step: %.4g s, limited by the %s\n", sim->dt_limit,
-            bd_time_step_limit_name(sim->limit_kind));
-    fprintf(f, "time step used: %.4g s (%s)\n", sim->dt,
+    fprintf(f, "formulation: %s\n", sim->model->belt->description);
+    fprintf(f, "belt loop length: %.3f m\n", sim->model->path.length);
+    fprintf(f, "belt elements: %d (unstretched length %.4f m)\n", sim->model->n, sim->model->l0);
+    fprintf(f, "belt nodes: %d\n", sim->model->n);
+    fprintf(f, "degrees of freedom: %d (%s)\n", dof, sim->model->belt->dof_text);
+    fprintf(f, "stable time step: %.4g s, limited by the %s\n", sim->model->dt_limit,
+            bd_time_step_limit_name(sim->model->limit_kind));
+    fprintf(f, "time step used: %.4g s (%s)\n", sim->model->dt,
             def->simulation.time_step > 0.0 ? "given" : "auto, 0.8 x limit");
     fprintf(f, "steps for %.4g s: %.0f\n", def->simulation.duration,
-            ceil(def->simulation.duration / sim->dt));
+            ceil(def->simulation.duration / sim->model->dt));
     fprintf(f, "pulleys:\n");
-    for (int i = 0; i < sim->pulley_count; i++) {
+    for (int i = 0; i < sim->model->pulley_count; i++) {
         const bd_pulley_body *p = &sim->pulleys[i];
-        const bd_path_segment *sp = bd_path_span(&sim->path, i);
+        const bd_path_segment *sp = bd_path_span(&sim->model->path, i);
         fprintf(f, "  %-12s wrap %6.1f deg, span after it %.3f m, inertia %.4g kg m2%s%s\n",
-                p->def->name, bd_path_wrap_angle(&sim->path, i) * 180.0 / BD_PI,
-                sp->length, p->inertia, p->def->has_drive ? ", drive" : "",
-                p->def->has_takeup ? ", takeup" : "");
+                p->m->def->name, bd_path_wrap_angle(&sim->model->path, i) * 180.0 / BD_PI,
+                sp->length, p->m->inertia, p->m->def->has_drive ? ", drive" : "",
+                p->m->def->has_takeup ? ", takeup" : "");
     }
     if (def->idler_set_count > 0)
         fprintf(f, "idlers:\n");
     for (int k = 0; k < def->idler_set_count; k++)
         fprintf(f, "  span %-12s %d idlers, spacing %.4f m\n",
-                def->pulleys[def->idler_sets[k].span].name, sim->idlers_per_set[k],
-                sim->idler_spacing[k]);
+                def->pulleys[def->idler_sets[k].span].name, sim->model->idlers_per_set[k],
+                sim->model->idler_spacing[k]);
     double pulley_mass = 0.0, takeup_mass = 0.0;
-    for (int i = 0; i < sim->pulley_count; i++) {
+    for (int i = 0; i < sim->model->pulley_count; i++) {
         pulley_mass += def->pulleys[i].mass;
         if (def->pulleys[i].has_takeup)
             takeup_mass += def->pulleys[i].takeup.mass;

@@ -13,14 +13,14 @@
 
 double bd_energy_potential(const bd_sim *sim)
 {
-    const bd_belt_ops *belt = sim->belt;
-    double g = sim->gravity;
+    const bd_belt_ops *belt = sim->model->belt;
+    double g = sim->model->gravity;
     double e = belt->potential(sim);
-    for (int i = 0; i < sim->pulley_count; i++) {
+    for (int i = 0; i < sim->model->pulley_count; i++) {
         const bd_pulley_body *p = &sim->pulleys[i];
-        e += p->def->mass * g * p->cy;
+        e += p->m->def->mass * g * p->cy;
         e += belt->wrap_energy(sim, p);
-        for (int k = p->first_part; k < p->first_part + p->part_count; k++)
+        for (int k = p->m->first_part; k < p->m->first_part + p->m->part_count; k++)
             e += bd_part_potential(sim, &sim->parts[k]);
     }
     return e + bd_parts_stored_energy(sim);
@@ -45,10 +45,10 @@ void bd_energy_update_balance(bd_sim *sim)
 
 double bd_element_s(const bd_sim *sim, int e)
 {
-    return sim->belt->element_s(sim, e);
+    return sim->model->belt->element_s(sim, e);
 }
 
 double bd_element_speed(const bd_sim *sim, int e)
 {
-    return sim->belt->element_speed(sim, e);
+    return sim->model->belt->element_speed(sim, e);
 }

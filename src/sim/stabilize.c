@@ -20,13 +20,13 @@
 
 static void zero_velocities(bd_sim *sim)
 {
-    memset(sim->vx, 0, (size_t)sim->n * sizeof *sim->vx);
-    memset(sim->vy, 0, (size_t)sim->n * sizeof *sim->vy);
-    for (int i = 0; i < sim->pulley_count; i++) {
+    memset(sim->vx, 0, (size_t)sim->model->n * sizeof *sim->vx);
+    memset(sim->vy, 0, (size_t)sim->model->n * sizeof *sim->vy);
+    for (int i = 0; i < sim->model->pulley_count; i++) {
         sim->pulleys[i].omega = 0.0;
         sim->pulleys[i].qdot = 0.0;
     }
-    for (int i = 0; i < sim->idler_count; i++)
+    for (int i = 0; i < sim->model->idler_count; i++)
         sim->idlers[i].omega = 0.0;
 }
 
@@ -35,7 +35,7 @@ int bd_sim_stabilize(bd_sim *sim, FILE *log)
     sim->friction_off = 1;
     int feeding = sim->has_feed;
     sim->has_feed = 0;
-    double prev = 0.0, scale = sim->belt->elastic_energy(sim);
+    double prev = 0.0, scale = sim->model->belt->elastic_energy(sim);
     if (scale < 1.0)
         scale = 1.0;
     int quiet_peaks = 0, resets = 0;
@@ -72,14 +72,14 @@ int bd_sim_stabilize(bd_sim *sim, FILE *log)
     sim->has_feed = feeding;
     sim->t = 0.0;
     sim->steps = 0;
-    for (int i = 0; i < sim->pulley_count; i++) {
+    for (int i = 0; i < sim->model->pulley_count; i++) {
         bd_pulley_body *p = &sim->pulleys[i];
         p->q = 0.0;
         p->travel_min = p->travel_max = 0.0;
         p->torque_max_abs = 0.0;
-        for (int m = p->first_part; m < p->first_part + p->part_count; m++)
+        for (int m = p->m->first_part; m < p->m->first_part + p->m->part_count; m++)
             bd_part_reset(&sim->parts[m]);
-        if (p->def->has_drive)
+        if (p->m->def->has_drive)
             bd_monitor_reset(sim, p);
     }
     sim->tension_max = -INFINITY;

@@ -5,7 +5,7 @@
  * mid-step velocities v(t) = (v⁻ + v⁺)/2, for which the scheme's
  * kinetic-energy change is exactly Σ F·v(t)·Δt.
  *
- * The formulation (sim->belt, belt/belt.h) does what depends on how the
+ * The formulation (sim->model->belt, belt/belt.h) does what depends on how the
  * belt is discretized; the parts (parts/) and sensors (sensors/) never see
  * which one it is. */
 #include "sim/engine.h"
@@ -28,24 +28,24 @@ static int check_elements(bd_sim *sim)
     int ihi = sim->step_element_max, ilo = sim->step_element_min;
     if (sim->step_tension_nan) {
         /* a NaN: find the first element that has it (failure path only) */
-        for (int e = 0; e < sim->n; e++)
+        for (int e = 0; e < sim->model->n; e++)
             if (!(sim->tension[e] == sim->tension[e])) {
                 hi = sim->tension[e];
                 ihi = e;
                 break;
             }
     }
-    const bd_belt_ops *belt = sim->belt;
-    if (!(hi == hi) || !(lo == lo) || hi > DIVERGED_STRAIN * sim->EA
-        || lo < REVERSED_STRAIN * sim->EA) {
-        int e = (!(hi == hi) || hi > DIVERGED_STRAIN * sim->EA) ? ihi : ilo;
+    const bd_belt_ops *belt = sim->model->belt;
+    if (!(hi == hi) || !(lo == lo) || hi > DIVERGED_STRAIN * sim->model->EA
+        || lo < REVERSED_STRAIN * sim->model->EA) {
+        int e = (!(hi == hi) || hi > DIVERGED_STRAIN * sim->model->EA) ? ihi : ilo;
         double strain = belt->element_strain(sim, e);
         snprintf(sim->fail_msg, sizeof sim->fail_msg,
                  "the simulation diverged at t = %.6f s (step %ld): %s belt element %d at "
                  "s = %.3f m (x = %.3f, y = %.3f) has strain %.3g%s; the time step %.3g s "
                  "is too large for the forces acting, or the model is unstable",
                  sim->t, sim->steps, belt->name, e, belt->element_s(sim, e), sim->x[e],
-                 sim->y[e], strain, strain < 0.0 ? " (element reversed)" : "", sim->dt);
+                 sim->y[e], strain, strain < 0.0 ? " (element reversed)" : "", sim->model->dt);
         return 1;
     }
     if (hi > sim->tension_max) {
@@ -65,11 +65,11 @@ static int check_elements(bd_sim *sim)
  * coupling at each pulley (what the pulley feels), the supports */
 static int compute_forces(bd_sim *sim)
 {
-    const bd_belt_ops *belt = sim->belt;
+    const bd_belt_ops *belt = sim->model->belt;
     belt->forces(sim);
     if (check_elements(sim))
         return 1;
-    for (int i = 0; i < sim->pulley_count; i++) {
+    for (int i = 0; i < sim->model->pulley_count; i++) {
         bd_pulley_body *p = &sim->pulleys[i];
         belt->wrap(sim, p, bd_pulley_external_torque(sim, p));
     }
@@ -84,23 +84,23 @@ static int compute_forces(bd_sim *sim)
  * ½m(a·Δt/2)² wherever the initial state is not exactly in equilibrium. */
 void bd_sim_start_at_rest(bd_sim *sim)
 {
-    double h = 0.5 * sim->dt;
+    double h = 0.5 * sim->model->dt;
     if (compute_forces(sim))
         return;
-    for (int i = 0; i < sim->n; i++) {
+    for (int i = 0; i < sim->model->n; i++) {
         sim->vx[i] = -sim->fx[i] / sim->mass[i] * h;
         sim->vy[i] = -sim->fy[i] / sim->mass[i] * h;
     }
-    for (int i = 0; i < sim->pulley_count; i++)
+    for (int i = 0; i < sim->model->pulley_count; i++)
         sim->pulleys[i].omega = -sim->pulleys[i].alpha * h;
-    for (int i = 0; i < sim->idler_count; i++)
+    for (int i = 0; i < sim->model->idler_count; i++)
         sim->idlers[i].omega = -sim->idlers[i].alpha * h;
 }
 
 /* one step; returns 0 or 1 (failed, message in sim->fail_msg) */
 int bd_step_once(bd_sim *sim)
 {
-    const bd_belt_ops *belt = sim->belt;
+    const bd_belt_ops *belt = sim->model->belt;
     bd_energy *en = &sim->energy;
 
     /* potential energy at t (positions before the update) when asked */
@@ -124,11 +124,11 @@ int bd_step_once(bd_sim *sim)
         en->max_kinetic = ke;
 
     /* material lands, rides and leaves */
-    if (sim->material_mpl > 0.0)
+    if (sim->model->material_mpl > 0.0)
         belt->material(sim);
 
     /* time, then the sensors at the new time */
-    sim->t += sim->dt;
+    sim->t += sim->model->dt;
     bd_sensors_update(sim);
     sim->steps++;
     return 0;

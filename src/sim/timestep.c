@@ -21,25 +21,25 @@ static int check_user_step(bd_sim *sim, bd_diag *diag);
 
 int bd_time_step_choose(bd_sim *sim, bd_diag *diag)
 {
-    sim->dt_limit = sim->belt->stable_step(sim, &sim->limit_kind);
+    sim->own->dt_limit = sim->own->belt->stable_step(sim, &sim->own->limit_kind);
     return check_user_step(sim, diag);
 }
 
 /* a given step must be stable; else 0.8 × the limit */
 static int check_user_step(bd_sim *sim, bd_diag *diag)
 {
-    double user = sim->def->simulation.time_step;
+    double user = sim->model->def->simulation.time_step;
     if (user > 0.0) {
-        if (user > sim->dt_limit) {
-            bd_diag_error(diag, sim->def->source, sim->def->simulation.time_step_mark,
+        if (user > sim->model->dt_limit) {
+            bd_diag_error(diag, sim->model->def->source, sim->model->def->simulation.time_step_mark,
                           "simulation.time_step: %g s is above the stability limit %.6g s "
                           "(set by the %s); use a smaller step or 'auto'",
-                          user, sim->dt_limit, bd_time_step_limit_name(sim->limit_kind));
+                          user, sim->model->dt_limit, bd_time_step_limit_name(sim->model->limit_kind));
             return 1;
         }
-        sim->dt = user;
+        sim->own->dt = user;
     } else {
-        sim->dt = BD_TIME_STEP_SAFETY * sim->dt_limit;
+        sim->own->dt = BD_TIME_STEP_SAFETY * sim->own->dt_limit;
     }
     return 0;
 }

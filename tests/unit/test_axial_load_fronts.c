@@ -86,8 +86,8 @@ static record run(const char *formulation, const char *extra, const char *loaded
     bd_model_def def;
     bd_sim *sim;
     bd_test_make_sim(yaml, &def, &sim);
-    record r = {NULL, 0, sim->dt, -1.0, 0.0};
-    long steps = (long)ceil(t_end / sim->dt);
+    record r = {NULL, 0, sim->model->dt, -1.0, 0.0};
+    long steps = (long)ceil(t_end / sim->model->dt);
     r.force = calloc((size_t)steps, sizeof *r.force);
     char err[512];
     sim->energy.potential = bd_energy_potential(sim);
@@ -106,14 +106,14 @@ static record run(const char *formulation, const char *extra, const char *loaded
             worst = bal;
         if (en->kinetic > kmax)
             kmax = en->kinetic;
-        if (sim->belt == &bd_axial_ops && r.arrival < 0.0 && strcmp(loaded, "false") == 0
+        if (sim->model->belt == &bd_axial_ops && r.arrival < 0.0 && strcmp(loaded, "false") == 0
             && !bd_axial_of(sim)->head_free)
             r.arrival = sim->t;
     }
     double scale = sim->energy.input > kmax ? sim->energy.input : kmax;
     r.balance = worst / scale;
     printf("%-8s loaded %-5s feeding %-5s n = %4d, dt = %.3g s: input %.0f J, balance "
-           "error %.4f%%\n", formulation, loaded, feeding, sim->n, sim->dt, sim->energy.input,
+           "error %.4f%%\n", formulation, loaded, feeding, sim->model->n, sim->model->dt, sim->energy.input,
            100.0 * r.balance);
     bd_sim_free(sim);
     bd_model_def_free(&def);

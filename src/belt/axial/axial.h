@@ -13,37 +13,47 @@
  * (as the discrete idlers' does, belt/lumped/idler_contact.c) */
 #define BD_AXIAL_ROLLING_SPEED 0.01
 
-/* what the axial belt keeps of each pulley */
+/* what the axial belt keeps of each pulley: compiled (in the model) */
 typedef struct bd_axial_pulley {
-    int node;               /* build: the belt node on its wrap */
-    double c_in, c_out;     /* build: u_in·a, u_out·a: spans along the takeup axis */
-    bd_bpl law;             /* build: seed-004 law of its wrap */
+    int node;               /* the belt node on its wrap */
+    double c_in, c_out;     /* u_in·a, u_out·a: spans along the takeup axis */
+    bd_bpl law;             /* seed-004 law of its wrap */
+} bd_axial_pulley;
+
+/* ... and as it runs (in the state) */
+typedef struct bd_axial_pulley_state {
     double belt_force;      /* step: N, its friction force on the belt */
     int slack_warned;       /* stats: a belt end lost tension (recorded once) */
     int slack_arriving;     /* it was the arriving end */
     double slack_t;         /* s, when */
     double slack_tension;   /* N, its tension then */
-} bd_axial_pulley;
+} bd_axial_pulley_state;
 
-typedef struct bd_axial {
-    double *u;          /* [n] step: m displacement along the path */
-    double *gap;        /* [n] m, l − l0 of element e at u = 0 (with takeup travel) */
-    double *gap_rate;   /* [n] m/s its rate (takeup motion), 0 elsewhere */
-    double *k;          /* [n] build: N/m, EA/l0 of element e */
-    double *c;          /* [n] build: N·s/m, its dashpot */
-    double *td;         /* [n] step (forces): N, the dashpot's part of the tension */
-    double *l0;         /* [n] build: m, its unstretched length */
-    double *s_len;      /* [n] build: m, its length along the initial path */
-    double *f_const;    /* [n] N, gravity along the path on node i (material phase) */
-    double *resist;     /* [n] N, rolling resistance on node i at speed (material) */
+/* the axial belt's compiled data (in the model, behind model->belt_model) */
+typedef struct bd_axial_model {
+    double *k;          /* [n] N/m, EA/l0 of element e */
+    double *c;          /* [n] N·s/m, its dashpot */
+    double *l0;         /* [n] m, its unstretched length */
+    double *s_len;      /* [n] m, its length along the initial path */
     bd_axial_pulley *pulleys;   /* [pulley_count] */
     int feed_node;      /* node at the feed point, -1 = none */
     double min_mass;    /* kg, lightest node without material */
+    double s_feed;      /* m, path coordinate of the feed point */
+    double load_len;    /* m, feed point → discharge pulley */
+} bd_axial_model;
+
+/* the axial belt's state (behind sim->belt_data) */
+typedef struct bd_axial {
+    double *u;          /* [n] step (integrate): m displacement along the path */
+    double *gap;        /* [n] step (after parts): m, l − l0 of element e at u = 0 */
+    double *gap_rate;   /* [n] step (after parts): m/s its rate (takeup motion) */
+    double *td;         /* [n] step (forces): N, the dashpot's part of the tension */
+    double *f_const;    /* [n] N, gravity along the path on node i (material phase) */
+    double *resist;     /* [n] N, rolling resistance on node i at speed (material) */
+    bd_axial_pulley_state *pulleys;   /* [pulley_count] */
     /* the loaded region [s_feed + d_tail, s_feed + d_head] along the path
      * (docs/physics.md §11): a free front rides with the belt, a pinned one
      * stays at the feed point (tail, while feeding) or the discharge (head) */
-    double s_feed;      /* m, path coordinate of the feed point */
-    double load_len;    /* m, feed point → discharge pulley */
     double d_tail, d_head; /* m from the feed point, 0 ≤ d_tail ≤ d_head ≤ load_len */
     int tail_free, head_free;
     int e_tail, e_head; /* element holding each front (a search hint) */
@@ -54,9 +64,15 @@ static inline bd_axial *bd_axial_of(const bd_sim *sim)
     return (bd_axial *)sim->belt_data;
 }
 
-static inline bd_axial_pulley *bd_axial_pulley_of(const bd_sim *sim, const bd_pulley_body *p)
+static inline const bd_axial_model *bd_axial_model_of(const bd_sim *sim)
 {
-    return &bd_axial_of(sim)->pulleys[p - sim->pulleys];
+    return (const bd_axial_model *)sim->model->belt_model;
+}
+
+/* writable while building */
+static inline bd_axial_model *bd_axial_model_build(const bd_sim *sim)
+{
+    return (bd_axial_model *)sim->own->belt_model;
 }
 
 /* build.c */

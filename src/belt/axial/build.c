@@ -53,13 +53,14 @@ static double overlap(double a, double b, double c, double d, double L, double *
  * feed point. A free front rides with the belt (axial_step.c). */
 static void init_load(bd_sim *sim)
 {
-    const bd_material_def *mat = &sim->def->material;
+    bd_axial_model *am = bd_axial_model_build(sim);
+    const bd_material_def *mat = &sim->model->def->material;
     bd_axial *ax = bd_axial_of(sim);
     if (!mat->present)
         return;
-    bd_path_loaded_region(&sim->path, mat, &ax->s_feed, &ax->load_len);
+    bd_path_loaded_region(&sim->model->path, mat, &am->s_feed, &am->load_len);
     ax->d_tail = 0.0;
-    ax->d_head = mat->initially_loaded ? ax->load_len : 0.0;
+    ax->d_head = mat->initially_loaded ? am->load_len : 0.0;
     /* an empty belt that is not fed stays empty */
     ax->head_free = !mat->initially_loaded && mat->feeding;
     ax->tail_free = !mat->feeding && mat->initially_loaded;
@@ -69,11 +70,12 @@ static void init_load(bd_sim *sim)
  * `full` all that can be loaded; 0 when empty */
 static int loaded_zone(const bd_sim *sim, int full, double *from, double *to)
 {
+    bd_axial_model *am = bd_axial_model_build(sim);
     const bd_axial *ax = bd_axial_of(sim);
-    double d0 = full ? 0.0 : ax->d_tail, d1 = full ? ax->load_len : ax->d_head;
-    if (!sim->def->material.present || d1 <= d0)
+    double d0 = full ? 0.0 : ax->d_tail, d1 = full ? am->load_len : ax->d_head;
+    if (!sim->model->def->material.present || d1 <= d0)
         return 0;
-    *from = fmod(ax->s_feed + d0, sim->path.length);
+    *from = fmod(am->s_feed + d0, sim->model->path.length);
     *to = *from + (d1 - d0);
     return 1;
 }
@@ -83,7 +85,7 @@ static double loaded_length(const bd_sim *sim, int full, double a, double b)
     double from, to;
     if (!loaded_zone(sim, full, &from, &to))
         return 0.0;
-    return overlap(a, b, from, to, sim->path.length, NULL, NULL);
+    return overlap(a, b, from, to, sim->model->path.length, NULL, NULL);
 }
 
 /* node path coordinates: pulley nodes at mid-wrap; between two of them
@@ -122,7 +124,7 @@ static int piece_stations(const bd_path *path, int j, double target, double *s)
 
 static int place_stations(bd_sim *sim, double target, int **pulley_node_out)
 {
-    const bd_path *path = &sim->path;
+    const bd_path *path = &sim->model->path;
     const int np = path->pulley_count;
     double L = path->length;
     int n = 0;
@@ -140,11 +142,11 @@ static int place_stations(bd_sim *sim, double target, int **pulley_node_out)
     while (r < n && s[r] < 0.0)
         r++;
     r %= n;
-    sim->n = n;
-    sim->s_node0 = bd_xcalloc((size_t)n, sizeof *sim->s_node0);
+    sim->own->n = n;
+    sim->own->s_node0 = bd_xcalloc((size_t)n, sizeof *sim->own->s_node0);
     for (int i = 0; i < n; i++) {
         double si = s[(i + r) % n];
-        sim->s_node0[i] = si < 0.0 ? si + L : si;
+        sim->own->s_node0[i] = si < 0.0 ? si + L : si;
     }
     for (int j = 0; j < np; j++)
         pnode[j] = (pnode[j] - r + n) % n;
@@ -155,13 +157,14 @@ static int place_stations(bd_sim *sim, double target, int **pulley_node_out)
 
 static void alloc_arrays(bd_sim *sim)
 {
-    size_t n = (size_t)sim->n;
+    size_t n = (size_t)sim->model->n;
     bd_alloc_node_arrays(sim);
-    bd_axial_of(sim)->pulleys = bd_xcalloc((size_t)sim->pulley_count,
-                                           sizeof *bd_axial_of(sim)->pulleys);
     bd_axial *ax = bd_axial_of(sim);
-    double **d[] = {&ax->u,  &ax->gap,   &ax->gap_rate, &ax->k,      &ax->c,
-                    &ax->td, &ax->l0,    &ax->s_len,    &ax->f_const, &ax->resist};
+    bd_axial_model *am = bd_axial_model_build(sim);
+    ax->pulleys = bd_xcalloc((size_t)sim->model->pulley_count, sizeof *ax->pulleys);
+    am->pulleys = bd_xcalloc((size_t)sim->model->pulley_count, sizeof *am->pulleys);
+    double **d[] = {&ax->u,  &ax->gap, &ax->gap_rate, &ax->td,    &ax->f_const, &ax->resist,
+                    &am->k, &am->c,   &am->l0,       &am->s_len};
     for (size_t i = 0; i < sizeof d / sizeof d[0]; i++)
         *d[i] = bd_xcalloc(n, sizeof(double));
 }
@@ -170,19 +173,19 @@ static void alloc_arrays(bd_sim *sim)
  * (negative when b < a) */
 static double weight_between(const bd_sim *sim, double a, double b)
 {
-    const double g = sim->gravity, mL = sim->def->material.mass_per_length;
+    const double g = sim->model->gravity, mL = sim->model->def->material.mass_per_length;
     double ds = (b - a) / WEIGHT_SAMPLES, w = 0.0;
     double p[2], t[2], yprev;
-    bd_path_point(&sim->path, a, p, t);
+    bd_path_point(&sim->model->path, a, p, t);
     yprev = p[1];
     for (int k = 0; k < WEIGHT_SAMPLES; k++) {
         double lo = a + k * ds;
-        bd_path_point(&sim->path, lo + ds, p, t);
+        bd_path_point(&sim->model->path, lo + ds, p, t);
         double on = 0.0;
         if (mL > 0.0 && ds != 0.0)
             on = loaded_length(sim, 0, ds > 0.0 ? lo : lo + ds, ds > 0.0 ? lo + ds : lo)
                / fabs(ds);
-        w += (sim->belt_mpl + mL * on) * g * (p[1] - yprev);
+        w += (sim->model->belt_mpl + mL * on) * g * (p[1] - yprev);
         yprev = p[1];
     }
     return w;
@@ -191,8 +194,9 @@ static double weight_between(const bd_sim *sim, double a, double b)
 /* the weight over the two halves of every element */
 static void element_weights(bd_sim *sim, double *h1, double *h2)
 {
-    for (int e = 0; e < sim->n; e++) {
-        double s0 = sim->s_node0[e], half = 0.5 * bd_axial_of(sim)->s_len[e];
+    bd_axial_model *am = bd_axial_model_build(sim);
+    for (int e = 0; e < sim->model->n; e++) {
+        double s0 = sim->model->s_node0[e], half = 0.5 * am->s_len[e];
         h1[e] = weight_between(sim, s0, s0 + half);
         h2[e] = weight_between(sim, s0 + half, s0 + 2.0 * half);
     }
@@ -204,21 +208,22 @@ static void element_weights(bd_sim *sim, double *h1, double *h2)
  * tension without a takeup (model-format.md `initial_tension`) */
 static int tension_level(bd_sim *sim, const double *W_mid, double *Tc, bd_diag *diag)
 {
-    const bd_model_def *def = sim->def;
+    bd_axial_model *am = bd_axial_model_build(sim);
+    const bd_model_def *def = sim->model->def;
     *Tc = def->belt.initial_tension;
-    for (int i = 0; i < sim->pulley_count; i++) {
+    for (int i = 0; i < sim->model->pulley_count; i++) {
         const bd_pulley_body *p = &sim->pulleys[i];
-        const bd_axial_pulley *ap = &bd_axial_of(sim)->pulleys[i];
-        if (!p->movable)
+        const bd_axial_pulley *ap = &am->pulleys[i];
+        if (!p->m->movable)
             continue;
-        int e_out = ap->node, e_in = (ap->node + sim->n - 1) % sim->n;
-        double F = bd_table_eval(&p->def->takeup.force, 0.0);
-        double pull = F - p->def->mass * sim->gravity * p->axis[1] + p->wrap_pull;
+        int e_out = ap->node, e_in = (ap->node + sim->model->n - 1) % sim->model->n;
+        double F = bd_table_eval(&p->m->def->takeup.force, 0.0);
+        double pull = F - p->m->def->mass * sim->model->gravity * p->m->axis[1] + p->m->wrap_pull;
         double denom = ap->c_out - ap->c_in;
         if (fabs(denom) < 1e-6) {
-            bd_diag_error(diag, def->source, p->def->takeup.mark,
+            bd_diag_error(diag, def->source, p->m->def->takeup.mark,
                           "pulleys[%d] '%s': takeup axis is perpendicular to the belt's pull "
-                          "on the pulley; it cannot set the tension", i, p->def->name);
+                          "on the pulley; it cannot set the tension", i, p->m->def->name);
             return 1;
         }
         *Tc = -(pull + W_mid[e_out] * ap->c_out - W_mid[e_in] * ap->c_in) / denom;
@@ -229,43 +234,44 @@ static int tension_level(bd_sim *sim, const double *W_mid, double *Tc, bd_diag *
 
 static void setup_pulleys(bd_sim *sim, const int *pnode)
 {
-    const bd_model_def *def = sim->def;
+    bd_axial_model *am = bd_axial_model_build(sim);
+    const bd_model_def *def = sim->model->def;
     const int np = def->pulley_count;
     for (int i = 0; i < np; i++) {
         const bd_pulley_def *pd = &def->pulleys[i];
         bd_pulley_body *p = &sim->pulleys[i];
-        bd_axial_pulley *ap = &bd_axial_of(sim)->pulleys[i];
+        bd_axial_pulley *ap = &am->pulleys[i];
         ap->node = pnode[i];
-        const bd_path_segment *arc = bd_path_arc(&sim->path, i);
+        const bd_path_segment *arc = bd_path_arc(&sim->model->path, i);
         ap->law.f = pd->friction.mu_dynamic;
-        ap->law.theta = bd_path_wrap_angle(&sim->path, i);
-        ap->law.rho = sim->belt_mpl;
+        ap->law.theta = bd_path_wrap_angle(&sim->model->path, i);
+        ap->law.rho = sim->model->belt_mpl;
         ap->law.v_thr = pd->velocity_threshold;
         ap->law.f_thr = pd->force_threshold;
         if (pd->has_takeup) {
-            const double *a = p->axis;
-            const bd_path_segment *in = bd_path_span(&sim->path, (i + np - 1) % np);
-            const bd_path_segment *out = bd_path_span(&sim->path, i);
+            const double *a = p->m->axis;
+            const bd_path_segment *in = bd_path_span(&sim->model->path, (i + np - 1) % np);
+            const bd_path_segment *out = bd_path_span(&sim->model->path, i);
             ap->c_in = in->dir[0] * a[0] + in->dir[1] * a[1];
             ap->c_out = out->dir[0] * a[0] + out->dir[1] * a[1];
             /* the wrapped belt hangs on the pulley: its weight along the
              * axis; and the belt pulls at the tangent points, where the
              * tension differs from its elements' (at their middles) by the
              * weight in between: both are constant forces on the carriage */
-            double m_wrap = sim->belt_mpl * arc->length
-                          + sim->def->material.mass_per_length
+            double m_wrap = sim->model->belt_mpl * arc->length
+                          + sim->model->def->material.mass_per_length
                                 * loaded_length(sim, 0, arc->s0, arc->s0 + arc->length);
-            int n = sim->n, e_in = (ap->node + n - 1) % n;
-            double L = sim->path.length;
-            double mid_in = sim->s_node0[e_in] + 0.5 * bd_axial_of(sim)->s_len[e_in];
-            double mid_out = sim->s_node0[ap->node] + 0.5 * bd_axial_of(sim)->s_len[ap->node];
+            int n = sim->model->n, e_in = (ap->node + n - 1) % n;
+            double L = sim->model->path.length;
+            double mid_in = sim->model->s_node0[e_in] + 0.5 * am->s_len[e_in];
+            double mid_out = sim->model->s_node0[ap->node] + 0.5 * am->s_len[ap->node];
             double a0 = arc->s0, a1 = arc->s0 + arc->length;
             /* unwrap the arc next to the node */
-            while (a0 - sim->s_node0[ap->node] > 0.5 * L) {
+            while (a0 - sim->model->s_node0[ap->node] > 0.5 * L) {
                 a0 -= L;
                 a1 -= L;
             }
-            while (sim->s_node0[ap->node] - a0 > 0.5 * L) {
+            while (sim->model->s_node0[ap->node] - a0 > 0.5 * L) {
                 a0 += L;
                 a1 += L;
             }
@@ -275,7 +281,7 @@ static void setup_pulleys(bd_sim *sim, const int *pnode)
                 mid_out += L;
             double w_in = weight_between(sim, mid_in, a0);    /* T(a0) = T_in + w_in */
             double w_out = weight_between(sim, a1, mid_out);  /* T(a1) = T_out − w_out */
-            p->wrap_pull = -m_wrap * sim->gravity * a[1] - w_out * ap->c_out - w_in * ap->c_in;
+            sim->own->pulleys[i].wrap_pull = -m_wrap * sim->model->gravity * a[1] - w_out * ap->c_out - w_in * ap->c_in;
         }
     }
 }
@@ -283,27 +289,28 @@ static void setup_pulleys(bd_sim *sim, const int *pnode)
 /* the path interval [a, z] of node i's half elements */
 static void node_range(const bd_sim *sim, int i, double *a, double *z)
 {
-    int b = i == 0 ? sim->n - 1 : i - 1;
-    *a = sim->s_node0[i] - 0.5 * bd_axial_of(sim)->s_len[b];
-    *z = sim->s_node0[i] + 0.5 * bd_axial_of(sim)->s_len[i];
+    bd_axial_model *am = bd_axial_model_build(sim);
+    int b = i == 0 ? sim->model->n - 1 : i - 1;
+    *a = sim->model->s_node0[i] - 0.5 * am->s_len[b];
+    *z = sim->model->s_node0[i] + 0.5 * am->s_len[i];
 }
 
 /* idlers: rotating mass I/r² spread along their span */
 static void spread_idlers(bd_sim *sim)
 {
-    const bd_model_def *def = sim->def;
-    double L = sim->path.length;
-    sim->idlers_per_set = bd_xcalloc((size_t)def->idler_set_count, sizeof *sim->idlers_per_set);
-    sim->idler_spacing = bd_xcalloc((size_t)def->idler_set_count, sizeof *sim->idler_spacing);
+    const bd_model_def *def = sim->model->def;
+    double L = sim->model->path.length;
+    sim->own->idlers_per_set = bd_xcalloc((size_t)def->idler_set_count, sizeof *sim->own->idlers_per_set);
+    sim->own->idler_spacing = bd_xcalloc((size_t)def->idler_set_count, sizeof *sim->own->idler_spacing);
     for (int k = 0; k < def->idler_set_count; k++) {
         const bd_idler_set_def *set = &def->idler_sets[k];
-        int count = bd_idler_set_layout(sim, k, &sim->idler_spacing[k]);
+        int count = bd_idler_set_layout(sim, k, &sim->own->idler_spacing[k]);
         if (count == 0)
             continue;
-        const bd_path_segment *sp = bd_path_span(&sim->path, set->span);
+        const bd_path_segment *sp = bd_path_span(&sim->model->path, set->span);
         double inertia = set->inertia > 0.0 ? set->inertia : 1e-6;
         double mass_per_m = count * inertia / (set->radius * set->radius) / sp->length;
-        for (int i = 0; i < sim->n; i++) {
+        for (int i = 0; i < sim->model->n; i++) {
             double a, z;
             node_range(sim, i, &a, &z);
             sim->mass[i] += mass_per_m * overlap(a, z, sp->s0, sp->s0 + sp->length, L, NULL, NULL);
@@ -316,22 +323,22 @@ static void spread_idlers(bd_sim *sim)
  * that can be loaded */
 static double node_resist(const bd_sim *sim, int i, int full)
 {
-    const bd_model_def *def = sim->def;
-    double L = sim->path.length, mL = def->material.mass_per_length, a, z, R = 0.0;
+    const bd_model_def *def = sim->model->def;
+    double L = sim->model->path.length, mL = def->material.mass_per_length, a, z, R = 0.0;
     node_range(sim, i, &a, &z);
     for (int k = 0; k < def->idler_set_count; k++) {
-        int count = sim->idlers_per_set[k];
+        int count = sim->model->idlers_per_set[k];
         if (count == 0)
             continue;
         const bd_idler_set_def *set = &def->idler_sets[k];
-        const bd_path_segment *sp = bd_path_span(&sim->path, set->span);
+        const bd_path_segment *sp = bd_path_span(&sim->model->path, set->span);
         /* the idlers carry the weight on count·spacing of the span */
-        double cover = count * sim->idler_spacing[k] / sp->length;
-        double rr = set->rolling_resistance * sim->gravity * fabs(sp->dir[0]) * cover;
+        double cover = count * sim->model->idler_spacing[k] / sp->length;
+        double rr = set->rolling_resistance * sim->model->gravity * fabs(sp->dir[0]) * cover;
         double lo = 0.0, hi = 0.0;
         double on = overlap(a, z, sp->s0, sp->s0 + sp->length, L, &lo, &hi);
         if (on > 0.0)
-            R += rr * (sim->belt_mpl * on + mL * loaded_length(sim, full, lo, hi));
+            R += rr * (sim->model->belt_mpl * on + mL * loaded_length(sim, full, lo, hi));
     }
     return R;
 }
@@ -342,15 +349,16 @@ static double node_resist(const bd_sim *sim, int i, int full)
  * both set a node's load here. */
 void bd_axial_node_load(bd_sim *sim, int i)
 {
-    int b = i == 0 ? sim->n - 1 : i - 1;
+    bd_axial_model *am = bd_axial_model_build(sim);
+    int b = i == 0 ? sim->model->n - 1 : i - 1;
     double a, z;
     node_range(sim, i, &a, &z);
-    double m = sim->def->material.mass_per_length * loaded_length(sim, 0, a, z);
+    double m = sim->model->def->material.mass_per_length * loaded_length(sim, 0, a, z);
     sim->mass[i] += m - sim->material[i];
     sim->material[i] = m;
     /* the same halves as element_weights */
-    double sb = sim->s_node0[b], hb = 0.5 * bd_axial_of(sim)->s_len[b];
-    double si = sim->s_node0[i], hi = 0.5 * bd_axial_of(sim)->s_len[i];
+    double sb = sim->model->s_node0[b], hb = 0.5 * am->s_len[b];
+    double si = sim->model->s_node0[i], hi = 0.5 * am->s_len[i];
     bd_axial_of(sim)->f_const[i] = -(weight_between(sim, sb + hb, sb + 2.0 * hb)
                            + weight_between(sim, si, si + hi));
     bd_axial_of(sim)->resist[i] = node_resist(sim, i, 0);
@@ -358,20 +366,22 @@ void bd_axial_node_load(bd_sim *sim, int i)
 
 int bd_axial_build(bd_sim *sim, bd_diag *diag)
 {
-    const bd_model_def *def = sim->def;
-    if (bd_path_build(def, &sim->path, diag))
+    const bd_model_def *def = sim->model->def;
+    if (bd_path_build(def, &sim->own->path, diag))
         return 1;
     sim->belt_data = bd_xcalloc(1, sizeof(bd_axial));
+    sim->own->belt_model = bd_xcalloc(1, sizeof(bd_axial_model));
+    bd_axial_model *am = bd_axial_model_build(sim);
     double target = def->belt.element_length > 0.0 ? def->belt.element_length : 1.0;
     int *pnode;
     place_stations(sim, target, &pnode);
-    const int n = sim->n;
+    const int n = sim->model->n;
     alloc_arrays(sim);
-    double L = sim->path.length;
+    double L = sim->model->path.length;
     for (int e = 0; e < n; e++) {
         int j = e + 1 == n ? 0 : e + 1;
-        double ds = sim->s_node0[j] - sim->s_node0[e];
-        bd_axial_of(sim)->s_len[e] = ds > 0.0 ? ds : ds + L;
+        double ds = sim->model->s_node0[j] - sim->model->s_node0[e];
+        am->s_len[e] = ds > 0.0 ? ds : ds + L;
     }
     init_load(sim);
     setup_pulleys(sim, pnode);
@@ -382,9 +392,9 @@ int bd_axial_build(bd_sim *sim, bd_diag *diag)
     double *h1 = bd_xcalloc((size_t)n, sizeof *h1), *h2 = bd_xcalloc((size_t)n, sizeof *h2);
     double *W_mid = bd_xcalloc((size_t)n, sizeof *W_mid);
     element_weights(sim, h1, h2);
-    const bd_axial_pulley *ap = bd_axial_of(sim)->pulleys;
+    const bd_axial_pulley *ap = am->pulleys;
     int origin = ap[0].node;
-    for (int i = 0; i < sim->pulley_count; i++)
+    for (int i = 0; i < sim->model->pulley_count; i++)
         if (def->pulleys[i].has_drive) {
             origin = ap[i].node;
             break;
@@ -403,19 +413,19 @@ int bd_axial_build(bd_sim *sim, bd_diag *diag)
         return 1;
     }
     int rest = def->simulation.initial_state == BD_INITIAL_REST;
-    double EA = sim->EA, zeta = def->belt.damping_ratio, l0_sum = 0.0;
+    double EA = sim->model->EA, zeta = def->belt.damping_ratio, l0_sum = 0.0;
     for (int e = 0; e < n; e++) {
         double T = rest ? 0.0 : Tc + W_mid[e];
-        double l0 = bd_axial_of(sim)->s_len[e] / (1.0 + T / EA);
-        bd_axial_of(sim)->l0[e] = l0;
-        bd_axial_of(sim)->gap[e] = bd_axial_of(sim)->s_len[e] - l0;
-        bd_axial_of(sim)->k[e] = EA / l0;
+        double l0 = am->s_len[e] / (1.0 + T / EA);
+        am->l0[e] = l0;
+        bd_axial_of(sim)->gap[e] = am->s_len[e] - l0;
+        am->k[e] = EA / l0;
         /* seed 001 eq 4.3 per element: c = 2ζ·√(k·m_e) */
-        bd_axial_of(sim)->c[e] = 2.0 * zeta * sqrt(bd_axial_of(sim)->k[e] * sim->belt_mpl * l0);
+        am->c[e] = 2.0 * zeta * sqrt(am->k[e] * sim->model->belt_mpl * l0);
         sim->tension[e] = T;
         l0_sum += l0;
     }
-    sim->l0 = l0_sum / n;
+    sim->own->l0 = l0_sum / n;
 
     free(h1);
     free(h2);
@@ -424,27 +434,27 @@ int bd_axial_build(bd_sim *sim, bd_diag *diag)
     for (int i = 0; i < n; i++) {
         double a, z;
         node_range(sim, i, &a, &z);
-        sim->mass[i] = sim->belt_mpl * (z - a);
+        sim->mass[i] = sim->model->belt_mpl * (z - a);
         double p[2], t[2];
-        bd_path_point(&sim->path, sim->s_node0[i], p, t);
+        bd_path_point(&sim->model->path, sim->model->s_node0[i], p, t);
         sim->x[i] = p[0];
         sim->y[i] = p[1];
     }
     spread_idlers(sim);
     /* the lightest node carries no material: load leaving a node never
      * takes it below this, and the stable step is taken with it */
-    bd_axial_of(sim)->min_mass = INFINITY;
+    am->min_mass = INFINITY;
     for (int i = 0; i < n; i++) {
-        if (sim->mass[i] < bd_axial_of(sim)->min_mass)
-            bd_axial_of(sim)->min_mass = sim->mass[i];
+        if (sim->mass[i] < am->min_mass)
+            am->min_mass = sim->mass[i];
         bd_axial_node_load(sim, i);
     }
 
     bd_setup_probes_and_feed(sim);
-    bd_axial_of(sim)->feed_node = -1;
+    am->feed_node = -1;
     if (def->material.present) {
         if (sim->has_feed)
-            bd_axial_of(sim)->feed_node = sim->feed.gamma < 0.5 ? sim->feed.element
+            am->feed_node = sim->feed.gamma < 0.5 ? sim->feed.element
                                                       : (sim->feed.element + 1) % n;
         bd_axial_of(sim)->e_tail = sim->feed.element;
         bd_axial_of(sim)->e_head = sim->feed.element;
@@ -467,38 +477,38 @@ static double mode_step(double K, double C, double m)
 
 double bd_axial_stable_step(const bd_sim *sim, bd_time_step_limit *limit)
 {
+    bd_axial_model *am = bd_axial_model_build(sim);
     *limit = BD_LIMIT_AXIAL;
-    const int n = sim->n;
-    const bd_axial *ax = bd_axial_of(sim);
+    const int n = sim->model->n;
     double dt = INFINITY;
     for (int i = 0; i < n; i++) {
         int b = i == 0 ? n - 1 : i - 1;
-        double K = 2.0 * (ax->k[b] + ax->k[i]);
+        double K = 2.0 * (am->k[b] + am->k[i]);
         /* the rolling resistance's slope with the most load the node can carry */
-        double C = 2.0 * (ax->c[b] + ax->c[i]) + node_resist(sim, i, 1) / BD_AXIAL_ROLLING_SPEED;
-        for (int p = 0; p < sim->pulley_count; p++) {
-            const bd_axial_pulley *ap = &ax->pulleys[p];
-            if (!sim->pulleys[p].movable)
+        double C = 2.0 * (am->c[b] + am->c[i]) + node_resist(sim, i, 1) / BD_AXIAL_ROLLING_SPEED;
+        for (int p = 0; p < sim->model->pulley_count; p++) {
+            const bd_axial_pulley *ap = &am->pulleys[p];
+            if (!sim->pulleys[p].m->movable)
                 continue;
             int e_in = (ap->node + n - 1) % n;
             if (i == e_in || i == (e_in + 1) % n)
-                K += ax->k[e_in] * fabs(ap->c_in);
+                K += am->k[e_in] * fabs(ap->c_in);
             if (i == ap->node || i == (ap->node + 1) % n)
-                K += ax->k[ap->node] * fabs(ap->c_out);
+                K += am->k[ap->node] * fabs(ap->c_out);
         }
         double d = mode_step(K, C, sim->mass[i] - sim->material[i]);
         if (d < dt)
             dt = d;
     }
-    for (int p = 0; p < sim->pulley_count; p++) {
+    for (int p = 0; p < sim->model->pulley_count; p++) {
         const bd_pulley_body *pb = &sim->pulleys[p];
-        const bd_axial_pulley *ap = &ax->pulleys[p];
-        if (!pb->movable)
+        const bd_axial_pulley *ap = &am->pulleys[p];
+        if (!pb->m->movable)
             continue;
-        double ki = ax->k[(ap->node + n - 1) % n], ko = ax->k[ap->node];
+        double ki = am->k[(ap->node + n - 1) % n], ko = am->k[ap->node];
         double K = ki * (ap->c_in * ap->c_in + 2.0 * fabs(ap->c_in))
                  + ko * (ap->c_out * ap->c_out + 2.0 * fabs(ap->c_out));
-        double d = mode_step(K, 0.0, pb->carriage_mass);
+        double d = mode_step(K, 0.0, pb->m->carriage_mass);
         if (d < dt)
             dt = d;
     }
@@ -513,28 +523,35 @@ void bd_axial_free(bd_sim *sim)
     free(ax->u);
     free(ax->gap);
     free(ax->gap_rate);
-    free(ax->k);
-    free(ax->c);
     free(ax->td);
-    free(ax->l0);
-    free(ax->s_len);
     free(ax->f_const);
     free(ax->resist);
     free(ax->pulleys);
     free(ax);
     sim->belt_data = NULL;
+    bd_axial_model *am = sim->own ? sim->own->belt_model : NULL;
+    if (am) {
+        free(am->k);
+        free(am->c);
+        free(am->l0);
+        free(am->s_len);
+        free(am->pulleys);
+        free(am);
+        sim->own->belt_model = NULL;
+    }
 }
 
 /* a point fixed on the path: its place between the two stations around
  * it, which stay where they are */
 void bd_axial_point_init(const bd_sim *sim, bd_tracker *tr, double s)
 {
+    bd_axial_model *am = bd_axial_model_build(sim);
     bd_belt_point_place(sim, tr, s);
     int lo = tr->element;
-    double rel = tr->s - sim->s_node0[lo];
+    double rel = tr->s - sim->model->s_node0[lo];
     if (rel < 0.0) {
-        tr->element = sim->n - 1;
-        rel = tr->s + sim->path.length - sim->s_node0[sim->n - 1];
+        tr->element = sim->model->n - 1;
+        rel = tr->s + sim->model->path.length - sim->model->s_node0[sim->model->n - 1];
     }
-    tr->gamma = rel / bd_axial_of(sim)->s_len[tr->element];
+    tr->gamma = rel / am->s_len[tr->element];
 }

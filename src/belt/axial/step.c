@@ -37,11 +37,12 @@ static void elements(int count, const double *restrict u, const double *restrict
 static void element_pass(bd_sim *sim)
 {
     const bd_axial *ax = bd_axial_of(sim);
-    const int n = sim->n, z = n - 1;
+    const int n = sim->model->n, z = n - 1;
     const double *u = ax->u, *v = sim->vx;
-    elements(z, u, v, ax->k, ax->c, ax->gap, ax->gap_rate, ax->td, sim->tension);
+    const bd_axial_model *am = bd_axial_model_of(sim);
+    elements(z, u, v, am->k, am->c, ax->gap, ax->gap_rate, ax->td, sim->tension);
     double cu[2] = {u[z], u[0]}, cv[2] = {v[z], v[0]};
-    elements(1, cu, cv, ax->k + z, ax->c + z, ax->gap + z, ax->gap_rate + z, ax->td + z,
+    elements(1, cu, cv, am->k + z, am->c + z, ax->gap + z, ax->gap_rate + z, ax->td + z,
              sim->tension + z);
 }
 
@@ -74,7 +75,7 @@ static void nodes(int n, const double *restrict fc, const double *restrict res,
 static void node_pass(bd_sim *sim)
 {
     const bd_axial *ax = bd_axial_of(sim);
-    nodes(sim->n, ax->f_const, ax->resist, sim->vx, sim->tension, ax->td, sim->fx, sim->fnx);
+    nodes(sim->model->n, ax->f_const, ax->resist, sim->vx, sim->tension, ax->td, sim->fx, sim->fnx);
 }
 
 /* the wrap coupling: the seed-004 law at pulley p, implicit in the
@@ -82,37 +83,40 @@ static void node_pass(bd_sim *sim)
 void bd_axial_wrap(bd_sim *sim, bd_pulley_body *p, double Q)
 {
     const bd_axial *ax = bd_axial_of(sim);
-    bd_axial_pulley *ap = bd_axial_pulley_of(sim, p);
-    const int n = sim->n, i = ap->node;
-    const double dt = sim->dt, R = p->radius;
+    const int ip = (int)(p - sim->pulleys);
+    const bd_axial_model *am = bd_axial_model_of(sim);
+    const bd_axial_pulley *ap = &am->pulleys[ip];
+    bd_axial_pulley_state *as = &bd_axial_of(sim)->pulleys[ip];
+    const int n = sim->model->n, i = ap->node;
+    const double dt = sim->model->dt, R = p->m->radius;
     int e_in = i == 0 ? n - 1 : i - 1;
     double T_in = sim->tension[e_in], T_out = sim->tension[i];
     double F = 0.0;
     if (!sim->friction_off) {
         double m = sim->mass[i];
-        double v_free = sim->vx[i] + dt * sim->fx[i] / m - R * (p->omega + dt * Q / p->inertia);
-        double kappa = dt * (1.0 / m + R * R / p->inertia);
+        double v_free = sim->vx[i] + dt * sim->fx[i] / m - R * (p->omega + dt * Q / p->m->inertia);
+        double kappa = dt * (1.0 / m + R * R / p->m->inertia);
         F = bd_bpl_solve(&ap->law, T_in, T_out, sim->vx[i], v_free, kappa);
     }
     sim->fx[i] += F;
     sim->fnx[i] += F;
-    ap->belt_force = F;
+    as->belt_force = F;
     p->torque_friction = -R * F;
     p->torque_external = Q;
-    p->alpha = (Q - R * F) / p->inertia;
+    p->alpha = (Q - R * F) / p->m->inertia;
     /* recorded here, said after the run (bd_axial_report_events) */
-    if ((T_in <= 0.0 || T_out <= 0.0) && !ap->slack_warned && !sim->friction_off) {
-        ap->slack_warned = 1;
-        ap->slack_t = sim->t;
-        ap->slack_arriving = T_in <= 0.0;
-        ap->slack_tension = T_in <= 0.0 ? T_in : T_out;
+    if ((T_in <= 0.0 || T_out <= 0.0) && !as->slack_warned && !sim->friction_off) {
+        as->slack_warned = 1;
+        as->slack_t = sim->t;
+        as->slack_arriving = T_in <= 0.0;
+        as->slack_tension = T_in <= 0.0 ? T_in : T_out;
     }
-    if (p->movable) {
+    if (p->m->movable) {
         /* the belt's pull on the carriage along its axis, and its dashpot part */
         int j = i + 1 == n ? 0 : i + 1;
-        double Td_in = ax->c[e_in] * (ax->gap_rate[e_in] + sim->vx[i] - sim->vx[e_in]);
-        double Td_out = ax->c[i] * (ax->gap_rate[i] + sim->vx[j] - sim->vx[i]);
-        p->f_axis = T_out * ap->c_out - T_in * ap->c_in + p->wrap_pull;
+        double Td_in = am->c[e_in] * (ax->gap_rate[e_in] + sim->vx[i] - sim->vx[e_in]);
+        double Td_out = am->c[i] * (ax->gap_rate[i] + sim->vx[j] - sim->vx[i]);
+        p->f_axis = T_out * ap->c_out - T_in * ap->c_in + p->m->wrap_pull;
         p->fnc_axis = Td_out * ap->c_out - Td_in * ap->c_in;
     }
 }
@@ -123,10 +127,10 @@ void bd_axial_forces(bd_sim *sim)
     node_pass(sim);
     bd_tension_extremes(sim);
     /* the feed point accelerates the material landing on it to belt speed */
-    int fd = bd_axial_of(sim)->feed_node;
+    int fd = bd_axial_model_of(sim)->feed_node;
     const double *v = sim->vx;
     if (fd >= 0 && sim->has_feed && v[fd] > 0.0) {
-        double F = -sim->material_mpl * v[fd] * v[fd];
+        double F = -sim->model->material_mpl * v[fd] * v[fd];
         sim->fx[fd] += F;
         sim->fnx[fd] += F;
     }
@@ -135,19 +139,19 @@ void bd_axial_forces(bd_sim *sim)
 /* a takeup moved by dq: its two elements change length (and rate) */
 void bd_axial_takeup_geometry(bd_sim *sim)
 {
-    const int n = sim->n;
+    const int n = sim->model->n;
     bd_axial *ax = bd_axial_of(sim);
-    for (int p = 0; p < sim->pulley_count; p++) {
-        if (sim->pulleys[p].movable) {
-            int i = ax->pulleys[p].node, e_in = i == 0 ? n - 1 : i - 1;
+    for (int p = 0; p < sim->model->pulley_count; p++) {
+        if (sim->pulleys[p].m->movable) {
+            int i = bd_axial_model_of(sim)->pulleys[p].node, e_in = i == 0 ? n - 1 : i - 1;
             ax->gap_rate[e_in] = 0.0;
             ax->gap_rate[i] = 0.0;
         }
     }
-    for (int p = 0; p < sim->pulley_count; p++) {
+    for (int p = 0; p < sim->model->pulley_count; p++) {
         const bd_pulley_body *pb = &sim->pulleys[p];
-        const bd_axial_pulley *ap = &ax->pulleys[p];
-        if (!pb->movable)
+        const bd_axial_pulley *ap = &bd_axial_model_of(sim)->pulleys[p];
+        if (!pb->m->movable)
             continue;
         int i = ap->node, e_in = i == 0 ? n - 1 : i - 1;
         double dq = pb->q - pb->q_step_start;
@@ -155,8 +159,8 @@ void bd_axial_takeup_geometry(bd_sim *sim)
         ax->gap[i] -= ap->c_out * dq;
         ax->gap_rate[e_in] += ap->c_in * pb->qdot;
         ax->gap_rate[i] -= ap->c_out * pb->qdot;
-        sim->x[i] += dq * pb->axis[0];
-        sim->y[i] += dq * pb->axis[1];
+        sim->x[i] += dq * pb->m->axis[0];
+        sim->y[i] += dq * pb->m->axis[1];
     }
 }
 
@@ -164,8 +168,8 @@ void bd_axial_takeup_geometry(bd_sim *sim)
  * half elements hold it */
 static int front_node(const bd_sim *sim, double s, int *e)
 {
-    const int n = sim->n;
-    const double L = sim->path.length, *s0 = sim->s_node0, *len = bd_axial_of(sim)->s_len;
+    const int n = sim->model->n;
+    const double L = sim->model->path.length, *s0 = sim->model->s_node0, *len = bd_axial_model_of(sim)->s_len;
     for (int it = 0; it < n; it++) {
         double rel = s - s0[*e];
         rel -= L * floor(rel / L + 0.5);   /* into [−L/2, L/2) */
@@ -201,15 +205,15 @@ static void reload_node(bd_sim *sim, int i)
  * one station). Returns 1 when it reached hi. */
 static int move_front(bd_sim *sim, double *d, int *e, double lo, double hi)
 {
-    const int n = sim->n;
-    const double L = sim->path.length, s_feed = bd_axial_of(sim)->s_feed;
+    const int n = sim->model->n;
+    const double L = sim->model->path.length, s_feed = bd_axial_model_of(sim)->s_feed;
     int k0 = front_node(sim, s_feed + *d, e);
     int j = *e + 1 == n ? 0 : *e + 1;
-    double rel = s_feed + *d - sim->s_node0[*e];
+    double rel = s_feed + *d - sim->model->s_node0[*e];
     rel -= L * floor(rel / L);
-    double g = rel / bd_axial_of(sim)->s_len[*e];
+    double g = rel / bd_axial_model_of(sim)->s_len[*e];
     double v = (1.0 - g) * sim->vx[*e] + g * sim->vx[j];
-    double d_new = *d + v * sim->dt;
+    double d_new = *d + v * sim->model->dt;
     d_new = d_new < lo ? lo : (d_new > hi ? hi : d_new);
     if (d_new == *d)
         return d_new >= hi;
@@ -230,7 +234,7 @@ static int move_front(bd_sim *sim, double *d, int *e, double lo, double hi)
 void bd_axial_material(bd_sim *sim)
 {
     bd_axial *ax = bd_axial_of(sim);
-    if (ax->head_free && move_front(sim, &ax->d_head, &ax->e_head, ax->d_tail, ax->load_len))
+    if (ax->head_free && move_front(sim, &ax->d_head, &ax->e_head, ax->d_tail, bd_axial_model_of(sim)->load_len))
         ax->head_free = 0;
     if (ax->tail_free)
         move_front(sim, &ax->d_tail, &ax->e_tail, 0.0, ax->d_head);
@@ -240,8 +244,8 @@ void bd_axial_material(bd_sim *sim)
  * mid-step bookkeeping of the lumped belt (belt/lumped/forces.c) */
 void bd_axial_integrate(bd_sim *sim, double *ke_out, double *w_nc_out)
 {
-    const double dt = sim->dt;
-    const int n = sim->n;
+    const double dt = sim->model->dt;
+    const int n = sim->model->n;
     double *u = bd_axial_of(sim)->u, *v = sim->vx;
     const double *f = sim->fx, *fn = sim->fnx, *mass = sim->mass;
     double w_nc = 0.0, ke = 0.0;
@@ -260,8 +264,8 @@ void bd_axial_integrate(bd_sim *sim, double *ke_out, double *w_nc_out)
 /* ½·k·(stretch)² of every element */
 double bd_axial_elastic_energy(const bd_sim *sim)
 {
-    const int n = sim->n;
-    const double *u = bd_axial_of(sim)->u, *gap = bd_axial_of(sim)->gap, *k = bd_axial_of(sim)->k;
+    const int n = sim->model->n;
+    const double *u = bd_axial_of(sim)->u, *gap = bd_axial_of(sim)->gap, *k = bd_axial_model_of(sim)->k;
     double e = 0.0;
     for (int i = 0; i < n; i++) {
         int j = i + 1 == n ? 0 : i + 1;
@@ -278,7 +282,7 @@ double bd_axial_potential(const bd_sim *sim)
 {
     const bd_axial *ax = bd_axial_of(sim);
     double e = bd_axial_elastic_energy(sim);
-    for (int i = 0; i < sim->n; i++)
+    for (int i = 0; i < sim->model->n; i++)
         e -= ax->f_const[i] * ax->u[i];
     return e;
 }
@@ -286,19 +290,19 @@ double bd_axial_potential(const bd_sim *sim)
 /* recorded in the step (bd_axial_wrap), said after the run */
 void bd_axial_report_events(bd_sim *sim)
 {
-    for (int i = 0; i < sim->pulley_count; i++) {
-        const bd_axial_pulley *ap = &bd_axial_of(sim)->pulleys[i];
+    for (int i = 0; i < sim->model->pulley_count; i++) {
+        const bd_axial_pulley_state *ap = &bd_axial_of(sim)->pulleys[i];
         if (ap->slack_warned)
             bd_sim_warn(sim, "pulley '%s': a belt end lost its tension at t = %.3f s (%s side, "
                         "%.0f N); the belt-pulley law (seed 004) holds only while both ends "
-                        "are in tension", sim->pulleys[i].def->name, ap->slack_t,
+                        "are in tension", sim->pulleys[i].m->def->name, ap->slack_t,
                         ap->slack_arriving ? "arriving" : "leaving", ap->slack_tension);
     }
 }
 
 static void sample(const bd_sim *sim, const bd_tracker *tr, bd_belt_sample *out)
 {
-    int e = tr->element, j = e + 1 == sim->n ? 0 : e + 1;
+    int e = tr->element, j = e + 1 == sim->model->n ? 0 : e + 1;
     double g = tr->gamma;
     out->tension = bd_belt_point_tension(sim, tr);
     out->speed = (1.0 - g) * sim->vx[e] + g * sim->vx[j];
@@ -313,20 +317,20 @@ static void point_update(const bd_sim *sim, bd_tracker *tr)
 
 static double element_s(const bd_sim *sim, int e)
 {
-    double s = sim->s_node0[e] + 0.5 * bd_axial_of(sim)->s_len[e];
-    return s < sim->path.length ? s : s - sim->path.length;
+    double s = sim->model->s_node0[e] + 0.5 * bd_axial_model_of(sim)->s_len[e];
+    return s < sim->model->path.length ? s : s - sim->model->path.length;
 }
 
 static double element_speed(const bd_sim *sim, int e)
 {
-    int j = e + 1 == sim->n ? 0 : e + 1;
+    int j = e + 1 == sim->model->n ? 0 : e + 1;
     return 0.5 * (sim->vx[e] + sim->vx[j]);
 }
 
 /* the elements differ in l0; the tension says the strain */
 static double element_strain(const bd_sim *sim, int e)
 {
-    return sim->tension[e] / sim->EA;
+    return sim->tension[e] / sim->model->EA;
 }
 
 static double node_speed(const bd_sim *sim, int i)

@@ -25,7 +25,7 @@ static double default_element_length(const bd_model_def *def)
 
 static void setup_pulleys(bd_sim *sim, const bd_layout *lay)
 {
-    const bd_model_def *def = sim->def;
+    const bd_model_def *def = sim->model->def;
     bd_lumped *L = bd_lumped_of(sim);
     L->wraps = bd_xcalloc((size_t)def->pulley_count, sizeof *L->wraps);
     for (int i = 0; i < def->pulley_count; i++) {
@@ -33,13 +33,16 @@ static void setup_pulleys(bd_sim *sim, const bd_layout *lay)
         bd_pulley_body *p = &sim->pulleys[i];
         bd_wrap_contact *W = &L->wraps[i];
         if (i == lay->takeup) {
-            p->cx += lay->takeup_shift * p->axis[0];
-            p->cy += lay->takeup_shift * p->axis[1];
+            /* the takeup pulley as laid: where the belt's loop closes */
+            bd_pulley_model *pm = &sim->own->pulleys[i];
+            p->cx += lay->takeup_shift * pm->axis[0];
+            p->cy += lay->takeup_shift * pm->axis[1];
+            pm->x0 = p->cx;
+            pm->y0 = p->cy;
         }
         /* contact: stiff and linearly implicit (pulley_contact.c) */
-        W->k_contact = 100.0 * L->k_axial;
-        double wrap = bd_path_wrap_angle(&sim->path, i);
-        W->win_max = (int)ceil((wrap + 0.5) * pd->radius / sim->l0) + 16;
+        double wrap = bd_path_wrap_angle(&sim->model->path, i);
+        W->win_max = (int)ceil((wrap + 0.5) * pd->radius / sim->model->l0) + 16;
         W->c_node = bd_xcalloc((size_t)W->win_max, sizeof *W->c_node);
         W->c_normal = bd_xcalloc((size_t)W->win_max, sizeof *W->c_normal);
         W->c_tx = bd_xcalloc((size_t)W->win_max, sizeof *W->c_tx);
@@ -47,11 +50,11 @@ static void setup_pulleys(bd_sim *sim, const bd_layout *lay)
         W->c_f = bd_xcalloc((size_t)W->win_max, sizeof *W->c_f);
         W->c_slip = bd_xcalloc((size_t)W->win_max, sizeof *W->c_slip);
         /* window: nodes lying on its arc */
-        const bd_path_segment *arc = bd_path_arc(&sim->path, i);
+        const bd_path_segment *arc = bd_path_arc(&sim->model->path, i);
         int first = -1, count = 0;
-        for (int k = 0; k < sim->n; k++) {
-            double rel = sim->s_node0[k] - arc->s0;
-            if (rel >= -1e-9 * sim->path.length && rel <= arc->length + 1e-9) {
+        for (int k = 0; k < sim->model->n; k++) {
+            double rel = sim->model->s_node0[k] - arc->s0;
+            if (rel >= -1e-9 * sim->model->path.length && rel <= arc->length + 1e-9) {
                 if (first < 0)
                     first = k;
                 count++;
@@ -64,43 +67,47 @@ static void setup_pulleys(bd_sim *sim, const bd_layout *lay)
 
 static void setup_idlers(bd_sim *sim)
 {
-    const bd_model_def *def = sim->def;
+    const bd_model_def *def = sim->model->def;
     int total = 0;
-    sim->idlers_per_set = bd_xcalloc((size_t)def->idler_set_count, sizeof *sim->idlers_per_set);
-    sim->idler_spacing = bd_xcalloc((size_t)def->idler_set_count, sizeof *sim->idler_spacing);
+    sim->own->idlers_per_set = bd_xcalloc((size_t)def->idler_set_count, sizeof *sim->own->idlers_per_set);
+    sim->own->idler_spacing = bd_xcalloc((size_t)def->idler_set_count, sizeof *sim->own->idler_spacing);
     for (int k = 0; k < def->idler_set_count; k++)
-        total += bd_idler_set_layout(sim, k, &sim->idler_spacing[k]);
-    sim->idler_count = total;
+        total += bd_idler_set_layout(sim, k, &sim->own->idler_spacing[k]);
+    sim->own->idler_count = total;
+    sim->own->idlers = bd_xcalloc((size_t)total, sizeof *sim->own->idlers);
     sim->idlers = bd_xcalloc((size_t)total, sizeof *sim->idlers);
     int at = 0;
     for (int k = 0; k < def->idler_set_count; k++) {
         const bd_idler_set_def *set = &def->idler_sets[k];
-        const bd_path_segment *sp = bd_path_span(&sim->path, set->span);
+        const bd_path_segment *sp = bd_path_span(&sim->model->path, set->span);
         /* the lower side of the belt: the normal pointing down */
         double nx = sp->dir[1], ny = -sp->dir[0];
         if (ny > 0.0) {
             nx = -nx;
             ny = -ny;
         }
-        for (int j = 0; j < sim->idlers_per_set[k]; j++) {
+        for (int j = 0; j < sim->model->idlers_per_set[k]; j++) {
+            bd_idler_model *im = &sim->own->idlers[at];
             bd_idler *id = &sim->idlers[at++];
-            double s = sp->s0 + (j + 1) * sim->idler_spacing[k];
+            id->m = im;
+            double s = sp->s0 + (j + 1) * sim->model->idler_spacing[k];
             bd_tracker_init(sim, &id->tr, s);
             /* touch the belt as laid (not the ideal path): no initial kick */
-            int e = id->tr.element, e1 = e + 1 == sim->n ? 0 : e + 1;
+            int e = id->tr.element, e1 = e + 1 == sim->model->n ? 0 : e + 1;
             double g = id->tr.gamma;
             id->tr.p[0] = sim->x[e] + g * (sim->x[e1] - sim->x[e]);
             id->tr.p[1] = sim->y[e] + g * (sim->y[e1] - sim->y[e]);
-            id->radius = set->radius;
-            id->centre[0] = id->tr.p[0] + nx * set->radius;
-            id->centre[1] = id->tr.p[1] + ny * set->radius;
-            id->inertia = set->inertia > 0.0 ? set->inertia : 1e-6;
-            id->mu_s = set->friction.mu_static;
-            id->mu_d = set->friction.mu_dynamic;
-            id->rolling = set->rolling_resistance;
+            im->s = s;
+            im->radius = set->radius;
+            im->centre[0] = id->tr.p[0] + nx * set->radius;
+            im->centre[1] = id->tr.p[1] + ny * set->radius;
+            im->inertia = set->inertia > 0.0 ? set->inertia : 1e-6;
+            im->mu_s = set->friction.mu_static;
+            im->mu_d = set->friction.mu_dynamic;
+            im->rolling = set->rolling_resistance;
             /* stiff, linearly implicit contact (idler_contact.c) */
-            id->k_contact = 100.0 * bd_lumped_of(sim)->k_axial;
-            id->set = k;
+            im->k_contact = bd_lumped_model_of(sim)->k_contact;
+            im->set = k;
         }
     }
 }
@@ -119,21 +126,21 @@ static void setup_idlers(bd_sim *sim)
 static void onto_shell(bd_sim *sim, const bd_pulley_body *pb, int ref, int k, double sense)
 {
     double c = hypot(sim->x[k] - sim->x[ref], sim->y[k] - sim->y[ref]);
-    if (c >= 2.0 * pb->radius)
+    if (c >= 2.0 * pb->m->radius)
         return;
     double a = atan2(sim->y[ref] - pb->cy, sim->x[ref] - pb->cx)
-             + sense * 2.0 * asin(c / (2.0 * pb->radius));
-    sim->x[k] = pb->cx + pb->radius * cos(a);
-    sim->y[k] = pb->cy + pb->radius * sin(a);
+             + sense * 2.0 * asin(c / (2.0 * pb->m->radius));
+    sim->x[k] = pb->cx + pb->m->radius * cos(a);
+    sim->y[k] = pb->cy + pb->m->radius * sin(a);
 }
 
 static void straighten_spans(bd_sim *sim)
 {
-    const int n = sim->n;
+    const int n = sim->model->n;
     for (int i = 0; i < n; i++) {
         int prev = i == 0 ? n - 1 : i - 1;
-        const bd_path_segment *g = &sim->path.segments[bd_lumped_of(sim)->seg_hint[i]];
-        const bd_path_segment *gp = &sim->path.segments[bd_lumped_of(sim)->seg_hint[prev]];
+        const bd_path_segment *g = &sim->model->path.segments[bd_lumped_of(sim)->seg_hint[i]];
+        const bd_path_segment *gp = &sim->model->path.segments[bd_lumped_of(sim)->seg_hint[prev]];
         if (g->kind != BD_SEGMENT_SPAN || gp->kind != BD_SEGMENT_ARC)
             continue;
         /* i is the first node of a span after a wrap; find its last node */
@@ -142,29 +149,29 @@ static void straighten_spans(bd_sim *sim)
             last = (last + 1) % n;
             count++;
         }
-        const bd_path_segment *gn = &sim->path.segments[bd_lumped_of(sim)->seg_hint[(last + 1) % n]];
+        const bd_path_segment *gn = &sim->model->path.segments[bd_lumped_of(sim)->seg_hint[(last + 1) % n]];
         if (gn->kind != BD_SEGMENT_ARC || count < 1)
             continue;
         /* the departure node: the span's first node if it is within half an
          * element of the tangent point (then on the shell), else the last
          * node of the wrap; likewise the arrival node */
         int a = prev, b = (last + 1) % n;
-        if (sim->s_node0[i] - g->s0 < 0.5 * sim->l0) {
-            onto_shell(sim, &sim->pulleys[gp->pulley], prev, i, sim->pulleys[gp->pulley].wrap);
+        if (sim->model->s_node0[i] - g->s0 < 0.5 * sim->model->l0) {
+            onto_shell(sim, &sim->pulleys[gp->pulley], prev, i, sim->pulleys[gp->pulley].m->wrap);
             a = i;
         }
-        if (g->s0 + g->length - sim->s_node0[last] < 0.5 * sim->l0 && last != a) {
+        if (g->s0 + g->length - sim->model->s_node0[last] < 0.5 * sim->model->l0 && last != a) {
             onto_shell(sim, &sim->pulleys[gn->pulley], (last + 1) % n, last,
-                       -sim->pulleys[gn->pulley].wrap);
+                       -sim->pulleys[gn->pulley].m->wrap);
             b = last;
         }
         double ax = sim->x[a], ay = sim->y[a], bx = sim->x[b], by = sim->y[b];
-        double sa = sim->s_node0[a], sb = sim->s_node0[b];
+        double sa = sim->model->s_node0[a], sb = sim->model->s_node0[b];
         if (sb < sa)
-            sb += sim->path.length;
+            sb += sim->model->path.length;
         for (int j = (a + 1) % n; j != b; j = (j + 1) % n) {
-            double sj = sim->s_node0[j] < sa ? sim->s_node0[j] + sim->path.length
-                                             : sim->s_node0[j];
+            double sj = sim->model->s_node0[j] < sa ? sim->model->s_node0[j] + sim->model->path.length
+                                             : sim->model->s_node0[j];
             double f = (sj - sa) / (sb - sa);
             sim->x[j] = ax + f * (bx - ax);
             sim->y[j] = ay + f * (by - ay);
@@ -178,15 +185,15 @@ static void straighten_spans(bd_sim *sim)
  * the contact carry exactly that, so the initial state is in equilibrium */
 static void place_nodes(bd_sim *sim, const bd_layout *lay)
 {
-    const int n = sim->n;
+    const int n = sim->model->n;
     for (int i = 0; i < n; i++) {
         double p[2], t[2];
-        bd_path_point(&sim->path, lay->s[i], p, t);
+        bd_path_point(&sim->model->path, lay->s[i], p, t);
         sim->x[i] = p[0];
         sim->y[i] = p[1];
-        sim->s_node0[i] = lay->s[i];
-        bd_lumped_of(sim)->seg_hint[i] = bd_path_segment_at(&sim->path, lay->s[i]);
-        sim->mass[i] = sim->belt_mpl * sim->l0;
+        sim->own->s_node0[i] = lay->s[i];
+        bd_lumped_of(sim)->seg_hint[i] = bd_path_segment_at(&sim->model->path, lay->s[i]);
+        sim->mass[i] = sim->model->belt_mpl * sim->model->l0;
     }
     straighten_spans(sim);
     for (int i = 0; i < n; i++) {
@@ -196,15 +203,15 @@ static void place_nodes(bd_sim *sim, const bd_layout *lay)
         double lb = hypot(ubx, uby), la = hypot(uax, uay);
         double kx = lay->tension[i] * uax / la - lay->tension[b] * ubx / lb;
         double ky = lay->tension[i] * uay / la - lay->tension[b] * uby / lb;
-        for (int k = 0; k < sim->pulley_count; k++) {
+        for (int k = 0; k < sim->model->pulley_count; k++) {
             const bd_pulley_body *pb = &sim->pulleys[k];
             double rx = sim->x[i] - pb->cx, ry = sim->y[i] - pb->cy;
             double r = hypot(rx, ry);
-            if (r > pb->radius * (1.0 + 1e-9))
+            if (r > pb->m->radius * (1.0 + 1e-9))
                 continue;
             double inward = -(kx * rx + ky * ry) / r;   /* pull towards the centre */
-            double depth = inward > 0.0 ? inward / bd_lumped_of(sim)->wraps[k].k_contact : 0.0;
-            double target = pb->radius - depth;
+            double depth = inward > 0.0 ? inward / bd_lumped_model_of(sim)->k_contact : 0.0;
+            double target = pb->m->radius - depth;
             sim->x[i] = pb->cx + rx * target / r;
             sim->y[i] = pb->cy + ry * target / r;
         }
@@ -214,14 +221,14 @@ static void place_nodes(bd_sim *sim, const bd_layout *lay)
 /* initial material: nodes from the feed point to the discharge pulley */
 static void load_material(bd_sim *sim)
 {
-    const bd_material_def *mat = &sim->def->material;
+    const bd_material_def *mat = &sim->model->def->material;
     if (!mat->present || !mat->initially_loaded)
         return;
     double s_feed, len;
-    bd_path_loaded_region(&sim->path, mat, &s_feed, &len);
-    for (int i = 0; i < sim->n; i++) {
-        if (bd_path_in_region(&sim->path, sim->s_node0[i], s_feed, len)) {
-            sim->material[i] = mat->mass_per_length * sim->l0;
+    bd_path_loaded_region(&sim->model->path, mat, &s_feed, &len);
+    for (int i = 0; i < sim->model->n; i++) {
+        if (bd_path_in_region(&sim->model->path, sim->model->s_node0[i], s_feed, len)) {
+            sim->material[i] = mat->mass_per_length * sim->model->l0;
             sim->mass[i] += sim->material[i];
         }
     }
@@ -229,7 +236,7 @@ static void load_material(bd_sim *sim)
 
 int bd_lumped_build(bd_sim *sim, bd_diag *diag)
 {
-    const bd_model_def *def = sim->def;
+    const bd_model_def *def = sim->model->def;
     bd_path given;
     if (bd_path_build(def, &given, diag))
         return 1;
@@ -246,19 +253,23 @@ int bd_lumped_build(bd_sim *sim, bd_diag *diag)
         return 1;
     }
     bd_path_free(&given);
-    sim->path = lay.path;
+    sim->own->path = lay.path;
     lay.path.segments = NULL;
-    sim->n = lay.n;
-    sim->l0 = lay.l0;
-    L->k_axial = sim->EA / sim->l0;
-    double m_el = sim->belt_mpl * sim->l0;
+    sim->own->n = lay.n;
+    sim->own->l0 = lay.l0;
+    bd_lumped_model *LM = bd_xcalloc(1, sizeof *LM);
+    sim->own->belt_model = LM;
+    LM->k_axial = sim->model->EA / sim->model->l0;
+    double m_el = sim->model->belt_mpl * sim->model->l0;
     /* seed 001 eq 4.3: c = 2·m·ζ·√(k/m) with m the element mass */
-    L->c_axial = 2.0 * def->belt.damping_ratio * sqrt(L->k_axial * m_el);
+    LM->c_axial = 2.0 * def->belt.damping_ratio * sqrt(LM->k_axial * m_el);
     /* seed 001 eq 4.11: k_θ = EI/l */
-    L->k_bend = sim->EI / sim->l0;
+    LM->k_bend = sim->model->EI / sim->model->l0;
+    /* contacts: stiff and linearly implicit (pulley_contact.c, idler_contact.c) */
+    LM->k_contact = 100.0 * LM->k_axial;
 
     bd_alloc_node_arrays(sim);
-    size_t n = (size_t)sim->n;
+    size_t n = (size_t)sim->model->n;
     L->ux = bd_xcalloc(n, sizeof *L->ux);
     L->uy = bd_xcalloc(n, sizeof *L->uy);
     L->len = bd_xcalloc(n, sizeof *L->len);
@@ -266,12 +277,12 @@ int bd_lumped_build(bd_sim *sim, bd_diag *diag)
     L->pw = bd_xcalloc(n, sizeof *L->pw);
     L->ek = bd_xcalloc(n, sizeof *L->ek);
     L->seg_hint = bd_xcalloc(n, sizeof *L->seg_hint);
-    sim->s_node0 = bd_xcalloc(n, sizeof *sim->s_node0);
-    for (int i = 0; i < sim->n; i++)
-        sim->s_node0[i] = lay.s[i];
+    sim->own->s_node0 = bd_xcalloc(n, sizeof *sim->own->s_node0);
+    for (int i = 0; i < sim->model->n; i++)
+        sim->own->s_node0[i] = lay.s[i];
     setup_pulleys(sim, &lay);
     place_nodes(sim, &lay);
-    for (int i = 0; i < sim->n; i++)
+    for (int i = 0; i < sim->model->n; i++)
         sim->tension[i] = lay.tension[i];
     bd_layout_free(&lay);
     load_material(sim);
@@ -292,7 +303,7 @@ void bd_lumped_free(bd_sim *sim)
     free(L->pw);
     free(L->ek);
     free(L->seg_hint);
-    for (int i = 0; L->wraps && i < sim->pulley_count; i++) {
+    for (int i = 0; L->wraps && i < sim->model->pulley_count; i++) {
         bd_wrap_contact *W = &L->wraps[i];
         free(W->c_node);
         free(W->c_normal);
@@ -304,6 +315,10 @@ void bd_lumped_free(bd_sim *sim)
     free(L->wraps);
     free(L);
     sim->belt_data = NULL;
+    if (sim->own) {
+        free(sim->own->belt_model);
+        sim->own->belt_model = NULL;
+    }
 }
 
 /* Stable time step. For central differences a mode of circular frequency ω
@@ -318,10 +333,10 @@ void bd_lumped_free(bd_sim *sim)
  * (eq 4.3, per element) damps that mode with ζ = 2ζ_e. */
 double bd_lumped_stable_step(const bd_sim *sim, bd_time_step_limit *limit)
 {
-    const bd_lumped *L = bd_lumped_of(sim);
-    double m = sim->belt_mpl * sim->l0;   /* lightest node: no material */
+    const bd_lumped_model *L = bd_lumped_model_of(sim);
+    double m = sim->model->belt_mpl * sim->model->l0;   /* lightest node: no material */
     double w_axial = 4.0 * L->k_axial;
-    double w_bend = 16.0 * L->k_bend / (sim->l0 * sim->l0);
+    double w_bend = 16.0 * L->k_bend / (sim->model->l0 * sim->model->l0);
     double omega = sqrt((w_axial + w_bend) / m);
     double zeta = 4.0 * L->c_axial / (2.0 * m * omega);
     /* what limits it: the largest contribution to ω² */
@@ -332,9 +347,9 @@ double bd_lumped_stable_step(const bd_sim *sim, bd_time_step_limit *limit)
 /* the idlers' inertia reflected to a pulley of radius R */
 double bd_lumped_support_inertia(const bd_sim *sim, double R, double J)
 {
-    for (int k = 0; k < sim->idler_count; k++) {
-        double r = sim->idlers[k].radius;
-        J += sim->idlers[k].inertia * (R / r) * (R / r);
+    for (int k = 0; k < sim->model->idler_count; k++) {
+        double r = sim->idlers[k].m->radius;
+        J += sim->idlers[k].m->inertia * (R / r) * (R / r);
     }
     return J;
 }

@@ -43,8 +43,9 @@ static void elements(int count, const double *restrict x, const double *restrict
 static void element_pass(bd_sim *sim)
 {
     bd_lumped *L = bd_lumped_of(sim);
-    const int n = sim->n, z = n - 1;
-    const double k = L->k_axial, c = L->c_axial, l0 = sim->l0;
+    const int n = sim->model->n, z = n - 1;
+    const bd_lumped_model *LM = bd_lumped_model_of(sim);
+    const double k = LM->k_axial, c = LM->c_axial, l0 = sim->model->l0;
     const double *x = sim->x, *y = sim->y, *vx = sim->vx, *vy = sim->vy;
     elements(z, x, y, vx, vy, k, c, l0, L->ux, L->uy, L->len, L->td, sim->tension);
     double cx[2] = {x[z], x[0]}, cy[2] = {y[z], y[0]};
@@ -79,15 +80,15 @@ static void nodes(int n, double g, const double *restrict ux, const double *rest
 static void node_pass(bd_sim *sim)
 {
     const bd_lumped *L = bd_lumped_of(sim);
-    nodes(sim->n, sim->gravity, L->ux, L->uy, sim->tension, L->td, sim->mass, sim->fx, sim->fy,
+    nodes(sim->model->n, sim->model->gravity, L->ux, L->uy, sim->tension, L->td, sim->mass, sim->fx, sim->fy,
           sim->fnx, sim->fny);
 }
 
 static void bending_forces(bd_sim *sim)
 {
     const bd_lumped *L = bd_lumped_of(sim);
-    const int n = sim->n;
-    const double kb = L->k_bend;
+    const int n = sim->model->n;
+    const double kb = bd_lumped_model_of(sim)->k_bend;
     const double *ux = L->ux, *uy = L->uy, *len = L->len;
     double *fx = sim->fx, *fy = sim->fy;
     for (int i = 0; i < n; i++) {
@@ -113,7 +114,7 @@ void bd_lumped_forces(bd_sim *sim)
     element_pass(sim);
     node_pass(sim);
     bd_tension_extremes(sim);
-    if (bd_lumped_of(sim)->k_bend > 0.0)
+    if (bd_lumped_model_of(sim)->k_bend > 0.0)
         bending_forces(sim);
 }
 
@@ -145,8 +146,8 @@ static void advance(int n, double dt, const double *restrict mass, const double 
 void bd_lumped_integrate(bd_sim *sim, double *ke_out, double *w_nc_out)
 {
     bd_lumped *L = bd_lumped_of(sim);
-    const int n = sim->n;
-    advance(n, sim->dt, sim->mass, sim->fx, sim->fy, sim->fnx, sim->fny, sim->x, sim->y, sim->vx,
+    const int n = sim->model->n;
+    advance(n, sim->model->dt, sim->mass, sim->fx, sim->fy, sim->fnx, sim->fny, sim->x, sim->y, sim->vx,
             sim->vy, L->pw, L->ek);
     double w_nc = 0.0, ke = 0.0;
     const double *restrict pw = L->pw, *restrict ek = L->ek;
@@ -154,19 +155,19 @@ void bd_lumped_integrate(bd_sim *sim, double *ke_out, double *w_nc_out)
         w_nc += pw[i];
         ke += ek[i];
     }
-    *w_nc_out = w_nc * sim->dt;
+    *w_nc_out = w_nc * sim->model->dt;
     *ke_out = ke * 0.5;
 }
 
 double bd_lumped_elastic_energy(const bd_sim *sim)
 {
-    const bd_lumped *L = bd_lumped_of(sim);
-    const int n = sim->n;
+    const bd_lumped_model *L = bd_lumped_model_of(sim);
+    const int n = sim->model->n;
     double e = 0.0;
     for (int i = 0; i < n; i++) {
         int j = i + 1 == n ? 0 : i + 1;
         double l = hypot(sim->x[j] - sim->x[i], sim->y[j] - sim->y[i]);
-        e += 0.5 * L->k_axial * (l - sim->l0) * (l - sim->l0);
+        e += 0.5 * L->k_axial * (l - sim->model->l0) * (l - sim->model->l0);
         if (L->k_bend > 0.0) {
             int b = i == 0 ? n - 1 : i - 1;
             double bx = sim->x[i] - sim->x[b], by = sim->y[i] - sim->y[b];
@@ -181,9 +182,9 @@ double bd_lumped_elastic_energy(const bd_sim *sim)
 /* gravity of belt and material (y = 0 the datum) and the elastic energy */
 double bd_lumped_potential(const bd_sim *sim)
 {
-    double g = sim->gravity;
+    double g = sim->model->gravity;
     double e = 0.0;
-    for (int i = 0; i < sim->n; i++)
+    for (int i = 0; i < sim->model->n; i++)
         e += sim->mass[i] * g * sim->y[i];
     return e + bd_lumped_elastic_energy(sim);
 }

@@ -46,13 +46,13 @@ static void idler_contact(bd_sim *sim, bd_idler *id)
     bd_tracker_update(sim, &id->tr);
     id->alpha = 0.0;
     id->torque = 0.0;
-    int e = id->tr.element, j = e + 1 == sim->n ? 0 : e + 1;
+    int e = id->tr.element, j = e + 1 == sim->model->n ? 0 : e + 1;
     double g = id->tr.gamma, h = 1.0 - g;
     double px = sim->x[e] + g * (sim->x[j] - sim->x[e]);
     double py = sim->y[e] + g * (sim->y[j] - sim->y[e]);
-    double rx = px - id->centre[0], ry = py - id->centre[1];
+    double rx = px - id->m->centre[0], ry = py - id->m->centre[1];
     double d2 = rx * rx + ry * ry;
-    double Rc = id->radius + IDLER_CONTACT_GAP * sim->l0;
+    double Rc = id->m->radius + IDLER_CONTACT_GAP * sim->model->l0;
     if (d2 >= Rc * Rc)
         return;
     double d = sqrt(d2);
@@ -63,9 +63,9 @@ static void idler_contact(bd_sim *sim, bd_idler *id)
     double m_eff = 1.0 / (h * h / me + g * g / mj);
     double aon = nx * (h * sim->fx[e] / me + g * sim->fx[j] / mj)
                + ny * (h * sim->fy[e] / me + g * sim->fy[j] / mj);
-    double dt = sim->dt;
-    double fn = id->k_contact * (id->radius - d - dt * (nx * vcx + ny * vcy) - dt * dt * aon)
-              / (1.0 + id->k_contact * dt * dt / m_eff);
+    double dt = sim->model->dt;
+    double fn = id->m->k_contact * (id->m->radius - d - dt * (nx * vcx + ny * vcy) - dt * dt * aon)
+              / (1.0 + id->m->k_contact * dt * dt / m_eff);
     if (fn <= 0.0)
         return;
     /* tangent along the travel direction */
@@ -80,7 +80,7 @@ static void idler_contact(bd_sim *sim, bd_idler *id)
         sat = 1.0;
     if (sat < -1.0)
         sat = -1.0;
-    double frr = id->rolling * fn * sat;
+    double frr = id->m->rolling * fn * sat;
     /* normal + rolling resistance on the two nodes, all non-conservative */
     double Fx = fn * nx - frr * tx, Fy = fn * ny - frr * ty;
     sim->fx[e] += h * Fx;
@@ -93,14 +93,14 @@ static void idler_contact(bd_sim *sim, bd_idler *id)
     sim->fny[j] += g * Fy;
     if (sim->friction_off)
         return;
-    double R = id->radius;
+    double R = id->m->radius;
     double vr = vt - id->omega * R;
-    double num = vr / sim->dt + h * (tx * sim->fx[e] + ty * sim->fy[e]) / me
+    double num = vr / sim->model->dt + h * (tx * sim->fx[e] + ty * sim->fy[e]) / me
                + g * (tx * sim->fx[j] + ty * sim->fy[j]) / mj;
-    double den = h * h / me + g * g / mj + R * R / id->inertia;
+    double den = h * h / me + g * g / mj + R * R / id->m->inertia;
     double f = num / den;
-    if (fabs(f) > id->mu_s * fn)
-        f = copysign(id->mu_d * fn, f);
+    if (fabs(f) > id->m->mu_s * fn)
+        f = copysign(id->m->mu_d * fn, f);
     sim->fx[e] -= h * f * tx;
     sim->fy[e] -= h * f * ty;
     sim->fx[j] -= g * f * tx;
@@ -110,12 +110,12 @@ static void idler_contact(bd_sim *sim, bd_idler *id)
     sim->fnx[j] -= g * f * tx;
     sim->fny[j] -= g * f * ty;
     id->torque = f * R;
-    id->alpha = id->torque / id->inertia;
+    id->alpha = id->torque / id->m->inertia;
 }
 
 /* the supports phase: every idler, after the wraps */
 void bd_lumped_idlers(bd_sim *sim)
 {
-    for (int i = 0; i < sim->idler_count; i++)
+    for (int i = 0; i < sim->model->idler_count; i++)
         idler_contact(sim, &sim->idlers[i]);
 }

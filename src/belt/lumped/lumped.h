@@ -7,9 +7,16 @@
 
 #include "belt/belt.h"
 
+/* the lumped belt's compiled data (in the model, behind model->belt_model) */
+typedef struct bd_lumped_model {
+    double k_axial;        /* N/m = EA/l0 */
+    double c_axial;        /* N·s/m dashpot of one element */
+    double k_bend;         /* N·m/rad = EI/l0 */
+    double k_contact;      /* N/m penalty stiffness of a node on a shell or idler */
+} bd_lumped_model;
+
 /* the contact of the belt with one pulley's shell (pulley_contact.c) */
 typedef struct bd_wrap_contact {
-    double k_contact;       /* build: N/m penalty stiffness of a node on it */
     /* step: nodes first .. first+count-1 (mod n) were in contact */
     int win_first, win_count;
     int win_max;            /* build: capacity of the scratch arrays below */
@@ -22,11 +29,8 @@ typedef struct bd_wrap_contact {
     int contact_count;
 } bd_wrap_contact;
 
+/* the lumped belt's state (behind sim->belt_data) */
 typedef struct bd_lumped {
-    /* build */
-    double k_axial;        /* N/m = EA/l0 */
-    double c_axial;        /* N·s/m dashpot of one element */
-    double k_bend;         /* N·m/rad = EI/l0 */
     bd_wrap_contact *wraps;    /* [pulley_count] */
     /* step (forces phase): element geometry */
     double *ux, *uy;       /* [n] unit vector of element e */
@@ -42,6 +46,11 @@ typedef struct bd_lumped {
 static inline bd_lumped *bd_lumped_of(const bd_sim *sim)
 {
     return (bd_lumped *)sim->belt_data;
+}
+
+static inline const bd_lumped_model *bd_lumped_model_of(const bd_sim *sim)
+{
+    return (const bd_lumped_model *)sim->model->belt_model;
 }
 
 /* build.c */

@@ -9,11 +9,11 @@ static void material_transport(bd_sim *sim)
     bd_tracker *fd = &sim->feed;
     bd_tracker_update(sim, fd);
     if (sim->has_feed) {
-        int e = fd->element, j = e + 1 == sim->n ? 0 : e + 1;
+        int e = fd->element, j = e + 1 == sim->model->n ? 0 : e + 1;
         double g = fd->gamma;
         double v = bd_tracker_speed(sim, fd);
         if (v > 0.0) {
-            double dm = sim->material_mpl * v * sim->dt;
+            double dm = sim->model->material_mpl * v * sim->model->dt;
             int nodes[2] = {e, j};
             double share[2] = {1.0 - g, g};
             for (int k = 0; k < 2; k++) {
@@ -28,7 +28,7 @@ static void material_transport(bd_sim *sim)
                 double ke2 = 0.5 * sim->mass[i]
                            * (sim->vx[i] * sim->vx[i] + sim->vy[i] * sim->vy[i]);
                 sim->energy.dissipated += ke - ke2;
-                sim->energy.input += add * sim->gravity * sim->y[i];
+                sim->energy.input += add * sim->model->gravity * sim->y[i];
             }
         }
     }
@@ -37,14 +37,14 @@ static void material_transport(bd_sim *sim)
 static void material_discharge(bd_sim *sim)
 {
     /* nodes that entered the discharge pulley's wrap lose their load */
-    const bd_wrap_contact *W = &bd_lumped_of(sim)->wraps[sim->discharge_pulley];
+    const bd_wrap_contact *W = &bd_lumped_of(sim)->wraps[sim->model->discharge_pulley];
     for (int c = 0; c < W->contact_count; c++) {
         int i = W->c_node[c];
         double dm = sim->material[i];
         if (dm <= 0.0)
             continue;
         double v2 = sim->vx[i] * sim->vx[i] + sim->vy[i] * sim->vy[i];
-        sim->energy.dissipated += 0.5 * dm * v2 + dm * sim->gravity * sim->y[i];
+        sim->energy.dissipated += 0.5 * dm * v2 + dm * sim->model->gravity * sim->y[i];
         sim->mass[i] -= dm;
         sim->material[i] = 0.0;
     }

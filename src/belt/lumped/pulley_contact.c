@@ -45,16 +45,16 @@ static bd_wrap_contact *wrap_of(const bd_sim *sim, const bd_pulley_body *p)
 static void normal_forces(bd_sim *sim, bd_pulley_body *p)
 {
     bd_wrap_contact *W = wrap_of(sim, p);
-    const double l0 = sim->l0;
-    const int n = sim->n;
-    double R = p->radius;
+    const double l0 = sim->model->l0, k_c = bd_lumped_model_of(sim)->k_contact;
+    const int n = sim->model->n;
+    double R = p->m->radius;
     /* predictive contact: a node within this gap of the shell may reach it
      * during the step; the implicit force says whether it does */
     double Rc = R + CONTACT_GAP * l0;
     /* the shell's velocity at the end of the step, with the carriage's
      * acceleration of the last step (a moving takeup pulley) */
-    double vp_end = p->qdot + sim->dt * p->qddot;
-    double vpx = vp_end * p->axis[0], vpy = vp_end * p->axis[1];
+    double vp_end = p->qdot + sim->model->dt * p->qddot;
+    double vpx = vp_end * p->m->axis[0], vpy = vp_end * p->m->axis[1];
     int found = 0, first_found = 0, last_found = 0;
     W->contact_count = 0;
     p->f_axis = 0.0;
@@ -75,23 +75,23 @@ static void normal_forces(bd_sim *sim, bd_pulley_body *p)
         double m = sim->mass[k];
         double Fo = nx * sim->fx[k] + ny * sim->fy[k];
         double delta = R - a;
-        double dt = sim->dt;
-        double fn = W->k_contact * (delta - dt * vn - dt * dt * Fo / m)
-                  / (1.0 + W->k_contact * dt * dt / m);
+        double dt = sim->model->dt;
+        double fn = k_c * (delta - dt * vn - dt * dt * Fo / m)
+                  / (1.0 + k_c * dt * dt / m);
         if (fn <= 0.0)
             continue;
-        double fd = fn - (delta > 0.0 ? W->k_contact * delta : 0.0);
+        double fd = fn - (delta > 0.0 ? k_c * delta : 0.0);
         sim->fx[k] += fn * nx;
         sim->fy[k] += fn * ny;
         sim->fnx[k] += fd * nx;
         sim->fny[k] += fd * ny;
-        p->f_axis -= fn * (nx * p->axis[0] + ny * p->axis[1]);
-        p->fnc_axis -= fd * (nx * p->axis[0] + ny * p->axis[1]);
+        p->f_axis -= fn * (nx * p->m->axis[0] + ny * p->m->axis[1]);
+        p->fnc_axis -= fd * (nx * p->m->axis[0] + ny * p->m->axis[1]);
         int c = W->contact_count++;
         W->c_node[c] = k;
         W->c_normal[c] = fn;
-        W->c_tx[c] = -p->wrap * ny;
-        W->c_ty[c] = p->wrap * nx;
+        W->c_tx[c] = -p->m->wrap * ny;
+        W->c_ty[c] = p->m->wrap * nx;
         if (!found)
             first_found = start + w;
         found = 1;
@@ -106,8 +106,8 @@ static void normal_forces(bd_sim *sim, bd_pulley_body *p)
 static void friction_forces(bd_sim *sim, bd_pulley_body *p, double T_p)
 {
     bd_wrap_contact *W = wrap_of(sim, p);
-    const double dt = sim->dt, R = p->radius;
-    const double vpx = p->qdot * p->axis[0], vpy = p->qdot * p->axis[1];
+    const double dt = sim->model->dt, R = p->m->radius;
+    const double vpx = p->qdot * p->m->axis[0], vpy = p->qdot * p->m->axis[1];
     const int nc = W->contact_count;
     double alpha = 0.0;
     for (int c = 0; c < nc; c++)
@@ -126,7 +126,7 @@ static void friction_forces(bd_sim *sim, bd_pulley_body *p, double T_p)
             A += sim->mass[k] * vr / dt + W->c_tx[c] * sim->fx[k] + W->c_ty[c] * sim->fy[k];
             M += sim->mass[k];
         }
-        alpha = (R * A + R * Fk + T_p) / (p->inertia + R * R * M);
+        alpha = (R * A + R * Fk + T_p) / (p->m->inertia + R * R * M);
         int changed = 0;
         for (int c = 0; c < nc; c++) {
             if (W->c_slip[c])
@@ -137,9 +137,9 @@ static void friction_forces(bd_sim *sim, bd_pulley_body *p, double T_p)
             double f = sim->mass[k] * (vr / dt - R * alpha)
                      + W->c_tx[c] * sim->fx[k] + W->c_ty[c] * sim->fy[k];
             W->c_f[c] = f;
-            if (fabs(f) > p->mu_s * W->c_normal[c]) {
+            if (fabs(f) > p->m->mu_s * W->c_normal[c]) {
                 W->c_slip[c] = 1;
-                W->c_f[c] = copysign(p->mu_d * W->c_normal[c], f);
+                W->c_f[c] = copysign(p->m->mu_d * W->c_normal[c], f);
                 changed = 1;
             }
         }
@@ -155,7 +155,7 @@ static void friction_forces(bd_sim *sim, bd_pulley_body *p, double T_p)
         sim->fy[k] -= f * W->c_ty[c];
         sim->fnx[k] -= f * W->c_tx[c];
         sim->fny[k] -= f * W->c_ty[c];
-        double fa = f * (W->c_tx[c] * p->axis[0] + W->c_ty[c] * p->axis[1]);
+        double fa = f * (W->c_tx[c] * p->m->axis[0] + W->c_ty[c] * p->m->axis[1]);
         p->f_axis += fa;
         p->fnc_axis += fa;
         sum += f;
@@ -171,7 +171,7 @@ void bd_lumped_wrap(bd_sim *sim, bd_pulley_body *p, double external_torque)
     p->torque_external = external_torque;
     p->torque_friction = 0.0;
     if (sim->friction_off || W->contact_count == 0) {
-        p->alpha = external_torque / p->inertia;
+        p->alpha = external_torque / p->m->inertia;
         return;
     }
     friction_forces(sim, p, external_torque);
@@ -182,8 +182,8 @@ void bd_lumped_wrap(bd_sim *sim, bd_pulley_body *p, double external_torque)
 double bd_lumped_wrap_energy(const bd_sim *sim, const bd_pulley_body *p)
 {
     const bd_wrap_contact *W = wrap_of(sim, p);
-    const int n = sim->n;
-    double e = 0.0, R = p->radius;
+    const int n = sim->model->n;
+    double e = 0.0, R = p->m->radius;
     int span = W->win_count + 2 * WINDOW_MARGIN;
     if (span > W->win_max)
         span = W->win_max;
@@ -191,7 +191,7 @@ double bd_lumped_wrap_energy(const bd_sim *sim, const bd_pulley_body *p)
         int k = ((W->win_first - WINDOW_MARGIN + w) % n + n) % n;
         double a = hypot(sim->x[k] - p->cx, sim->y[k] - p->cy);
         if (a < R)
-            e += 0.5 * W->k_contact * (R - a) * (R - a);
+            e += 0.5 * bd_lumped_model_of(sim)->k_contact * (R - a) * (R - a);
     }
     return e;
 }

@@ -8,7 +8,7 @@
 
 static double foot_gamma(const bd_sim *sim, int e, const double p[2])
 {
-    int j = e + 1 == sim->n ? 0 : e + 1;
+    int j = e + 1 == sim->model->n ? 0 : e + 1;
     double ax = sim->x[j] - sim->x[e], ay = sim->y[j] - sim->y[e];
     double aa = ax * ax + ay * ay;
     if (aa <= 0.0)
@@ -24,7 +24,7 @@ void bd_tracker_init(const bd_sim *sim, bd_tracker *tr, double s)
 
 void bd_tracker_update(const bd_sim *sim, bd_tracker *tr)
 {
-    int n = sim->n;
+    int n = sim->model->n;
     int e = tr->element;
     double g = foot_gamma(sim, e, tr->p);
     for (int it = 0; it < 8 && (g > 1.0 || g < 0.0); it++) {
@@ -50,7 +50,7 @@ void bd_tracker_update(const bd_sim *sim, bd_tracker *tr)
  * velocities interpolated */
 double bd_tracker_speed(const bd_sim *sim, const bd_tracker *tr)
 {
-    int e = tr->element, j = e + 1 == sim->n ? 0 : e + 1;
+    int e = tr->element, j = e + 1 == sim->model->n ? 0 : e + 1;
     double g = tr->gamma;
     return (1.0 - g) * (tr->dir[0] * sim->vx[e] + tr->dir[1] * sim->vy[e])
          + g * (tr->dir[0] * sim->vx[j] + tr->dir[1] * sim->vy[j]);
@@ -67,13 +67,13 @@ void bd_lumped_sample(const bd_sim *sim, const bd_tracker *tr, bd_belt_sample *o
 double bd_lumped_element_s(const bd_sim *sim, int e)
 {
     int *seg_hint = bd_lumped_of(sim)->seg_hint;
-    int j = e + 1 == sim->n ? 0 : e + 1;
+    int j = e + 1 == sim->model->n ? 0 : e + 1;
     double mx = 0.5 * (sim->x[e] + sim->x[j]), my = 0.5 * (sim->y[e] + sim->y[j]);
-    int nseg = sim->path.segment_count;
+    int nseg = sim->model->path.segment_count;
     int seg = seg_hint[e];
     double u = 0.0;
     for (int it = 0; it < 6; it++) {
-        const bd_path_segment *g = &sim->path.segments[seg];
+        const bd_path_segment *g = &sim->model->path.segments[seg];
         if (g->kind == BD_SEGMENT_SPAN) {
             u = (mx - g->p0[0]) * g->dir[0] + (my - g->p0[1]) * g->dir[1];
         } else {
@@ -95,7 +95,7 @@ double bd_lumped_element_s(const bd_sim *sim, int e)
             break;
     }
     seg_hint[e] = seg;   /* a cache, not state */
-    const bd_path_segment *g = &sim->path.segments[seg];
+    const bd_path_segment *g = &sim->model->path.segments[seg];
     if (u < 0.0)
         u = 0.0;
     if (u > g->length)
@@ -107,13 +107,13 @@ double bd_lumped_element_s(const bd_sim *sim, int e)
 double bd_lumped_element_speed(const bd_sim *sim, int e)
 {
     const bd_lumped *L = bd_lumped_of(sim);
-    int j = e + 1 == sim->n ? 0 : e + 1;
+    int j = e + 1 == sim->model->n ? 0 : e + 1;
     return 0.5 * (L->ux[e] * (sim->vx[e] + sim->vx[j]) + L->uy[e] * (sim->vy[e] + sim->vy[j]));
 }
 
 double bd_lumped_element_strain(const bd_sim *sim, int e)
 {
-    return (bd_lumped_of(sim)->len[e] - sim->l0) / sim->l0;
+    return (bd_lumped_of(sim)->len[e] - sim->model->l0) / sim->model->l0;
 }
 
 /* along the element that leaves the node */
