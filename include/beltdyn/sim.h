@@ -13,6 +13,9 @@ extern "C" {
 #endif
 
 typedef struct bd_sim bd_sim;
+/* a compiled model: everything derived from a definition that no step
+ * changes, with the state at t = 0; shareable between runs and threads */
+typedef struct bd_model bd_model;
 
 /* exit statuses of bd_sim_run, as the command uses them (cli.md) */
 enum {
@@ -46,6 +49,15 @@ typedef struct bd_run_options {
  * def: def must outlive it. */
 int bd_sim_create(const bd_model_def *def, bd_sim **out, bd_diag *diag);
 void bd_sim_free(bd_sim *sim);
+
+/* the same in two steps: compile the model once (problems in diag, 0 ok),
+ * then start any number of runs on it, each at t = 0 with a state of its
+ * own (0 ok). bd_sim_create_from does not change the model, nor does
+ * stepping or running a simulation made from it; free the simulations
+ * first, the model last. def must outlive the model. */
+int bd_model_compile(const bd_model_def *def, bd_model **out, bd_diag *diag);
+int bd_sim_create_from(const bd_model *model, bd_sim **out);
+void bd_model_free(bd_model *model);
 
 /* what `beltdyn check` prints: loop length, elements, dof, time step and
  * what limits it, idlers per span, masses */

@@ -38,7 +38,12 @@ typedef struct bd_belt_ops {
     /* build the belt on the model's path: nodes, elements, the parts'
      * coupling data, probes and feed point; 0 ok, else problems in diag */
     int (*build)(bd_sim *sim, bd_diag *diag);
+    /* free the state behind sim->belt_data; free the compiled data behind
+     * model->belt_model */
     void (*free)(bd_sim *sim);
+    void (*free_model)(bd_model *model);
+    /* a deep copy of src's state, for a new run on the same model */
+    void *(*clone)(const bd_sim *src);
     /* largest stable time step, and what limits it */
     double (*stable_step)(const bd_sim *sim, bd_time_step_limit *limit);
 

@@ -91,9 +91,12 @@ int bd_outputs_open(bd_outputs *o, const bd_sim *sim, const char *dir, int hdf5,
             return 1;
         }
     }
-    static char hbuf[1 << 16], tbuf[1 << 20];
-    setvbuf(o->history, hbuf, _IOFBF, sizeof hbuf);
-    setvbuf(o->tension, tbuf, _IOFBF, sizeof tbuf);
+    o->history_buf = malloc(1 << 16);
+    o->tension_buf = malloc(1 << 20);
+    if (o->history_buf)
+        setvbuf(o->history, o->history_buf, _IOFBF, 1 << 16);
+    if (o->tension_buf)
+        setvbuf(o->tension, o->tension_buf, _IOFBF, 1 << 20);
     o->bins = sim->model->n;
     o->env_max = malloc((size_t)o->bins * sizeof *o->env_max);
     o->env_min = malloc((size_t)o->bins * sizeof *o->env_min);
@@ -325,6 +328,9 @@ int bd_outputs_close(bd_outputs *o, const bd_sim *sim, double wall, const char *
 {
     int bad = finish_part(o, BD_OUT_HISTORY, &o->history);
     bad |= finish_part(o, BD_OUT_TENSION, &o->tension);
+    free(o->history_buf);
+    free(o->tension_buf);
+    o->history_buf = o->tension_buf = NULL;
     if (o->h5) {
         int h5bad = bd_h5_close(o->h5);
         o->h5 = NULL;

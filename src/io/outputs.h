@@ -15,6 +15,8 @@ typedef struct bd_outputs {
     char final_path[BD_OUT_COUNT][1100];
     char part_path[BD_OUT_COUNT][1100];
     FILE *history, *tension;
+    char *history_buf, *tension_buf;   /* their stdio buffers (one per run:
+                                          runs may write side by side) */
     struct bd_h5 *h5;      /* tension.h5 when asked for (run --hdf5), else NULL */
     int h5_failed;         /* writing tension.h5 failed (message in err) */
     int bins;              /* envelope bins along the path */

@@ -166,13 +166,17 @@ typedef struct bd_model {
     /* time step and what limits it */
     double dt, dt_limit;              /* s */
     bd_time_step_limit limit_kind;
+    /* the state at t = 0 every run on this model starts from (a compiled
+     * model's; NULL while a simulation owns its model) */
+    struct bd_sim *initial;
 } bd_model;
 
 /* A simulation: the compiled model and the state that the step loop
  * advances. */
 struct bd_sim {
-    const bd_model *model;     /* read-only once built */
-    bd_model *own;             /* the same, owned and writable while building */
+    const bd_model *model;     /* read-only once built; may be shared */
+    bd_model *own;             /* the same when this simulation owns it (and
+                                  writes it while building), else NULL */
     void *belt_data;           /* the formulation's own data */
 
     /* belt nodes and elements [model->n] */

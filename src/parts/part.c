@@ -65,6 +65,18 @@ void bd_parts_free(bd_sim *sim)
     sim->part_count = 0;
 }
 
+void bd_parts_clone(bd_sim *dst, const bd_sim *src)
+{
+    dst->part_count = src->part_count;
+    dst->parts = bd_xcalloc((size_t)src->part_count, sizeof *dst->parts);
+    for (int k = 0; k < src->part_count; k++) {
+        dst->parts[k] = src->parts[k];
+        if (src->parts[k].type == BD_PART_TRANSMISSION)
+            dst->parts[k].u.transmission.belt =
+                bd_transmission_clone(src->parts[k].u.transmission.belt);
+    }
+}
+
 bd_part *bd_pulley_drive_part(const bd_sim *sim, const bd_pulley_body *p)
 {
     for (int k = p->m->first_part; k < p->m->first_part + p->m->part_count; k++) {

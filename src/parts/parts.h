@@ -55,6 +55,8 @@ typedef struct bd_part {
 /* part.c: the parts of the model, in pulley order (build) */
 int bd_parts_create(bd_sim *sim, bd_diag *diag);
 void bd_parts_free(bd_sim *sim);
+/* dst's parts as a deep copy of src's (a new run on the same model) */
+void bd_parts_clone(bd_sim *dst, const bd_sim *src);
 /* the drive (or transmission) part of pulley p, or NULL */
 bd_part *bd_pulley_drive_part(const bd_sim *sim, const bd_pulley_body *p);
 bd_drive *bd_part_drive(bd_part *part);
@@ -101,6 +103,7 @@ double bd_takeup_advance(bd_sim *sim, bd_takeup *tk, bd_pulley_body *p, double *
 
 /* transmission.c: belt transmissions of drives (seed 004) */
 struct bd_transmission *bd_transmission_create(const bd_sim *sim, bd_pulley_model *pm);
+struct bd_transmission *bd_transmission_clone(const struct bd_transmission *tr);
 /* torque of the transmission on its pulley this step */
 double bd_transmission_torque(bd_sim *sim, bd_part *part);
 /* advance the transmission over the step in which its pulley went from

@@ -38,6 +38,7 @@
  * (the pulley sheave's friction is implicit in the pulley's inertia too,
  * so a gripping belt does not ring against the lagged torque). */
 #include "parts/parts.h"
+#include "base/alloc.h"
 #include "base/constants.h"
 #include "laws/belt_pulley_law.h"
 
@@ -285,4 +286,12 @@ void bd_transmission_state(const bd_part *part, const bd_pulley_body *p, double 
 double bd_transmission_slip_max(const bd_part *part)
 {
     return part->u.transmission.belt->slip_max;
+}
+
+/* a copy of the transmission's state, for a new run on the same model */
+bd_transmission *bd_transmission_clone(const bd_transmission *tr)
+{
+    bd_transmission *c = bd_xcalloc(1, sizeof *c);
+    *c = *tr;
+    return c;
 }

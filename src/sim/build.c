@@ -8,6 +8,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "base/alloc.h"
 #include "parts/parts.h"
@@ -89,10 +90,9 @@ int bd_sim_create(const bd_model_def *def, bd_sim **out, bd_diag *diag)
     return 0;
 }
 
-void bd_sim_free(bd_sim *sim)
+/* the state's own allocations */
+static void free_state(bd_sim *sim)
 {
-    if (!sim)
-        return;
     sim->model->belt->free(sim);
     bd_parts_free(sim);
     double *arrays[] = {sim->x,   sim->y,   sim->vx,   sim->vy,       sim->fx,     sim->fy,
@@ -105,15 +105,84 @@ void bd_sim_free(bd_sim *sim)
     for (int i = 0; i < sim->warning_count; i++)
         free(sim->warnings[i]);
     free(sim->warnings);
-    bd_model *m = sim->own;
-    if (m) {
-        free(m->s_node0);
-        free(m->idlers_per_set);
-        free(m->idler_spacing);
-        free(m->pulleys);
-        free(m->idlers);
-        bd_path_free(&m->path);
-        free(m);
-    }
     free(sim);
+}
+
+void bd_model_free(bd_model *m)
+{
+    if (!m)
+        return;
+    if (m->initial)
+        free_state(m->initial);
+    if (m->belt)
+        m->belt->free_model(m);
+    free(m->s_node0);
+    free(m->idlers_per_set);
+    free(m->idler_spacing);
+    free(m->pulleys);
+    free(m->idlers);
+    bd_path_free(&m->path);
+    free(m);
+}
+
+void bd_sim_free(bd_sim *sim)
+{
+    if (!sim)
+        return;
+    bd_model *own = sim->own;
+    free_state(sim);
+    bd_model_free(own);
+}
+
+int bd_model_compile(const bd_model_def *def, bd_model **out, bd_diag *diag)
+{
+    *out = NULL;
+    bd_sim *sim;
+    if (bd_sim_create(def, &sim, diag))
+        return 1;
+    /* the model keeps the state at t = 0 that every run starts from */
+    bd_model *m = sim->own;
+    sim->own = NULL;
+    m->initial = sim;
+    *out = m;
+    return 0;
+}
+
+static void *dup(const void *src, size_t count, size_t size)
+{
+    void *d = bd_xcalloc(count, size);
+    if (count > 0)
+        memcpy(d, src, count * size);
+    return d;
+}
+
+/* a deep copy of a state; the copy reads the same model */
+static bd_sim *clone_state(const bd_sim *src)
+{
+    const bd_model *m = src->model;
+    size_t n = (size_t)m->n;
+    bd_sim *sim = bd_xcalloc(1, sizeof *sim);
+    *sim = *src;
+    sim->own = NULL;
+    double **dst[] = {&sim->x,   &sim->y,   &sim->vx,   &sim->vy,       &sim->fx,     &sim->fy,
+                      &sim->fnx, &sim->fny, &sim->mass, &sim->material, &sim->tension};
+    const double *from[] = {src->x,   src->y,   src->vx,   src->vy,       src->fx,     src->fy,
+                            src->fnx, src->fny, src->mass, src->material, src->tension};
+    for (size_t i = 0; i < sizeof dst / sizeof dst[0]; i++)
+        *dst[i] = dup(from[i], n, sizeof(double));
+    sim->pulleys = dup(src->pulleys, (size_t)m->pulley_count, sizeof *sim->pulleys);
+    sim->idlers = dup(src->idlers, (size_t)m->idler_count, sizeof *sim->idlers);
+    sim->probes = dup(src->probes, (size_t)m->probe_count, sizeof *sim->probes);
+    bd_parts_clone(sim, src);
+    sim->belt_data = m->belt->clone(src);
+    sim->warnings = bd_xcalloc((size_t)src->warning_count, sizeof *sim->warnings);
+    for (int i = 0; i < src->warning_count; i++)
+        sim->warnings[i] = dup(src->warnings[i], strlen(src->warnings[i]) + 1, 1);
+    return sim;
+}
+
+int bd_sim_create_from(const bd_model *model, bd_sim **out)
+{
+    *out = model->initial ? clone_state(model->initial) : NULL;
+    return *out ? 0 : 1;
 }

@@ -37,26 +37,6 @@ static const struct {
 static const char *FILES[] = {"summary.json", "history.csv", "tension.csv", "envelope.csv"};
 #define FILE_COUNT ((int)(sizeof FILES / sizeof FILES[0]))
 
-/* FNV-1a over the file's bytes; in summary.json the line holding
- * "wall_time_s" is skipped. 0 when the file cannot be read. */
-static uint64_t hash_file(const char *path, int skip_wall)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return 0;
-    uint64_t h = 1469598103934665603ULL;
-    char line[65536];
-    while (fgets(line, sizeof line, f)) {
-        if (skip_wall && strstr(line, "\"wall_time_s\""))
-            continue;
-        for (const unsigned char *p = (const unsigned char *)line; *p; p++) {
-            h ^= *p;
-            h *= 1099511628211ULL;
-        }
-    }
-    fclose(f);
-    return h;
-}
 
 /* run one example into dir; 0 ok */
 static int run_example(const char *name, double duration, const char *dir)
@@ -129,7 +109,7 @@ int main(int argc, char **argv)
         for (int j = 0; j < FILE_COUNT; j++) {
             char path[1024];
             snprintf(path, sizeof path, "%s/%s", dir, FILES[j]);
-            uint64_t h = hash_file(path, j == 0);
+            uint64_t h = bd_test_hash_file(path);
             CHECK(h != 0);
             if (out) {
                 fprintf(out, "%s %s %016llx\n", EXAMPLES[k].name, FILES[j],

@@ -23,6 +23,9 @@ extern int bd_test_checks;
             #got, g_, w_, (double)(tol)); } } while (0)
 
 int bd_test_finish(const char *name);
+/* 64-bit FNV-1a of a file's bytes, leaving out any line that holds
+ * "wall_time_s" (the one value two runs may differ in); 0 when unreadable */
+unsigned long long bd_test_hash_file(const char *path);
 #endif
 
 /* build a simulation from model text; aborts the test on failure */

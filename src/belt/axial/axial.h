@@ -78,6 +78,8 @@ static inline bd_axial_model *bd_axial_model_build(const bd_sim *sim)
 /* build.c */
 int bd_axial_build(bd_sim *sim, bd_diag *diag);
 void bd_axial_free(bd_sim *sim);
+void bd_axial_free_model(bd_model *model);
+void *bd_axial_clone(const bd_sim *src);
 double bd_axial_stable_step(const bd_sim *sim, bd_time_step_limit *limit);
 /* node i's material, mass, gravity along the path and rolling resistance
  * for the loaded region (build.c) */

@@ -529,16 +529,45 @@ void bd_axial_free(bd_sim *sim)
     free(ax->pulleys);
     free(ax);
     sim->belt_data = NULL;
-    bd_axial_model *am = sim->own ? sim->own->belt_model : NULL;
-    if (am) {
-        free(am->k);
-        free(am->c);
-        free(am->l0);
-        free(am->s_len);
-        free(am->pulleys);
-        free(am);
-        sim->own->belt_model = NULL;
-    }
+}
+
+void bd_axial_free_model(bd_model *model)
+{
+    bd_axial_model *am = model->belt_model;
+    if (!am)
+        return;
+    free(am->k);
+    free(am->c);
+    free(am->l0);
+    free(am->s_len);
+    free(am->pulleys);
+    free(am);
+    model->belt_model = NULL;
+}
+
+static double *dup_doubles(const double *src, size_t n)
+{
+    double *d = bd_xcalloc(n, sizeof *d);
+    memcpy(d, src, n * sizeof *d);
+    return d;
+}
+
+/* a copy of src's state for a new run on the same model */
+void *bd_axial_clone(const bd_sim *src)
+{
+    const bd_axial *S = bd_axial_of(src);
+    size_t n = (size_t)src->model->n, np = (size_t)src->model->pulley_count;
+    bd_axial *ax = bd_xcalloc(1, sizeof *ax);
+    *ax = *S;
+    ax->u = dup_doubles(S->u, n);
+    ax->gap = dup_doubles(S->gap, n);
+    ax->gap_rate = dup_doubles(S->gap_rate, n);
+    ax->td = dup_doubles(S->td, n);
+    ax->f_const = dup_doubles(S->f_const, n);
+    ax->resist = dup_doubles(S->resist, n);
+    ax->pulleys = bd_xcalloc(np, sizeof *ax->pulleys);
+    memcpy(ax->pulleys, S->pulleys, np * sizeof *ax->pulleys);
+    return ax;
 }
 
 /* a point fixed on the path: its place between the two stations around

@@ -315,10 +315,48 @@ void bd_lumped_free(bd_sim *sim)
     free(L->wraps);
     free(L);
     sim->belt_data = NULL;
-    if (sim->own) {
-        free(sim->own->belt_model);
-        sim->own->belt_model = NULL;
+}
+
+void bd_lumped_free_model(bd_model *model)
+{
+    free(model->belt_model);
+    model->belt_model = NULL;
+}
+
+static void *dup(const void *src, size_t count, size_t size)
+{
+    void *d = bd_xcalloc(count, size);
+    if (count > 0)
+        memcpy(d, src, count * size);
+    return d;
+}
+
+/* a copy of src's state for a new run on the same model */
+void *bd_lumped_clone(const bd_sim *src)
+{
+    const bd_lumped *S = bd_lumped_of(src);
+    size_t n = (size_t)src->model->n;
+    bd_lumped *L = bd_xcalloc(1, sizeof *L);
+    L->ux = dup(S->ux, n, sizeof *L->ux);
+    L->uy = dup(S->uy, n, sizeof *L->uy);
+    L->len = dup(S->len, n, sizeof *L->len);
+    L->td = dup(S->td, n, sizeof *L->td);
+    L->pw = dup(S->pw, n, sizeof *L->pw);
+    L->ek = dup(S->ek, n, sizeof *L->ek);
+    L->seg_hint = dup(S->seg_hint, n, sizeof *L->seg_hint);
+    size_t np = (size_t)src->model->pulley_count;
+    L->wraps = dup(S->wraps, np, sizeof *L->wraps);
+    for (size_t i = 0; i < np; i++) {
+        bd_wrap_contact *W = &L->wraps[i];
+        size_t w = (size_t)W->win_max;
+        W->c_node = dup(S->wraps[i].c_node, w, sizeof *W->c_node);
+        W->c_normal = dup(S->wraps[i].c_normal, w, sizeof *W->c_normal);
+        W->c_tx = dup(S->wraps[i].c_tx, w, sizeof *W->c_tx);
+        W->c_ty = dup(S->wraps[i].c_ty, w, sizeof *W->c_ty);
+        W->c_f = dup(S->wraps[i].c_f, w, sizeof *W->c_f);
+        W->c_slip = dup(S->wraps[i].c_slip, w, sizeof *W->c_slip);
     }
+    return L;
 }
 
 /* Stable time step. For central differences a mode of circular frequency ω
