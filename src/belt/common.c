@@ -32,8 +32,8 @@ void bd_setup_probes_and_feed(bd_sim *sim)
     sim->probes = bd_xcalloc((size_t)sd->probe_count, sizeof *sim->probes);
     for (int i = 0; i < sd->probe_count; i++) {
         bd_probe *pr = &sim->probes[i];
-        sim->model->belt->point_init(sim, &pr->tr, bd_path_span_s(&sim->model->path, sd->probes[i].span,
-                                                           sd->probes[i].at));
+        sim->model->belt->point_init(
+            sim, &pr->tr, bd_path_span_s(&sim->model->path, sd->probes[i].span, sd->probes[i].at));
         pr->tension_max = -INFINITY;
         pr->tension_min = INFINITY;
     }
@@ -41,8 +41,9 @@ void bd_setup_probes_and_feed(bd_sim *sim)
         sim->own->material_mpl = def->material.mass_per_length;
         sim->own->discharge_pulley = def->material.discharge;
         sim->has_feed = def->material.feeding;
-        sim->model->belt->point_init(sim, &sim->feed, bd_path_span_s(&sim->model->path, def->material.feed_span,
-                                                              def->material.feed_at));
+        sim->model->belt->point_init(
+            sim, &sim->feed,
+            bd_path_span_s(&sim->model->path, def->material.feed_span, def->material.feed_at));
     }
 }
 

@@ -80,8 +80,8 @@ int bd_outputs_open(bd_outputs *o, const bd_sim *sim, const char *dir, int hdf5,
         snprintf(o->final_path[BD_OUT_HDF5], sizeof o->final_path[BD_OUT_HDF5], "%s/tension.h5", d);
         snprintf(o->part_path[BD_OUT_HDF5], sizeof o->part_path[BD_OUT_HDF5], "%s/.tension.h5.part",
                  d);
-        o->h5 = bd_h5_open(o->part_path[BD_OUT_HDF5], sim->model->def->name, sim->model->n, sim->model->path.length,
-                           err, errlen);
+        o->h5 = bd_h5_open(o->part_path[BD_OUT_HDF5], sim->model->def->name, sim->model->n,
+                           sim->model->path.length, err, errlen);
         if (!o->h5) {
             fclose(o->history);
             fclose(o->tension);
@@ -251,7 +251,8 @@ static int write_summary(bd_outputs *o, const bd_sim *sim, double wall, const ch
     bd_json_add_number(root, "wall_time_s", wall);
     cJSON_AddStringToObject(root, "status", status);
     bd_json_add_number(root, "time_step_limit_s", sim->model->dt_limit);
-    cJSON_AddStringToObject(root, "time_step_limited_by", bd_time_step_limit_name(sim->model->limit_kind));
+    cJSON_AddStringToObject(root, "time_step_limited_by",
+                            bd_time_step_limit_name(sim->model->limit_kind));
     if (def->belt.rated_tension > 0.0)
         bd_json_add_number(root, "rated_tension_N", def->belt.rated_tension);
     cJSON *ten = cJSON_AddObjectToObject(root, "tension");

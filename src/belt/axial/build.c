@@ -281,7 +281,8 @@ static void setup_pulleys(bd_sim *sim, const int *pnode)
                 mid_out += L;
             double w_in = weight_between(sim, mid_in, a0);    /* T(a0) = T_in + w_in */
             double w_out = weight_between(sim, a1, mid_out);  /* T(a1) = T_out − w_out */
-            sim->own->pulleys[i].wrap_pull = -m_wrap * sim->model->gravity * a[1] - w_out * ap->c_out - w_in * ap->c_in;
+            sim->own->pulleys[i].wrap_pull =
+                -m_wrap * sim->model->gravity * a[1] - w_out * ap->c_out - w_in * ap->c_in;
         }
     }
 }
@@ -300,8 +301,10 @@ static void spread_idlers(bd_sim *sim)
 {
     const bd_model_def *def = sim->model->def;
     double L = sim->model->path.length;
-    sim->own->idlers_per_set = bd_xcalloc((size_t)def->idler_set_count, sizeof *sim->own->idlers_per_set);
-    sim->own->idler_spacing = bd_xcalloc((size_t)def->idler_set_count, sizeof *sim->own->idler_spacing);
+    sim->own->idlers_per_set =
+        bd_xcalloc((size_t)def->idler_set_count, sizeof *sim->own->idlers_per_set);
+    sim->own->idler_spacing =
+        bd_xcalloc((size_t)def->idler_set_count, sizeof *sim->own->idler_spacing);
     for (int k = 0; k < def->idler_set_count; k++) {
         const bd_idler_set_def *set = &def->idler_sets[k];
         int count = bd_idler_set_layout(sim, k, &sim->own->idler_spacing[k]);

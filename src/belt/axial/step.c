@@ -169,7 +169,8 @@ void bd_axial_takeup_geometry(bd_sim *sim)
 static int front_node(const bd_sim *sim, double s, int *e)
 {
     const int n = sim->model->n;
-    const double L = sim->model->path.length, *s0 = sim->model->s_node0, *len = bd_axial_model_of(sim)->s_len;
+    const double L = sim->model->path.length, *s0 = sim->model->s_node0,
+                 *len = bd_axial_model_of(sim)->s_len;
     for (int it = 0; it < n; it++) {
         double rel = s - s0[*e];
         rel -= L * floor(rel / L + 0.5);   /* into [−L/2, L/2) */
@@ -234,7 +235,8 @@ static int move_front(bd_sim *sim, double *d, int *e, double lo, double hi)
 void bd_axial_material(bd_sim *sim)
 {
     bd_axial *ax = bd_axial_of(sim);
-    if (ax->head_free && move_front(sim, &ax->d_head, &ax->e_head, ax->d_tail, bd_axial_model_of(sim)->load_len))
+    if (ax->head_free &&
+        move_front(sim, &ax->d_head, &ax->e_head, ax->d_tail, bd_axial_model_of(sim)->load_len))
         ax->head_free = 0;
     if (ax->tail_free)
         move_front(sim, &ax->d_tail, &ax->e_tail, 0.0, ax->d_head);
@@ -265,7 +267,8 @@ void bd_axial_integrate(bd_sim *sim, double *ke_out, double *w_nc_out)
 double bd_axial_elastic_energy(const bd_sim *sim)
 {
     const int n = sim->model->n;
-    const double *u = bd_axial_of(sim)->u, *gap = bd_axial_of(sim)->gap, *k = bd_axial_model_of(sim)->k;
+    const double *u = bd_axial_of(sim)->u, *gap = bd_axial_of(sim)->gap,
+                 *k = bd_axial_model_of(sim)->k;
     double e = 0.0;
     for (int i = 0; i < n; i++) {
         int j = i + 1 == n ? 0 : i + 1;

@@ -69,8 +69,10 @@ static void setup_idlers(bd_sim *sim)
 {
     const bd_model_def *def = sim->model->def;
     int total = 0;
-    sim->own->idlers_per_set = bd_xcalloc((size_t)def->idler_set_count, sizeof *sim->own->idlers_per_set);
-    sim->own->idler_spacing = bd_xcalloc((size_t)def->idler_set_count, sizeof *sim->own->idler_spacing);
+    sim->own->idlers_per_set =
+        bd_xcalloc((size_t)def->idler_set_count, sizeof *sim->own->idlers_per_set);
+    sim->own->idler_spacing =
+        bd_xcalloc((size_t)def->idler_set_count, sizeof *sim->own->idler_spacing);
     for (int k = 0; k < def->idler_set_count; k++)
         total += bd_idler_set_layout(sim, k, &sim->own->idler_spacing[k]);
     sim->own->idler_count = total;
@@ -145,11 +147,13 @@ static void straighten_spans(bd_sim *sim)
             continue;
         /* i is the first node of a span after a wrap; find its last node */
         int last = i, count = 1;
-        while (count < n && bd_lumped_of(sim)->seg_hint[(last + 1) % n] == bd_lumped_of(sim)->seg_hint[i]) {
+        while (count < n &&
+               bd_lumped_of(sim)->seg_hint[(last + 1) % n] == bd_lumped_of(sim)->seg_hint[i]) {
             last = (last + 1) % n;
             count++;
         }
-        const bd_path_segment *gn = &sim->model->path.segments[bd_lumped_of(sim)->seg_hint[(last + 1) % n]];
+        const bd_path_segment *gn =
+            &sim->model->path.segments[bd_lumped_of(sim)->seg_hint[(last + 1) % n]];
         if (gn->kind != BD_SEGMENT_ARC || count < 1)
             continue;
         /* the departure node: the span's first node if it is within half an
@@ -170,8 +174,9 @@ static void straighten_spans(bd_sim *sim)
         if (sb < sa)
             sb += sim->model->path.length;
         for (int j = (a + 1) % n; j != b; j = (j + 1) % n) {
-            double sj = sim->model->s_node0[j] < sa ? sim->model->s_node0[j] + sim->model->path.length
-                                             : sim->model->s_node0[j];
+            double sj = sim->model->s_node0[j] < sa
+                            ? sim->model->s_node0[j] + sim->model->path.length
+                            : sim->model->s_node0[j];
             double f = (sj - sa) / (sb - sa);
             sim->x[j] = ax + f * (bx - ax);
             sim->y[j] = ay + f * (by - ay);

@@ -80,8 +80,8 @@ static void nodes(int n, double g, const double *restrict ux, const double *rest
 static void node_pass(bd_sim *sim)
 {
     const bd_lumped *L = bd_lumped_of(sim);
-    nodes(sim->model->n, sim->model->gravity, L->ux, L->uy, sim->tension, L->td, sim->mass, sim->fx, sim->fy,
-          sim->fnx, sim->fny);
+    nodes(sim->model->n, sim->model->gravity, L->ux, L->uy, sim->tension, L->td, sim->mass, sim->fx,
+          sim->fy, sim->fnx, sim->fny);
 }
 
 static void bending_forces(bd_sim *sim)
@@ -147,8 +147,8 @@ void bd_lumped_integrate(bd_sim *sim, double *ke_out, double *w_nc_out)
 {
     bd_lumped *L = bd_lumped_of(sim);
     const int n = sim->model->n;
-    advance(n, sim->model->dt, sim->mass, sim->fx, sim->fy, sim->fnx, sim->fny, sim->x, sim->y, sim->vx,
-            sim->vy, L->pw, L->ek);
+    advance(n, sim->model->dt, sim->mass, sim->fx, sim->fy, sim->fnx, sim->fny, sim->x, sim->y,
+            sim->vx, sim->vy, L->pw, L->ek);
     double w_nc = 0.0, ke = 0.0;
     const double *restrict pw = L->pw, *restrict ek = L->ek;
     for (int i = 0; i < n; i++) {
