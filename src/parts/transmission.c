@@ -149,9 +149,7 @@ bd_transmission *bd_transmission_create(const bd_sim *sim, bd_pulley_model *pm)
 {
     const bd_pulley_def *pd = pm->def;
     const bd_transmission_def *td = &pd->drive.transmission;
-    bd_transmission *tr = calloc(1, sizeof *tr);
-    if (!tr)
-        return NULL;
+    bd_transmission *tr = bd_xcalloc(1, sizeof *tr);
     tr->def = td;
     tr->r_m = td->motor_sheave_radius;
     tr->r_p = td->pulley_sheave_radius;

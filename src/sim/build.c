@@ -46,10 +46,45 @@ static void prepare_drives(bd_sim *sim)
             bd_transmission_tune(sim, &sim->parts[k]);
 }
 
+static int create(const bd_model_def *def, bd_sim *volatile *out, bd_diag *diag);
+
 int bd_sim_create(const bd_model_def *def, bd_sim **out, bd_diag *diag)
 {
     *out = NULL;
+    bd_sim *volatile built = NULL;
+    bd_alloc_guard guard;
+    if (setjmp(guard.env)) {
+        bd_alloc_guard_pop(&guard);
+        double L = built && built->model ? built->model->path.length : 0.0;
+        double el = def->belt.element_length;
+        if (L > 0.0 && el > 0.0)
+            bd_diag_error(diag, def->source, def->belt.mark,
+                          "out of memory while building the simulation: a %.1f m belt in "
+                          "elements of %g m (belt.element_length) is %.3g nodes",
+                          L, el, L / el);
+        else
+            bd_diag_error(diag, def->source, def->belt.mark,
+                          "out of memory while building the simulation");
+        bd_sim_free(built);
+        return 1;
+    }
+    bd_alloc_guard_push(&guard);
+    int bad = create(def, &built, diag);
+    bd_alloc_guard_pop(&guard);
+    if (bad) {
+        bd_sim_free(built);
+        return 1;
+    }
+    *out = built;
+    return 0;
+}
+
+/* bd_sim_create's work; *sim is set first, so that a jump out of memory
+ * finds what to free */
+static int create(const bd_model_def *def, bd_sim *volatile *out, bd_diag *diag)
+{
     bd_sim *sim = bd_xcalloc(1, sizeof *sim);
+    *out = sim;
     sim->own = bd_xcalloc(1, sizeof *sim->own);
     sim->model = sim->own;
     sim->own->def = def;
@@ -67,17 +102,13 @@ int bd_sim_create(const bd_model_def *def, bd_sim **out, bd_diag *diag)
         sim->pulleys[i].cx = def->pulleys[i].x;
         sim->pulleys[i].cy = def->pulleys[i].y;
     }
-    if (sim->model->belt->build(sim, diag)) {
-        bd_sim_free(sim);
+    if (sim->model->belt->build(sim, diag))
         return 1;
-    }
     for (int i = 0; i < sim->model->pulley_count; i++)
         if (sim->pulleys[i].m->def->has_drive)
             bd_monitor_init(sim, &sim->pulleys[i]);
-    if (bd_time_step_choose(sim, diag) || bd_parts_create(sim, diag)) {
-        bd_sim_free(sim);
+    if (bd_time_step_choose(sim, diag) || bd_parts_create(sim, diag))
         return 1;
-    }
     prepare_drives(sim);
     bd_sim_start_at_rest(sim);
     sim->tension_max = -INFINITY;
@@ -86,14 +117,14 @@ int bd_sim_create(const bd_model_def *def, bd_sim **out, bd_diag *diag)
         sim->pulleys[i].travel_min = 0.0;
         sim->pulleys[i].travel_max = 0.0;
     }
-    *out = sim;
     return 0;
 }
 
 /* the state's own allocations */
 static void free_state(bd_sim *sim)
 {
-    sim->model->belt->free(sim);
+    if (sim->model && sim->model->belt)
+        sim->model->belt->free(sim);
     bd_parts_free(sim);
     double *arrays[] = {sim->x,   sim->y,   sim->vx,   sim->vy,       sim->fx,     sim->fy,
                         sim->fnx, sim->fny, sim->mass, sim->material, sim->tension};
@@ -183,6 +214,17 @@ static bd_sim *clone_state(const bd_sim *src)
 
 int bd_sim_create_from(const bd_model *model, bd_sim **out)
 {
-    *out = model->initial ? clone_state(model->initial) : NULL;
-    return *out ? 0 : 1;
+    *out = NULL;
+    if (!model->initial)
+        return 1;
+    bd_alloc_guard guard;
+    if (setjmp(guard.env)) {
+        /* out of memory: what the copy allocated so far is lost */
+        bd_alloc_guard_pop(&guard);
+        return 1;
+    }
+    bd_alloc_guard_push(&guard);
+    *out = clone_state(model->initial);
+    bd_alloc_guard_pop(&guard);
+    return 0;
 }

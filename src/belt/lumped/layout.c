@@ -16,6 +16,8 @@
  * tension steps between sections that seed 001 §6.1 reports. */
 #include "belt/lumped/layout.h"
 
+#include "base/alloc.h"
+
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -44,7 +46,7 @@ static void weight_grid_build(const bd_model_def *def, const bd_path *path, doub
 {
     g->m = (int)ceil(path->length / target * GRID_PER_ELEMENT) + 16;
     g->ds = path->length / g->m;
-    g->W = malloc((size_t)(g->m + 1) * sizeof *g->W);
+    g->W = bd_xcalloc((size_t)g->m + 1, sizeof *g->W);
     double p[2], t[2], yprev;
     bd_path_point(path, 0.0, p, t);
     yprev = p[1];
@@ -259,7 +261,7 @@ int bd_layout_belt(const bd_model_def *def, const bd_layout_request *req, bd_lay
         shift_ctx c = {0};
         c.def = def;
         c.moved = *def;
-        c.pulleys = malloc((size_t)def->pulley_count * sizeof *c.pulleys);
+        c.pulleys = bd_xcalloc((size_t)def->pulley_count, sizeof *c.pulleys);
         memcpy(c.pulleys, def->pulleys, (size_t)def->pulley_count * sizeof *c.pulleys);
         c.moved.pulleys = c.pulleys;
         c.k = takeup;
@@ -300,8 +302,8 @@ int bd_layout_belt(const bd_model_def *def, const bd_layout_request *req, bd_lay
         bd_diag_free(&quiet);
     }
     out->l0 = l0;
-    out->s = malloc((size_t)n * sizeof *out->s);
-    out->tension = malloc((size_t)n * sizeof *out->tension);
+    out->s = bd_xcalloc((size_t)n, sizeof *out->s);
+    out->tension = bd_xcalloc((size_t)n, sizeof *out->tension);
     march(&out->path, &g, EA, l0, Tc, n, out->s);
     for (int i = 0; i < n; i++) {
         double s_mid = 0.5 * (out->s[i] + (i + 1 < n ? out->s[i + 1] : out->path.length));
