@@ -97,6 +97,9 @@ int bd_idler_set_layout(bd_sim *sim, int k, double *spacing);
 /* the element tensions' extremes of this step into sim->step_tension_*
  * (the forces phase of every formulation ends with it) */
 void bd_tension_extremes(bd_sim *sim);
+/* the first element whose tension is value (an extreme of this step): the
+ * one a scan taking only strictly larger values would keep */
+int bd_tension_element(const bd_sim *sim, double value);
 /* a point fixed on the path at s (taken modulo the loop): its place and
  * direction, and the node with the largest initial s not beyond it in
  * tr->element (the formulation's point_init then finds the element) */

@@ -18,8 +18,9 @@ const bd_belt_ops *bd_belt_ops_for(bd_formulation f)
 void bd_alloc_node_arrays(bd_sim *sim)
 {
     size_t n = (size_t)sim->model->n;
-    double **d[] = {&sim->x,   &sim->y,   &sim->vx,   &sim->vy,       &sim->fx,      &sim->fy,
-                    &sim->fnx, &sim->fny, &sim->mass, &sim->material, &sim->tension};
+    double **d[] = {&sim->x,    &sim->y,        &sim->vx,      &sim->vy,         &sim->fx,
+                    &sim->fy,   &sim->fnx,      &sim->fny,     &sim->mass,       &sim->material,
+                    &sim->tension, &sim->dt_per_mass};
     for (size_t i = 0; i < sizeof d / sizeof d[0]; i++)
         *d[i] = bd_xcalloc(n, sizeof(double));
 }
@@ -101,30 +102,50 @@ void bd_belt_point_place(const bd_sim *sim, bd_tracker *tr, double s)
     tr->element = lo;
 }
 
-/* one scalar pass: the first element of the largest and of the smallest
- * tension, and whether any is NaN (a NaN compares false, so it is flagged
- * on its own) */
+/* The largest and the smallest tension, and whether any is NaN (a NaN
+ * compares false, so it is flagged on its own): eight running maxima and
+ * minima without branches (x > m ? x : m is one maxsd). Which element holds
+ * an extreme is looked up only when it is needed (bd_tension_element). */
+#define LANES 8
 void bd_tension_extremes(bd_sim *sim)
 {
     const int n = sim->model->n;
     const double *restrict T = sim->tension;
-    double hi = -INFINITY, lo = INFINITY;
-    int ihi = 0, ilo = 0, nan = 0;
-    for (int e = 0; e < n; e++) {
+    double mx[LANES], mn[LANES];
+    int nan = 0;
+    for (int k = 0; k < LANES; k++) {
+        mx[k] = -INFINITY;
+        mn[k] = INFINITY;
+    }
+    int e = 0;
+    for (; e + LANES <= n; e += LANES)
+        for (int k = 0; k < LANES; k++) {
+            double t = T[e + k];
+            nan |= !(t == t);
+            mx[k] = t > mx[k] ? t : mx[k];
+            mn[k] = t < mn[k] ? t : mn[k];
+        }
+    for (; e < n; e++) {
         double t = T[e];
         nan |= !(t == t);
-        if (t > hi) {
-            hi = t;
-            ihi = e;
-        }
-        if (t < lo) {
-            lo = t;
-            ilo = e;
-        }
+        mx[0] = t > mx[0] ? t : mx[0];
+        mn[0] = t < mn[0] ? t : mn[0];
+    }
+    double hi = mx[0], lo = mn[0];
+    for (int k = 1; k < LANES; k++) {
+        hi = mx[k] > hi ? mx[k] : hi;
+        lo = mn[k] < lo ? mn[k] : lo;
     }
     sim->step_tension_max = hi;
     sim->step_tension_min = lo;
-    sim->step_element_max = ihi;
-    sim->step_element_min = ilo;
     sim->step_tension_nan = nan;
+}
+
+int bd_tension_element(const bd_sim *sim, double value)
+{
+    const int n = sim->model->n;
+    int e = 0;
+    while (e < n - 1 && !(sim->tension[e] == value))
+        e++;
+    return e;
 }

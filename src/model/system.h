@@ -112,6 +112,8 @@ typedef struct bd_idler_model {
     double k_contact;      /* N/m penalty stiffness */
     int set;               /* index of its idler set */
     double s;              /* m, path coordinate of its contact point */
+    double inv_inertia;    /* 1/(kg·m²) */
+    double r2_per_inertia; /* 1/kg, R²/I */
 } bd_idler_model;
 
 typedef struct bd_idler {
@@ -165,6 +167,7 @@ typedef struct bd_model {
     int discharge_pulley;
     /* time step and what limits it */
     double dt, dt_limit;              /* s */
+    double inv_dt;                    /* 1/s */
     bd_time_step_limit limit_kind;
     /* the state at t = 0 every run on this model starts from (a compiled
      * model's; NULL while a simulation owns its model) */
@@ -190,6 +193,7 @@ struct bd_sim {
     /* step: material phase */
     double *mass;          /* [n] kg belt + material */
     double *material;      /* [n] kg of material on the node */
+    double *dt_per_mass;   /* [n] s/kg, Δt/mass, kept with mass (bd_node_mass_changed) */
 
     /* parts: their build and state fields as their structs say */
     bd_pulley_body *pulleys;   /* [model->pulley_count] */
@@ -208,7 +212,6 @@ struct bd_sim {
     long steps;
     /* element tension extremes of the current step (forces phase) */
     double step_tension_max, step_tension_min;
-    int step_element_max, step_element_min;
     int step_tension_nan;  /* some element's tension is NaN */
 
     /* stats */
@@ -225,6 +228,12 @@ struct bd_sim {
     char **warnings;       /* [warning_count] said after the run */
     int warning_count;
 };
+
+/* node i's mass changed: keep what is derived from it */
+static inline void bd_node_mass_changed(bd_sim *sim, int i)
+{
+    sim->dt_per_mass[i] = sim->model->dt / sim->mass[i];
+}
 
 /* add a warning (repeats are dropped); never from inside the step loop */
 void bd_sim_warn(bd_sim *sim, const char *fmt, ...)

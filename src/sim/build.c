@@ -110,6 +110,8 @@ static int create(const bd_model_def *def, bd_sim *volatile *out, bd_diag *diag)
     if (bd_time_step_choose(sim, diag) || bd_parts_create(sim, diag))
         return 1;
     prepare_drives(sim);
+    for (int i = 0; i < sim->model->n; i++)
+        bd_node_mass_changed(sim, i);
     bd_sim_start_at_rest(sim);
     sim->tension_max = -INFINITY;
     sim->tension_min = INFINITY;
@@ -126,8 +128,9 @@ static void free_state(bd_sim *sim)
     if (sim->model && sim->model->belt)
         sim->model->belt->free(sim);
     bd_parts_free(sim);
-    double *arrays[] = {sim->x,   sim->y,   sim->vx,   sim->vy,       sim->fx,     sim->fy,
-                        sim->fnx, sim->fny, sim->mass, sim->material, sim->tension};
+    double *arrays[] = {sim->x,    sim->y,        sim->vx,      sim->vy,
+                        sim->fx,   sim->fy,       sim->fnx,     sim->fny,
+                        sim->mass, sim->material, sim->tension, sim->dt_per_mass};
     for (size_t i = 0; i < sizeof arrays / sizeof arrays[0]; i++)
         free(arrays[i]);
     free(sim->pulleys);
@@ -195,10 +198,12 @@ static bd_sim *clone_state(const bd_sim *src)
     bd_sim *sim = bd_xcalloc(1, sizeof *sim);
     *sim = *src;
     sim->own = NULL;
-    double **dst[] = {&sim->x,   &sim->y,   &sim->vx,   &sim->vy,       &sim->fx,     &sim->fy,
-                      &sim->fnx, &sim->fny, &sim->mass, &sim->material, &sim->tension};
-    const double *from[] = {src->x,   src->y,   src->vx,   src->vy,       src->fx,     src->fy,
-                            src->fnx, src->fny, src->mass, src->material, src->tension};
+    double **dst[] = {&sim->x,    &sim->y,        &sim->vx,      &sim->vy,
+                      &sim->fx,   &sim->fy,       &sim->fnx,     &sim->fny,
+                      &sim->mass, &sim->material, &sim->tension, &sim->dt_per_mass};
+    const double *from[] = {src->x,    src->y,        src->vx,      src->vy,
+                            src->fx,   src->fy,       src->fnx,     src->fny,
+                            src->mass, src->material, src->tension, src->dt_per_mass};
     for (size_t i = 0; i < sizeof dst / sizeof dst[0]; i++)
         *dst[i] = dup(from[i], n, sizeof(double));
     sim->pulleys = dup(src->pulleys, (size_t)m->pulley_count, sizeof *sim->pulleys);

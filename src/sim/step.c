@@ -10,6 +10,7 @@
  * which one it is. */
 #include "sim/engine.h"
 
+#include <math.h>
 #include <stdio.h>
 
 #include "parts/parts.h"
@@ -25,20 +26,22 @@
 static int check_elements(bd_sim *sim)
 {
     double hi = sim->step_tension_max, lo = sim->step_tension_min;
-    int ihi = sim->step_element_max, ilo = sim->step_element_min;
+    int nan_at = -1;
     if (sim->step_tension_nan) {
         /* a NaN: find the first element that has it (failure path only) */
-        for (int e = 0; e < sim->model->n; e++)
-            if (!(sim->tension[e] == sim->tension[e])) {
-                hi = sim->tension[e];
-                ihi = e;
-                break;
-            }
+        for (int e = 0; e < sim->model->n && nan_at < 0; e++)
+            if (!(sim->tension[e] == sim->tension[e]))
+                nan_at = e;
+        hi = NAN;
     }
     const bd_belt_ops *belt = sim->model->belt;
     if (!(hi == hi) || !(lo == lo) || hi > DIVERGED_STRAIN * sim->model->EA
         || lo < REVERSED_STRAIN * sim->model->EA) {
-        int e = (!(hi == hi) || hi > DIVERGED_STRAIN * sim->model->EA) ? ihi : ilo;
+        int e = nan_at >= 0 ? nan_at
+              : hi > DIVERGED_STRAIN * sim->model->EA ? bd_tension_element(sim, hi)
+                                                      : bd_tension_element(sim, lo);
+        if (e < 0)
+            e = 0;
         double strain = belt->element_strain(sim, e);
         snprintf(sim->fail_msg, sizeof sim->fail_msg,
                  "the simulation diverged at t = %.6f s (step %ld): %s belt element %d at "
@@ -51,12 +54,12 @@ static int check_elements(bd_sim *sim)
     if (hi > sim->tension_max) {
         sim->tension_max = hi;
         sim->tension_max_t = sim->t;
-        sim->tension_max_s = belt->element_s(sim, ihi);
+        sim->tension_max_s = belt->element_s(sim, bd_tension_element(sim, hi));
     }
     if (lo < sim->tension_min) {
         sim->tension_min = lo;
         sim->tension_min_t = sim->t;
-        sim->tension_min_s = belt->element_s(sim, ilo);
+        sim->tension_min_s = belt->element_s(sim, bd_tension_element(sim, lo));
     }
     return 0;
 }

@@ -41,5 +41,6 @@ static int check_user_step(bd_sim *sim, bd_diag *diag)
     } else {
         sim->own->dt = BD_TIME_STEP_SAFETY * sim->own->dt_limit;
     }
+    sim->own->inv_dt = 1.0 / sim->own->dt;
     return 0;
 }

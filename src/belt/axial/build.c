@@ -358,6 +358,8 @@ void bd_axial_node_load(bd_sim *sim, int i)
     node_range(sim, i, &a, &z);
     double m = sim->model->def->material.mass_per_length * loaded_length(sim, 0, a, z);
     sim->mass[i] += m - sim->material[i];
+    if (sim->model->dt > 0.0)   /* a load front moved (the build sets all at once) */
+        bd_node_mass_changed(sim, i);
     sim->material[i] = m;
     /* the same halves as element_weights */
     double sb = sim->model->s_node0[b], hb = 0.5 * am->s_len[b];

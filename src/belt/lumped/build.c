@@ -104,6 +104,8 @@ static void setup_idlers(bd_sim *sim)
             im->centre[0] = id->tr.p[0] + nx * set->radius;
             im->centre[1] = id->tr.p[1] + ny * set->radius;
             im->inertia = set->inertia > 0.0 ? set->inertia : 1e-6;
+            im->inv_inertia = 1.0 / im->inertia;
+            im->r2_per_inertia = set->radius * set->radius / im->inertia;
             im->mu_s = set->friction.mu_static;
             im->mu_d = set->friction.mu_dynamic;
             im->rolling = set->rolling_resistance;

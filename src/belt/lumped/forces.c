@@ -122,14 +122,15 @@ void bd_lumped_forces(bd_sim *sim)
  * 4.58–4.60); the kinetic energy and the non-conservative work are booked
  * with mid-step velocities v(t) = (v⁻ + v⁺)/2, for which the scheme's
  * kinetic-energy change is exactly Σ F·v(t)·Δt */
-static void advance(int n, double dt, const double *restrict mass, const double *restrict fx,
+static void advance(int n, double dt, const double *restrict mass,
+                    const double *restrict dt_per_mass, const double *restrict fx,
                     const double *restrict fy, const double *restrict fnx,
                     const double *restrict fny, double *restrict x, double *restrict y,
                     double *restrict vx, double *restrict vy, double *restrict pw,
                     double *restrict ek)
 {
     for (int i = 0; i < n; i++) {
-        double inv = dt / mass[i];
+        double inv = dt_per_mass[i];   /* dt / mass[i] */
         double ax = fx[i] * inv, ay = fy[i] * inv;
         double mx = vx[i] + 0.5 * ax, my = vy[i] + 0.5 * ay;
         pw[i] = fnx[i] * mx + fny[i] * my;
@@ -147,7 +148,7 @@ void bd_lumped_integrate(bd_sim *sim, double *ke_out, double *w_nc_out)
 {
     bd_lumped *L = bd_lumped_of(sim);
     const int n = sim->model->n;
-    advance(n, sim->model->dt, sim->mass, sim->fx, sim->fy, sim->fnx, sim->fny, sim->x, sim->y,
+    advance(n, sim->model->dt, sim->mass, sim->dt_per_mass, sim->fx, sim->fy, sim->fnx, sim->fny, sim->x, sim->y,
             sim->vx, sim->vy, L->pw, L->ek);
     double w_nc = 0.0, ke = 0.0;
     const double *restrict pw = L->pw, *restrict ek = L->ek;

@@ -46,26 +46,28 @@ static void idler_contact(bd_sim *sim, bd_idler *id)
     bd_tracker_update(sim, &id->tr);
     id->alpha = 0.0;
     id->torque = 0.0;
+    const bd_idler_model *im = id->m;
     int e = id->tr.element, j = e + 1 == sim->model->n ? 0 : e + 1;
     double g = id->tr.gamma, h = 1.0 - g;
     double px = sim->x[e] + g * (sim->x[j] - sim->x[e]);
     double py = sim->y[e] + g * (sim->y[j] - sim->y[e]);
-    double rx = px - id->m->centre[0], ry = py - id->m->centre[1];
+    double rx = px - im->centre[0], ry = py - im->centre[1];
     double d2 = rx * rx + ry * ry;
-    double Rc = id->m->radius + IDLER_CONTACT_GAP * sim->model->l0;
+    double Rc = im->radius + IDLER_CONTACT_GAP * sim->model->l0;
     if (d2 >= Rc * Rc)
         return;
-    double d = sqrt(d2);
-    double nx = rx / d, ny = ry / d;
+    /* reciprocals once: the divider is what bounds this loop */
+    double d = sqrt(d2), inv_d = 1.0 / d;
+    double nx = rx * inv_d, ny = ry * inv_d;
     double vcx = h * sim->vx[e] + g * sim->vx[j];
     double vcy = h * sim->vy[e] + g * sim->vy[j];
-    double me = sim->mass[e], mj = sim->mass[j];
-    double m_eff = 1.0 / (h * h / me + g * g / mj);
-    double aon = nx * (h * sim->fx[e] / me + g * sim->fx[j] / mj)
-               + ny * (h * sim->fy[e] / me + g * sim->fy[j] / mj);
+    double ie = 1.0 / sim->mass[e], ij = 1.0 / sim->mass[j];
+    double he = h * ie, gj = g * ij;              /* lever share / node mass */
+    double inv_m_eff = h * he + g * gj;           /* 1/m* */
+    double aon = nx * (he * sim->fx[e] + gj * sim->fx[j]) + ny * (he * sim->fy[e] + gj * sim->fy[j]);
     double dt = sim->model->dt;
-    double fn = id->m->k_contact * (id->m->radius - d - dt * (nx * vcx + ny * vcy) - dt * dt * aon)
-              / (1.0 + id->m->k_contact * dt * dt / m_eff);
+    double fn = im->k_contact * (im->radius - d - dt * (nx * vcx + ny * vcy) - dt * dt * aon)
+              / (1.0 + im->k_contact * dt * dt * inv_m_eff);
     if (fn <= 0.0)
         return;
     /* tangent along the travel direction */
@@ -75,12 +77,12 @@ static void idler_contact(bd_sim *sim, bd_idler *id)
         ty = -ty;
     }
     double vt = tx * vcx + ty * vcy;
-    double sat = vt / ROLLING_SPEED;
+    double sat = vt * (1.0 / ROLLING_SPEED);
     if (sat > 1.0)
         sat = 1.0;
     if (sat < -1.0)
         sat = -1.0;
-    double frr = id->m->rolling * fn * sat;
+    double frr = im->rolling * fn * sat;
     /* normal + rolling resistance on the two nodes, all non-conservative */
     double Fx = fn * nx - frr * tx, Fy = fn * ny - frr * ty;
     sim->fx[e] += h * Fx;
@@ -93,14 +95,14 @@ static void idler_contact(bd_sim *sim, bd_idler *id)
     sim->fny[j] += g * Fy;
     if (sim->friction_off)
         return;
-    double R = id->m->radius;
+    double R = im->radius;
     double vr = vt - id->omega * R;
-    double num = vr / sim->model->dt + h * (tx * sim->fx[e] + ty * sim->fy[e]) / me
-               + g * (tx * sim->fx[j] + ty * sim->fy[j]) / mj;
-    double den = h * h / me + g * g / mj + R * R / id->m->inertia;
+    double num = vr * sim->model->inv_dt + he * (tx * sim->fx[e] + ty * sim->fy[e])
+               + gj * (tx * sim->fx[j] + ty * sim->fy[j]);
+    double den = inv_m_eff + im->r2_per_inertia;
     double f = num / den;
-    if (fabs(f) > id->m->mu_s * fn)
-        f = copysign(id->m->mu_d * fn, f);
+    if (fabs(f) > im->mu_s * fn)
+        f = copysign(im->mu_d * fn, f);
     sim->fx[e] -= h * f * tx;
     sim->fy[e] -= h * f * ty;
     sim->fx[j] -= g * f * tx;
@@ -110,7 +112,7 @@ static void idler_contact(bd_sim *sim, bd_idler *id)
     sim->fnx[j] -= g * f * tx;
     sim->fny[j] -= g * f * ty;
     id->torque = f * R;
-    id->alpha = id->torque / id->m->inertia;
+    id->alpha = id->torque * im->inv_inertia;
 }
 
 /* the supports phase: every idler, after the wraps */

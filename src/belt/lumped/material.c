@@ -24,6 +24,7 @@ static void material_transport(bd_sim *sim)
                 sim->vx[i] *= m / (m + add);
                 sim->vy[i] *= m / (m + add);
                 sim->mass[i] += add;
+                bd_node_mass_changed(sim, i);
                 sim->material[i] += add;
                 double ke2 = 0.5 * sim->mass[i]
                            * (sim->vx[i] * sim->vx[i] + sim->vy[i] * sim->vy[i]);
@@ -46,6 +47,7 @@ static void material_discharge(bd_sim *sim)
         double v2 = sim->vx[i] * sim->vx[i] + sim->vy[i] * sim->vy[i];
         sim->energy.dissipated += 0.5 * dm * v2 + dm * sim->model->gravity * sim->y[i];
         sim->mass[i] -= dm;
+        bd_node_mass_changed(sim, i);
         sim->material[i] = 0.0;
     }
 }
