@@ -20,6 +20,7 @@
 #include "belt/axial/axial.h"
 
 #include "base/alloc.h"
+#include "laws/stable_step.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -471,13 +472,13 @@ int bd_axial_build(bd_sim *sim, bd_diag *diag)
  * elements a and b has ω² ≤ 2·(k_a + k_b)/m (plus k·|u·a| where an element
  * pulls a takeup carriage) and damping 2·(c_a + c_b) + the slope of the
  * rolling resistance; a carriage ω² ≤ Σ (k·c² + 2·k·|c|)/M. The step for
- * each is (2/ω)·(√(1+ζ²) − ζ) (timestep.c). */
+ * each is (2/ω)·(√(1+ζ²) − ζ) (laws/stable_step.h). */
 static double mode_step(double K, double C, double m)
 {
     if (K <= 0.0 || m <= 0.0)
         return INFINITY;
     double w = sqrt(K / m), z = C / (2.0 * m * w);
-    return 2.0 / w * (sqrt(1.0 + z * z) - z);
+    return bd_central_difference_limit(w, z);
 }
 
 double bd_axial_stable_step(const bd_sim *sim, bd_time_step_limit *limit)

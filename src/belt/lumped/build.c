@@ -11,6 +11,7 @@
 
 #include "base/alloc.h"
 #include "base/constants.h"
+#include "laws/stable_step.h"
 
 /* default target element length: chord of a 30° arc of the smallest pulley
  * (seed 001 §4.3.1, §6.1) */
@@ -366,10 +367,7 @@ void *bd_lumped_clone(const bd_sim *src)
     return L;
 }
 
-/* Stable time step. For central differences a mode of circular frequency ω
- * and damping ratio ζ is stable for
- *     Δt ≤ (2/ω)·(√(1+ζ²) − ζ)          (DESIGN.md; seed 001 eq 6.1 for ζ = 0)
- * The highest frequency of the belt is that of a node between two elements
+/* Stable time step (laws/stable_step.h). The highest frequency of the belt is that of a node between two elements
  * moving against its neighbours: for the axial springs ω² = 4k/m (k = EA/l0,
  * m = node mass), for the bending springs (k_θ = EI/l0, lever l0, a node and
  * its two neighbours) ω² = 16·k_θ/(m·l0²). Their sum bounds the largest
@@ -386,7 +384,7 @@ double bd_lumped_stable_step(const bd_sim *sim, bd_time_step_limit *limit)
     double zeta = 4.0 * L->c_axial / (2.0 * m * omega);
     /* what limits it: the largest contribution to ω² */
     *limit = w_bend > w_axial ? BD_LIMIT_BENDING : BD_LIMIT_AXIAL;
-    return 2.0 / omega * (sqrt(1.0 + zeta * zeta) - zeta);
+    return bd_central_difference_limit(omega, zeta);
 }
 
 /* the idlers' inertia reflected to a pulley of radius R */
