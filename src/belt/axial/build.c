@@ -21,6 +21,7 @@
 
 #include "base/alloc.h"
 #include "laws/stable_step.h"
+#include "model/rest_weight.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -28,25 +29,6 @@
 
 /* samples per element of the weight integral */
 #define WEIGHT_SAMPLES 8
-
-/* overlap of [a, b] with [c, d] on the loop of length L (each shorter than
- * L); the first overlapping piece's bounds in *lo, *hi */
-static double overlap(double a, double b, double c, double d, double L, double *lo, double *hi)
-{
-    double total = 0.0;
-    for (int k = -1; k <= 1; k++) {
-        double l = a > c + k * L ? a : c + k * L;
-        double h = b < d + k * L ? b : d + k * L;
-        if (h > l) {
-            if (total == 0.0 && lo) {
-                *lo = l;
-                *hi = h;
-            }
-            total += h - l;
-        }
-    }
-    return total;
-}
 
 /* the region that can carry material, from the feed point to the start of
  * the discharge pulley's wrap (as layout.c), and the part of it loaded at
@@ -86,7 +68,7 @@ static double loaded_length(const bd_sim *sim, int full, double a, double b)
     double from, to;
     if (!loaded_zone(sim, full, &from, &to))
         return 0.0;
-    return overlap(a, b, from, to, sim->model->path.length, NULL, NULL);
+    return bd_loop_overlap(a, b, from, to, sim->model->path.length, NULL, NULL);
 }
 
 /* node path coordinates: pulley nodes at mid-wrap; between two of them
@@ -174,22 +156,11 @@ static void alloc_arrays(bd_sim *sim)
  * (negative when b < a) */
 static double weight_between(const bd_sim *sim, double a, double b)
 {
-    const double g = sim->model->gravity, mL = sim->model->def->material.mass_per_length;
-    double ds = (b - a) / WEIGHT_SAMPLES, w = 0.0;
-    double p[2], t[2], yprev;
-    bd_path_point(&sim->model->path, a, p, t);
-    yprev = p[1];
-    for (int k = 0; k < WEIGHT_SAMPLES; k++) {
-        double lo = a + k * ds;
-        bd_path_point(&sim->model->path, lo + ds, p, t);
-        double on = 0.0;
-        if (mL > 0.0 && ds != 0.0)
-            on = loaded_length(sim, 0, ds > 0.0 ? lo : lo + ds, ds > 0.0 ? lo + ds : lo)
-               / fabs(ds);
-        w += (sim->model->belt_mpl + mL * on) * g * (p[1] - yprev);
-        yprev = p[1];
-    }
-    return w;
+    bd_rest_load load = {sim->model->belt_mpl, sim->model->def->material.mass_per_length, 0.0,
+                         0.0, sim->model->gravity};
+    if (!loaded_zone(sim, 0, &load.from, &load.to))
+        load.to = load.from;
+    return bd_rest_weight(&sim->model->path, &load, a, b, WEIGHT_SAMPLES);
 }
 
 /* the weight over the two halves of every element */
@@ -317,7 +288,7 @@ static void spread_idlers(bd_sim *sim)
         for (int i = 0; i < sim->model->n; i++) {
             double a, z;
             node_range(sim, i, &a, &z);
-            sim->mass[i] += mass_per_m * overlap(a, z, sp->s0, sp->s0 + sp->length, L, NULL, NULL);
+            sim->mass[i] += mass_per_m * bd_loop_overlap(a, z, sp->s0, sp->s0 + sp->length, L, NULL, NULL);
         }
     }
 }
@@ -340,7 +311,7 @@ static double node_resist(const bd_sim *sim, int i, int full)
         double cover = count * sim->model->idler_spacing[k] / sp->length;
         double rr = set->rolling_resistance * sim->model->gravity * fabs(sp->dir[0]) * cover;
         double lo = 0.0, hi = 0.0;
-        double on = overlap(a, z, sp->s0, sp->s0 + sp->length, L, &lo, &hi);
+        double on = bd_loop_overlap(a, z, sp->s0, sp->s0 + sp->length, L, &lo, &hi);
         if (on > 0.0)
             R += rr * (sim->model->belt_mpl * on + mL * loaded_length(sim, full, lo, hi));
     }

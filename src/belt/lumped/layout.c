@@ -17,6 +17,7 @@
 #include "belt/lumped/layout.h"
 
 #include "base/alloc.h"
+#include "model/rest_weight.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -31,33 +32,32 @@ typedef struct weight_grid {
     double *W;   /* [m + 1] */
 } weight_grid;
 
-static double material_mpl_at(const bd_model_def *def, const bd_path *path, double s)
+/* belt and material at rest: the material lies from the feed point to where
+ * the belt reaches the discharge pulley, when the belt starts loaded */
+static bd_rest_load rest_load(const bd_model_def *def, const bd_path *path)
 {
+    bd_rest_load load = {def->belt.mass_per_length, 0.0, 0.0, 0.0, def->gravity};
     const bd_material_def *mat = &def->material;
-    if (!mat->present || !mat->initially_loaded)
-        return 0.0;
-    double s_feed, len;
-    bd_path_loaded_region(path, mat, &s_feed, &len);
-    return bd_path_in_region(path, s, s_feed, len) ? mat->mass_per_length : 0.0;
+    if (mat->present && mat->initially_loaded) {
+        double len;
+        bd_path_loaded_region(path, mat, &load.from, &len);
+        load.material_mpl = mat->mass_per_length;
+        load.to = load.from + len;
+    }
+    return load;
 }
 
+/* W(s) = ∫ m'·g dy (model/rest_weight.c) at the grid points */
 static void weight_grid_build(const bd_model_def *def, const bd_path *path, double target,
                               weight_grid *g)
 {
     g->m = (int)ceil(path->length / target * GRID_PER_ELEMENT) + 16;
     g->ds = path->length / g->m;
     g->W = bd_xcalloc((size_t)g->m + 1, sizeof *g->W);
-    double p[2], t[2], yprev;
-    bd_path_point(path, 0.0, p, t);
-    yprev = p[1];
+    bd_rest_load load = rest_load(def, path);
     g->W[0] = 0.0;
-    for (int i = 1; i <= g->m; i++) {
-        double s = i * g->ds;
-        bd_path_point(path, s, p, t);
-        double mpl = def->belt.mass_per_length + material_mpl_at(def, path, s - 0.5 * g->ds);
-        g->W[i] = g->W[i - 1] + mpl * def->gravity * (p[1] - yprev);
-        yprev = p[1];
-    }
+    for (int i = 1; i <= g->m; i++)
+        g->W[i] = g->W[i - 1] + bd_rest_weight(path, &load, (i - 1) * g->ds, i * g->ds, 1);
 }
 
 static double weight_at(const weight_grid *g, double s)
@@ -169,9 +169,8 @@ static int takeup_level(const bd_model_def *def, const bd_path *path, const weig
     const bd_path_segment *out = bd_path_span(path, k);
     const double *a = pd->takeup.axis;
     double F = bd_table_eval(&pd->takeup.force, 0.0);
-    double arc_mass = 0.0;
-    for (double u = 0.5 * g->ds; u < arc->length; u += g->ds)
-        arc_mass += g->ds * (def->belt.mass_per_length + material_mpl_at(def, path, arc->s0 + u));
+    bd_rest_load load = rest_load(def, path);
+    double arc_mass = bd_rest_mass(path, &load, arc->s0, arc->s0 + arc->length);
     double gravity_pull = -(pd->mass + arc_mass) * def->gravity * a[1];
     double u_in_a = in->dir[0] * a[0] + in->dir[1] * a[1];
     double u_out_a = out->dir[0] * a[0] + out->dir[1] * a[1];
