@@ -2,7 +2,7 @@
  * distribution of every belt formulation rests on. At rest, with
  * frictionless support normal to the belt, the tension changes along the
  * belt only by that weight: dT/ds = m'(s)·g·dy/ds, so T(s) = T_c + W(s) with
- * W = ∫ m'·g dy (docs/physics.md §6, §11). */
+ * W = ∫ m'·g dy (docs/physics.md §7, §11). */
 #ifndef BD_REST_WEIGHT_H
 #define BD_REST_WEIGHT_H
 
