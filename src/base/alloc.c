@@ -2,6 +2,7 @@
 
 #include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
 
 /* the innermost armed guard of this thread */
 static _Thread_local bd_alloc_guard *guard_top;
@@ -28,4 +29,12 @@ void *bd_xcalloc(size_t n, size_t size)
     if (!guard_top)
         abort();
     longjmp(guard_top->env, 1);
+}
+
+void *bd_xdup(const void *src, size_t n, size_t size)
+{
+    void *d = bd_xcalloc(n, size);
+    if (n > 0 && size > 0)
+        memcpy(d, src, n * size);
+    return d;
 }

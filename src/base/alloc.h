@@ -2,18 +2,20 @@
  *
  * The library never exits: when memory runs out, bd_xcalloc jumps back to
  * the innermost armed guard, whose entry point (bd_sim_create,
- * bd_sim_create_from) frees what was built and returns an error. Arm a
- * guard with setjmp on its env, then push it; pop it before returning:
+ * bd_sim_create_from) frees what was built and returns an error. Push a
+ * guard, then arm it with setjmp on its env; pop it before returning:
  *
  *     bd_alloc_guard g;
- *     if (setjmp(g.env)) { ...clean up, report... return 1; }
  *     bd_alloc_guard_push(&g);
+ *     if (setjmp(g.env)) { bd_alloc_guard_pop(&g); ...clean up, report... }
  *     ... build ...
  *     bd_alloc_guard_pop(&g);
  *
  * Objects the entry point must free after the jump are held in volatile
- * variables (C11 7.13.2.1). Allocating with no guard armed is a
- * programmer error and aborts. */
+ * variables (C11 7.13.2.1), and take each allocation as it is made.
+ * Temporaries a builder holds only in its locals are lost on that path (a
+ * few kilobytes, once per failed build). Allocating with no guard armed is
+ * a programmer error and aborts. */
 #ifndef BD_ALLOC_H
 #define BD_ALLOC_H
 
@@ -31,5 +33,7 @@ void bd_alloc_guard_pop(bd_alloc_guard *g);
 
 /* zeroed array of n items (at least one); on failure jumps to the guard */
 void *bd_xcalloc(size_t n, size_t size);
+/* a copy of n items of src, as bd_xcalloc allocates */
+void *bd_xdup(const void *src, size_t n, size_t size);
 
 #endif

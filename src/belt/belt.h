@@ -42,8 +42,10 @@ typedef struct bd_belt_ops {
      * model->belt_model */
     void (*free)(bd_sim *sim);
     void (*free_model)(bd_model *model);
-    /* a deep copy of src's state, for a new run on the same model */
-    void *(*clone)(const bd_sim *src);
+    /* dst->belt_data as a deep copy of src's, for a new run on the same
+     * model; dst owns each pointer as soon as it is set (a jump out of
+     * memory half way leaves nothing shared for bd_sim_free) */
+    void (*clone)(bd_sim *dst, const bd_sim *src);
     /* largest stable time step, and what limits it */
     double (*stable_step)(const bd_sim *sim, bd_time_step_limit *limit);
 

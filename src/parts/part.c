@@ -14,12 +14,15 @@ static int parts_of(const bd_pulley_def *pd)
 
 int bd_parts_create(bd_sim *sim, bd_diag *diag)
 {
+    (void)diag;
     const bd_model_def *def = sim->model->def;
     int total = 0;
     for (int i = 0; i < sim->model->pulley_count; i++)
         total += parts_of(&def->pulleys[i]);
-    sim->part_count = total;
+    /* the table first, its count after: a jump out of memory in between
+     * leaves an empty table to free */
     sim->parts = bd_xcalloc((size_t)total, sizeof *sim->parts);
+    sim->part_count = total;
     int at = 0;
     for (int i = 0; i < sim->model->pulley_count; i++) {
         bd_pulley_model *pm = &sim->own->pulleys[i];
@@ -33,12 +36,6 @@ int bd_parts_create(bd_sim *sim, bd_diag *diag)
                 part->type = BD_PART_TRANSMISSION;
                 part->u.transmission.drive.def = &pd->drive;
                 part->u.transmission.belt = bd_transmission_create(sim, pm);
-                if (!part->u.transmission.belt) {
-                    bd_diag_error(diag, def->source, pd->drive.mark,
-                                  "pulleys[%d] '%s': out of memory for its transmission", i,
-                                  pd->name);
-                    return 1;
-                }
             } else {
                 part->type = BD_PART_DRIVE;
                 part->u.drive.def = &pd->drive;
@@ -57,6 +54,8 @@ int bd_parts_create(bd_sim *sim, bd_diag *diag)
 
 void bd_parts_free(bd_sim *sim)
 {
+    if (!sim->parts)
+        return;
     for (int k = 0; k < sim->part_count; k++)
         if (sim->parts[k].type == BD_PART_TRANSMISSION)
             free(sim->parts[k].u.transmission.belt);
@@ -67,13 +66,16 @@ void bd_parts_free(bd_sim *sim)
 
 void bd_parts_clone(bd_sim *dst, const bd_sim *src)
 {
-    dst->part_count = src->part_count;
     dst->parts = bd_xcalloc((size_t)src->part_count, sizeof *dst->parts);
+    dst->part_count = src->part_count;
     for (int k = 0; k < src->part_count; k++) {
         dst->parts[k] = src->parts[k];
-        if (src->parts[k].type == BD_PART_TRANSMISSION)
+        if (src->parts[k].type == BD_PART_TRANSMISSION) {
+            /* not the source's, should the copy below run out of memory */
+            dst->parts[k].u.transmission.belt = NULL;
             dst->parts[k].u.transmission.belt =
                 bd_transmission_clone(src->parts[k].u.transmission.belt);
+        }
     }
 }
 

@@ -144,7 +144,7 @@ static void span_solve_run(span_solve *ss, int friction)
 }
 
 /* the transmission of the drive on pulley p; it takes the drive's inertia
- * from the pulley to the motor side. NULL when out of memory. */
+ * from the pulley to the motor side */
 bd_transmission *bd_transmission_create(const bd_sim *sim, bd_pulley_model *pm)
 {
     const bd_pulley_def *pd = pm->def;

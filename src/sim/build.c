@@ -53,6 +53,7 @@ int bd_sim_create(const bd_model_def *def, bd_sim **out, bd_diag *diag)
     *out = NULL;
     bd_sim *volatile built = NULL;
     bd_alloc_guard guard;
+    bd_alloc_guard_push(&guard);
     if (setjmp(guard.env)) {
         bd_alloc_guard_pop(&guard);
         double L = built && built->model ? built->model->path.length : 0.0;
@@ -68,7 +69,6 @@ int bd_sim_create(const bd_model_def *def, bd_sim **out, bd_diag *diag)
         bd_sim_free(built);
         return 1;
     }
-    bd_alloc_guard_push(&guard);
     int bad = create(def, &built, diag);
     bd_alloc_guard_pop(&guard);
     if (bad) {
@@ -182,22 +182,28 @@ int bd_model_compile(const bd_model_def *def, bd_model **out, bd_diag *diag)
     return 0;
 }
 
-static void *dup(const void *src, size_t count, size_t size)
-{
-    void *d = bd_xcalloc(count, size);
-    if (count > 0)
-        memcpy(d, src, count * size);
-    return d;
-}
 
-/* a deep copy of a state; the copy reads the same model */
-static bd_sim *clone_state(const bd_sim *src)
+/* *out as a deep copy of the state src, reading the same model. The copy
+ * starts with nothing of its own and takes each allocation as it is made,
+ * so that a jump out of memory half way leaves it freeable. */
+static void clone_state(bd_sim *volatile *out, const bd_sim *src)
 {
     const bd_model *m = src->model;
     size_t n = (size_t)m->n;
     bd_sim *sim = bd_xcalloc(1, sizeof *sim);
     *sim = *src;
     sim->own = NULL;
+    sim->x = sim->y = sim->vx = sim->vy = sim->fx = sim->fy = NULL;
+    sim->fnx = sim->fny = sim->mass = sim->material = sim->tension = sim->dt_per_mass = NULL;
+    sim->pulleys = NULL;
+    sim->idlers = NULL;
+    sim->probes = NULL;
+    sim->parts = NULL;
+    sim->part_count = 0;
+    sim->belt_data = NULL;
+    sim->warnings = NULL;
+    sim->warning_count = 0;
+    *out = sim;
     double **dst[] = {&sim->x,    &sim->y,        &sim->vx,      &sim->vy,
                       &sim->fx,   &sim->fy,       &sim->fnx,     &sim->fny,
                       &sim->mass, &sim->material, &sim->tension, &sim->dt_per_mass};
@@ -205,16 +211,17 @@ static bd_sim *clone_state(const bd_sim *src)
                             src->fx,   src->fy,       src->fnx,     src->fny,
                             src->mass, src->material, src->tension, src->dt_per_mass};
     for (size_t i = 0; i < sizeof dst / sizeof dst[0]; i++)
-        *dst[i] = dup(from[i], n, sizeof(double));
-    sim->pulleys = dup(src->pulleys, (size_t)m->pulley_count, sizeof *sim->pulleys);
-    sim->idlers = dup(src->idlers, (size_t)m->idler_count, sizeof *sim->idlers);
-    sim->probes = dup(src->probes, (size_t)m->probe_count, sizeof *sim->probes);
+        *dst[i] = bd_xdup(from[i], n, sizeof(double));
+    sim->pulleys = bd_xdup(src->pulleys, (size_t)m->pulley_count, sizeof *sim->pulleys);
+    sim->idlers = bd_xdup(src->idlers, (size_t)m->idler_count, sizeof *sim->idlers);
+    sim->probes = bd_xdup(src->probes, (size_t)m->probe_count, sizeof *sim->probes);
     bd_parts_clone(sim, src);
-    sim->belt_data = m->belt->clone(src);
+    m->belt->clone(sim, src);
     sim->warnings = bd_xcalloc((size_t)src->warning_count, sizeof *sim->warnings);
-    for (int i = 0; i < src->warning_count; i++)
-        sim->warnings[i] = dup(src->warnings[i], strlen(src->warnings[i]) + 1, 1);
-    return sim;
+    for (int i = 0; i < src->warning_count; i++) {
+        sim->warnings[i] = bd_xdup(src->warnings[i], strlen(src->warnings[i]) + 1, 1);
+        sim->warning_count = i + 1;
+    }
 }
 
 int bd_sim_create_from(const bd_model *model, bd_sim **out)
@@ -222,14 +229,17 @@ int bd_sim_create_from(const bd_model *model, bd_sim **out)
     *out = NULL;
     if (!model->initial)
         return 1;
+    bd_sim *volatile copy = NULL;
     bd_alloc_guard guard;
+    bd_alloc_guard_push(&guard);
     if (setjmp(guard.env)) {
-        /* out of memory: what the copy allocated so far is lost */
         bd_alloc_guard_pop(&guard);
+        if (copy)
+            free_state(copy);
         return 1;
     }
-    bd_alloc_guard_push(&guard);
-    *out = clone_state(model->initial);
+    clone_state(&copy, model->initial);
     bd_alloc_guard_pop(&guard);
+    *out = copy;
     return 0;
 }

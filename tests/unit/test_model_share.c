@@ -7,7 +7,9 @@
  *    simulation made from it to the end, then make a second one from the
  *    same model and run it, and run a third through bd_sim_create. All
  *    three write the same bytes (summary.json less its wall time). Had the
- *    first run changed the model, the second would differ.
+ *    first run changed the model, the second would differ. Also on an axial
+ *    belt whose load fronts move (started empty and fed; loaded and no
+ *    longer fed): the material phase reads the model at step time.
  * 2. Threads: two simulations made from one model step side by side in two
  *    threads; every node of each ends bit-identical to a simulation stepped
  *    alone. Tolerance: none (the same operations on the same numbers). */
@@ -47,13 +49,41 @@ static uint64_t run_into(bd_sim *sim, const char *dir)
     return hash_run(dir);
 }
 
+/* an axial belt whose load fronts move while it runs: loaded from empty
+ * (the head front rides to the discharge) or emptied (feeding stops, the
+ * tail front rides) */
+static const char *FRONTS =
+    "name: moving load fronts\n"
+    "belt: {mass_per_length: 15, axial_stiffness: 4.0e6, damping_ratio: 0.05,\n"
+    "       element_length: 1.0, formulation: axial}\n"
+    "pulleys:\n"
+    "  - {name: head, x: 40, y: 2, radius: 0.4, wrap: cw, mass: 300,\n"
+    "     drive: {control: speed, speed: 2.0, start: {curve: s-curve, time: 2}}}\n"
+    "  - {name: tail, x: 0, y: 0, radius: 0.4, wrap: cw, mass: 300,\n"
+    "     takeup: {type: gravity, mass: 1200, axis: [-1, 0]}}\n"
+    "idlers:\n"
+    "  - {span: tail, spacing: 1.2, rolling_resistance: 0.02}\n"
+    "material: {mass_per_length: 30, feed: {span: tail, at: 0.05}, discharge: head,\n"
+    "           initially_loaded: %s, feeding: %s}\n";
+
+/* an example by name, or "fronts_empty" / "fronts_emptied" */
 static int load(const char *name, double duration, bd_model_def *def)
 {
-    char path[1024];
-    snprintf(path, sizeof path, "%s/%s.yaml", BD_EXAMPLES_DIR, name);
     bd_diag diag;
     bd_diag_init(&diag);
-    int bad = bd_model_load(path, def, &diag);
+    int bad;
+    if (strncmp(name, "fronts_", 7) == 0) {
+        char yaml[2048];
+        int empty = strcmp(name, "fronts_empty") == 0;
+        snprintf(yaml, sizeof yaml, FRONTS, empty ? "false" : "true", empty ? "true" : "false");
+        bad = bd_model_load_string(yaml, strlen(yaml), name, def, &diag);
+    } else {
+        char path[1024];
+        snprintf(path, sizeof path, "%s/%s.yaml", BD_EXAMPLES_DIR, name);
+        bad = bd_model_load(path, def, &diag);
+    }
+    for (int i = 0; i < diag.count; i++)
+        fprintf(stderr, "%s\n", diag.lines[i]);
     bd_diag_free(&diag);
     CHECK(bad == 0);
     def->simulation.duration = duration;
@@ -166,8 +196,11 @@ int main(void)
         return bd_test_finish("test_model_share");
     sequential("head_drive", 0.5, root);
     sequential("overland_axial", 4.0, root);
+    sequential("fronts_empty", 6.0, root);
+    sequential("fronts_emptied", 6.0, root);
     remove(root);
     threads("head_drive", 3000);
     threads("overland_axial", 3000);
+    threads("fronts_empty", 3000);
     return bd_test_finish("test_model_share");
 }

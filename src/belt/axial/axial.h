@@ -69,8 +69,9 @@ static inline const bd_axial_model *bd_axial_model_of(const bd_sim *sim)
     return (const bd_axial_model *)sim->model->belt_model;
 }
 
-/* writable while building */
-static inline bd_axial_model *bd_axial_model_build(const bd_sim *sim)
+/* writable, while building only (a run made from a shared model has no
+ * own model) */
+static inline bd_axial_model *bd_axial_model_build(bd_sim *sim)
 {
     return (bd_axial_model *)sim->own->belt_model;
 }
@@ -79,7 +80,7 @@ static inline bd_axial_model *bd_axial_model_build(const bd_sim *sim)
 int bd_axial_build(bd_sim *sim, bd_diag *diag);
 void bd_axial_free(bd_sim *sim);
 void bd_axial_free_model(bd_model *model);
-void *bd_axial_clone(const bd_sim *src);
+void bd_axial_clone(bd_sim *dst, const bd_sim *src);
 double bd_axial_stable_step(const bd_sim *sim, bd_time_step_limit *limit);
 /* node i's material, mass, gravity along the path and rolling resistance
  * for the loaded region (build.c) */

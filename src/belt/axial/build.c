@@ -53,7 +53,7 @@ static void init_load(bd_sim *sim)
  * `full` all that can be loaded; 0 when empty */
 static int loaded_zone(const bd_sim *sim, int full, double *from, double *to)
 {
-    bd_axial_model *am = bd_axial_model_build(sim);
+    const bd_axial_model *am = bd_axial_model_of(sim);
     const bd_axial *ax = bd_axial_of(sim);
     double d0 = full ? 0.0 : ax->d_tail, d1 = full ? am->load_len : ax->d_head;
     if (!sim->model->def->material.present || d1 <= d0)
@@ -166,7 +166,7 @@ static double weight_between(const bd_sim *sim, double a, double b)
 /* the weight over the two halves of every element */
 static void element_weights(bd_sim *sim, double *h1, double *h2)
 {
-    bd_axial_model *am = bd_axial_model_build(sim);
+    const bd_axial_model *am = bd_axial_model_of(sim);
     for (int e = 0; e < sim->model->n; e++) {
         double s0 = sim->model->s_node0[e], half = 0.5 * am->s_len[e];
         h1[e] = weight_between(sim, s0, s0 + half);
@@ -180,7 +180,7 @@ static void element_weights(bd_sim *sim, double *h1, double *h2)
  * tension without a takeup (model-format.md `initial_tension`) */
 static int tension_level(bd_sim *sim, const double *W_mid, double *Tc, bd_diag *diag)
 {
-    bd_axial_model *am = bd_axial_model_build(sim);
+    const bd_axial_model *am = bd_axial_model_of(sim);
     const bd_model_def *def = sim->model->def;
     *Tc = def->belt.initial_tension;
     for (int i = 0; i < sim->model->pulley_count; i++) {
@@ -262,7 +262,7 @@ static void setup_pulleys(bd_sim *sim, const int *pnode)
 /* the path interval [a, z] of node i's half elements */
 static void node_range(const bd_sim *sim, int i, double *a, double *z)
 {
-    bd_axial_model *am = bd_axial_model_build(sim);
+    const bd_axial_model *am = bd_axial_model_of(sim);
     int b = i == 0 ? sim->model->n - 1 : i - 1;
     *a = sim->model->s_node0[i] - 0.5 * am->s_len[b];
     *z = sim->model->s_node0[i] + 0.5 * am->s_len[i];
@@ -324,7 +324,7 @@ static double node_resist(const bd_sim *sim, int i, int full)
  * both set a node's load here. */
 void bd_axial_node_load(bd_sim *sim, int i)
 {
-    bd_axial_model *am = bd_axial_model_build(sim);
+    const bd_axial_model *am = bd_axial_model_of(sim);
     int b = i == 0 ? sim->model->n - 1 : i - 1;
     double a, z;
     node_range(sim, i, &a, &z);
@@ -454,7 +454,7 @@ static double mode_step(double K, double C, double m)
 
 double bd_axial_stable_step(const bd_sim *sim, bd_time_step_limit *limit)
 {
-    bd_axial_model *am = bd_axial_model_build(sim);
+    const bd_axial_model *am = bd_axial_model_of(sim);
     *limit = BD_LIMIT_AXIAL;
     const int n = sim->model->n;
     double dt = INFINITY;
@@ -522,36 +522,35 @@ void bd_axial_free_model(bd_model *model)
     model->belt_model = NULL;
 }
 
-static double *dup_doubles(const double *src, size_t n)
-{
-    double *d = bd_xcalloc(n, sizeof *d);
-    memcpy(d, src, n * sizeof *d);
-    return d;
-}
 
-/* a copy of src's state for a new run on the same model */
-void *bd_axial_clone(const bd_sim *src)
+/* dst's state as a copy of src's, for a new run on the same model (as
+ * bd_lumped_clone: dst owns every pointer from the moment it is set) */
+void bd_axial_clone(bd_sim *dst, const bd_sim *src)
 {
     const bd_axial *S = bd_axial_of(src);
     size_t n = (size_t)src->model->n, np = (size_t)src->model->pulley_count;
     bd_axial *ax = bd_xcalloc(1, sizeof *ax);
-    *ax = *S;
-    ax->u = dup_doubles(S->u, n);
-    ax->gap = dup_doubles(S->gap, n);
-    ax->gap_rate = dup_doubles(S->gap_rate, n);
-    ax->td = dup_doubles(S->td, n);
-    ax->f_const = dup_doubles(S->f_const, n);
-    ax->resist = dup_doubles(S->resist, n);
-    ax->pulleys = bd_xcalloc(np, sizeof *ax->pulleys);
-    memcpy(ax->pulleys, S->pulleys, np * sizeof *ax->pulleys);
-    return ax;
+    dst->belt_data = ax;
+    ax->d_tail = S->d_tail;
+    ax->d_head = S->d_head;
+    ax->tail_free = S->tail_free;
+    ax->head_free = S->head_free;
+    ax->e_tail = S->e_tail;
+    ax->e_head = S->e_head;
+    ax->u = bd_xdup(S->u, n, sizeof(double));
+    ax->gap = bd_xdup(S->gap, n, sizeof(double));
+    ax->gap_rate = bd_xdup(S->gap_rate, n, sizeof(double));
+    ax->td = bd_xdup(S->td, n, sizeof(double));
+    ax->f_const = bd_xdup(S->f_const, n, sizeof(double));
+    ax->resist = bd_xdup(S->resist, n, sizeof(double));
+    ax->pulleys = bd_xdup(S->pulleys, np, sizeof *ax->pulleys);
 }
 
 /* a point fixed on the path: its place between the two stations around
  * it, which stay where they are */
 void bd_axial_point_init(const bd_sim *sim, bd_tracker *tr, double s)
 {
-    bd_axial_model *am = bd_axial_model_build(sim);
+    const bd_axial_model *am = bd_axial_model_of(sim);
     bd_belt_point_place(sim, tr, s);
     int lo = tr->element;
     double rel = tr->s - sim->model->s_node0[lo];

@@ -331,40 +331,40 @@ void bd_lumped_free_model(bd_model *model)
     model->belt_model = NULL;
 }
 
-static void *dup(const void *src, size_t count, size_t size)
-{
-    void *d = bd_xcalloc(count, size);
-    if (count > 0)
-        memcpy(d, src, count * size);
-    return d;
-}
 
-/* a copy of src's state for a new run on the same model */
-void *bd_lumped_clone(const bd_sim *src)
+/* dst's state as a copy of src's, for a new run on the same model; every
+ * pointer is dst's own from the moment it is set, so that a jump out of
+ * memory half way leaves nothing shared to free */
+void bd_lumped_clone(bd_sim *dst, const bd_sim *src)
 {
     const bd_lumped *S = bd_lumped_of(src);
     size_t n = (size_t)src->model->n;
     bd_lumped *L = bd_xcalloc(1, sizeof *L);
-    L->ux = dup(S->ux, n, sizeof *L->ux);
-    L->uy = dup(S->uy, n, sizeof *L->uy);
-    L->len = dup(S->len, n, sizeof *L->len);
-    L->td = dup(S->td, n, sizeof *L->td);
-    L->pw = dup(S->pw, n, sizeof *L->pw);
-    L->ek = dup(S->ek, n, sizeof *L->ek);
-    L->seg_hint = dup(S->seg_hint, n, sizeof *L->seg_hint);
+    dst->belt_data = L;
+    L->ux = bd_xdup(S->ux, n, sizeof *L->ux);
+    L->uy = bd_xdup(S->uy, n, sizeof *L->uy);
+    L->len = bd_xdup(S->len, n, sizeof *L->len);
+    L->td = bd_xdup(S->td, n, sizeof *L->td);
+    L->pw = bd_xdup(S->pw, n, sizeof *L->pw);
+    L->ek = bd_xdup(S->ek, n, sizeof *L->ek);
+    L->seg_hint = bd_xdup(S->seg_hint, n, sizeof *L->seg_hint);
     size_t np = (size_t)src->model->pulley_count;
-    L->wraps = dup(S->wraps, np, sizeof *L->wraps);
+    L->wraps = bd_xcalloc(np, sizeof *L->wraps);
     for (size_t i = 0; i < np; i++) {
+        const bd_wrap_contact *from = &S->wraps[i];
         bd_wrap_contact *W = &L->wraps[i];
-        size_t w = (size_t)W->win_max;
-        W->c_node = dup(S->wraps[i].c_node, w, sizeof *W->c_node);
-        W->c_normal = dup(S->wraps[i].c_normal, w, sizeof *W->c_normal);
-        W->c_tx = dup(S->wraps[i].c_tx, w, sizeof *W->c_tx);
-        W->c_ty = dup(S->wraps[i].c_ty, w, sizeof *W->c_ty);
-        W->c_f = dup(S->wraps[i].c_f, w, sizeof *W->c_f);
-        W->c_slip = dup(S->wraps[i].c_slip, w, sizeof *W->c_slip);
+        size_t w = (size_t)from->win_max;
+        W->c_node = bd_xdup(from->c_node, w, sizeof *W->c_node);
+        W->c_normal = bd_xdup(from->c_normal, w, sizeof *W->c_normal);
+        W->c_tx = bd_xdup(from->c_tx, w, sizeof *W->c_tx);
+        W->c_ty = bd_xdup(from->c_ty, w, sizeof *W->c_ty);
+        W->c_f = bd_xdup(from->c_f, w, sizeof *W->c_f);
+        W->c_slip = bd_xdup(from->c_slip, w, sizeof *W->c_slip);
+        W->win_first = from->win_first;
+        W->win_count = from->win_count;
+        W->win_max = from->win_max;
+        W->contact_count = from->contact_count;
     }
-    return L;
 }
 
 /* Stable time step (laws/stable_step.h). The highest frequency of the belt is that of a node between two elements

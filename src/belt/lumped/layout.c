@@ -271,7 +271,9 @@ int bd_layout_belt(const bd_model_def *def, const bd_layout_request *req, bd_lay
         c.n = n;
         double q;
         int bad = secant(shift_misfit, &c, 0.0, 0.01 * l0, 1e-10 * L, &q);
-        shift_misfit(q, &c);
+        /* the path at the solution (1e30: it could not be built) */
+        if (shift_misfit(q, &c) >= 1e30)
+            bad = 1;
         free(c.pulleys);
         if (bad) {
             bd_path_free(&c.path);
@@ -297,8 +299,13 @@ int bd_layout_belt(const bd_model_def *def, const bd_layout_request *req, bd_lay
         l0 = l_fit;
         bd_diag quiet;
         bd_diag_init(&quiet);
-        bd_path_build(def, &out->path, &quiet);
+        int bad = bd_path_build(def, &out->path, &quiet);
         bd_diag_free(&quiet);
+        if (bad) {
+            snprintf(err, errlen, "could not lay the belt on its path (out of memory)");
+            free(g.W);
+            return 1;
+        }
     }
     out->l0 = l0;
     out->s = bd_xcalloc((size_t)n, sizeof *out->s);

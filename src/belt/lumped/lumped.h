@@ -57,7 +57,7 @@ static inline const bd_lumped_model *bd_lumped_model_of(const bd_sim *sim)
 int bd_lumped_build(bd_sim *sim, bd_diag *diag);
 void bd_lumped_free(bd_sim *sim);
 void bd_lumped_free_model(bd_model *model);
-void *bd_lumped_clone(const bd_sim *src);
+void bd_lumped_clone(bd_sim *dst, const bd_sim *src);
 double bd_lumped_stable_step(const bd_sim *sim, bd_time_step_limit *limit);
 double bd_lumped_support_inertia(const bd_sim *sim, double R, double J);
 
