@@ -162,7 +162,8 @@ int bd_sim_idler_set(const bd_sim *sim, int k, int *count, double *spacing_m);
 
 typedef struct bd_probe_state {
     double tension_N, speed_mps;   /* the belt at the probe now */
-    double x_m, y_m, s_m;          /* the probe's fixed point */
+    double belt_x_m, belt_y_m;     /* where the belt is there now */
+    double x_m, y_m, s_m;          /* the probe's fixed point on the path */
 } bd_probe_state;
 int bd_sim_probe_count(const bd_sim *sim);
 int bd_sim_probe(const bd_sim *sim, int i, bd_probe_state *out);

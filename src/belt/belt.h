@@ -25,6 +25,8 @@
 
 /* what a sensor reads at a point of the belt */
 typedef struct bd_belt_sample {
+    double x, y;      /* m, where the belt is at the point (its foot on the
+                         element over it) */
     double tension;   /* N, interpolated between element midpoints */
     double speed;     /* m/s along the direction of travel */
 } bd_belt_sample;
@@ -109,5 +111,8 @@ void bd_belt_point_place(const bd_sim *sim, bd_tracker *tr, double s);
 /* tension at a point: element tensions belong to element midpoints,
  * interpolated linearly between the two nearest */
 double bd_belt_point_tension(const bd_sim *sim, const bd_tracker *tr);
+/* where the belt is at a point: the nodes of the element over it,
+ * interpolated */
+void bd_belt_point_position(const bd_sim *sim, const bd_tracker *tr, double *x, double *y);
 
 #endif

@@ -149,3 +149,11 @@ int bd_tension_element(const bd_sim *sim, double value)
         e++;
     return e;
 }
+
+void bd_belt_point_position(const bd_sim *sim, const bd_tracker *tr, double *x, double *y)
+{
+    int e = tr->element, j = e + 1 == sim->model->n ? 0 : e + 1;
+    double g = tr->gamma;
+    *x = sim->x[e] + g * (sim->x[j] - sim->x[e]);
+    *y = sim->y[e] + g * (sim->y[j] - sim->y[e]);
+}

@@ -126,6 +126,8 @@ int bd_sim_probe(const bd_sim *sim, int i, bd_probe_state *out)
     sim->model->belt->sample(sim, tr, &b);
     out->tension_N = b.tension;
     out->speed_mps = b.speed;
+    out->belt_x_m = b.x;
+    out->belt_y_m = b.y;
     out->x_m = tr->p[0];
     out->y_m = tr->p[1];
     out->s_m = tr->s;

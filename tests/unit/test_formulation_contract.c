@@ -10,7 +10,9 @@
  * Checks and what their tolerances allow for:
  * - every output file is there, and summary.json has every key of cli.md
  *   (exact);
- * - the probes read the moving belt: their final speed within 5% of the
+ * - the probes read the moving belt, and where it is (within 5 cm of the
+ *   probe's point on the path: the sag between idlers is millimetres);
+ * - their speed: their final speed within 5% of the
  *   drive's 2 m/s (a sensor that is not wired reads 0). 5% allows for the
  *   lumped belt's speed ringing 3 s after the start: its carry probe reads
  *   1.94 m/s at 7 s and 1.973 m/s averaged over the last 2 s, while the
@@ -148,6 +150,11 @@ static void contract(const char *formulation, const char *element_length, const 
     CHECK_REL(v_carry, 2.0, 0.05);
     CHECK_REL(v_return, 2.0, 0.05);
     CHECK(num(s, "probes", "carry", "tension_max_N") > 0.0);
+    /* sample(s) gives where the belt is at the probe: on its path point
+     * within the sag between idlers (millimetres here; 5 cm allows for it) */
+    bd_probe_state ps;
+    CHECK(bd_sim_probe(sim, 0, &ps) == 0);
+    CHECK(hypot(ps.belt_x_m - ps.x_m, ps.belt_y_m - ps.y_m) < 0.05);
 
     /* the drive monitor */
     CHECK(r.drives == 1);

@@ -307,6 +307,7 @@ static void sample(const bd_sim *sim, const bd_tracker *tr, bd_belt_sample *out)
 {
     int e = tr->element, j = e + 1 == sim->model->n ? 0 : e + 1;
     double g = tr->gamma;
+    bd_belt_point_position(sim, tr, &out->x, &out->y);
     out->tension = bd_belt_point_tension(sim, tr);
     out->speed = (1.0 - g) * sim->vx[e] + g * sim->vx[j];
 }

@@ -58,6 +58,7 @@ double bd_tracker_speed(const bd_sim *sim, const bd_tracker *tr)
 
 void bd_lumped_sample(const bd_sim *sim, const bd_tracker *tr, bd_belt_sample *out)
 {
+    bd_belt_point_position(sim, tr, &out->x, &out->y);
     out->tension = bd_belt_point_tension(sim, tr);
     out->speed = bd_tracker_speed(sim, tr);
 }
