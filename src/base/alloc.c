@@ -38,3 +38,32 @@ void *bd_xdup(const void *src, size_t n, size_t size)
         memcpy(d, src, n * size);
     return d;
 }
+
+static double **slot(void *owner, size_t member)
+{
+    return (double **)(void *)((char *)owner + member);
+}
+
+void bd_doubles_alloc(void *owner, const size_t *members, int count, size_t n)
+{
+    for (int k = 0; k < count; k++)
+        *slot(owner, members[k]) = bd_xcalloc(n, sizeof(double));
+}
+
+void bd_doubles_dup(void *dst, const void *src, const size_t *members, int count, size_t n)
+{
+    for (int k = 0; k < count; k++)
+        *slot(dst, members[k]) = NULL;
+    for (int k = 0; k < count; k++) {
+        const double *from = *(double *const *)(const void *)((const char *)src + members[k]);
+        *slot(dst, members[k]) = bd_xdup(from, n, sizeof(double));
+    }
+}
+
+void bd_doubles_free(void *owner, const size_t *members, int count)
+{
+    for (int k = 0; k < count; k++) {
+        free(*slot(owner, members[k]));
+        *slot(owner, members[k]) = NULL;
+    }
+}

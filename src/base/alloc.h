@@ -36,4 +36,11 @@ void *bd_xcalloc(size_t n, size_t size);
 /* a copy of n items of src, as bd_xcalloc allocates */
 void *bd_xdup(const void *src, size_t n, size_t size);
 
+/* the arrays of doubles a struct owns, named once by their members'
+ * offsets (offsetof), allocated (zeroed), copied and freed together; n
+ * items each. A copy owns each array as soon as it is made. */
+void bd_doubles_alloc(void *owner, const size_t *members, int count, size_t n);
+void bd_doubles_dup(void *dst, const void *src, const size_t *members, int count, size_t n);
+void bd_doubles_free(void *owner, const size_t *members, int count);
+
 #endif

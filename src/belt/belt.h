@@ -83,6 +83,7 @@ typedef struct bd_belt_ops {
     void (*report_events)(bd_sim *sim);
 } bd_belt_ops;
 
+/* the formulation of f, or NULL for a value not in bd_formulation */
 const bd_belt_ops *bd_belt_ops_for(bd_formulation f);
 
 /* the formulations (one folder each) */
@@ -90,9 +91,6 @@ extern const bd_belt_ops bd_lumped_ops;   /* belt/lumped: seed 001 */
 extern const bd_belt_ops bd_axial_ops;    /* belt/axial: seed 004 */
 
 /* shared by the formulations' builds (belt/common.c) */
-/* the per-node and per-element arrays of system.h, zeroed (s_node0 is
- * each builder's own) */
-void bd_alloc_node_arrays(bd_sim *sim);
 /* probes and the feed point: points fixed on the path */
 void bd_setup_probes_and_feed(bd_sim *sim);
 /* idlers of set k that fit its span evenly (0 on a vertical span, with a

@@ -12,17 +12,7 @@ const bd_belt_ops *bd_belt_ops_for(bd_formulation f)
     case BD_FORMULATION_DISCRETE: return &bd_lumped_ops;
     case BD_FORMULATION_AXIAL: return &bd_axial_ops;
     }
-    return &bd_lumped_ops;
-}
-
-void bd_alloc_node_arrays(bd_sim *sim)
-{
-    size_t n = (size_t)sim->model->n;
-    double **d[] = {&sim->x,    &sim->y,        &sim->vx,      &sim->vy,         &sim->fx,
-                    &sim->fy,   &sim->fnx,      &sim->fny,     &sim->mass,       &sim->material,
-                    &sim->tension, &sim->dt_per_mass};
-    for (size_t i = 0; i < sizeof d / sizeof d[0]; i++)
-        *d[i] = bd_xcalloc(n, sizeof(double));
+    return NULL;
 }
 
 void bd_setup_probes_and_feed(bd_sim *sim)

@@ -1,8 +1,9 @@
 /* The weight of belt and material along the path: what the at-rest tension
- * distribution of every belt formulation rests on. At rest, with
- * frictionless support normal to the belt, the tension changes along the
- * belt only by that weight: dT/ds = m'(s)·g·dy/ds, so T(s) = T_c + W(s) with
- * W = ∫ m'·g dy (docs/physics.md §7, §11). */
+ * distribution of every belt formulation rests on. Seed 001 eq 2.9 sums a
+ * section's tension change from its resistances; at rest the main,
+ * secondary and special ones are zero and only the slope term of eq 2.11
+ * remains, g·(m'_G + m'_L)·sin δ·l per section, i.e. dT/ds = m'(s)·g·dy/ds
+ * and T(s) = T_c + W(s) with W = ∫ m'·g dy (docs/physics.md §7, §11). */
 #ifndef BD_REST_WEIGHT_H
 #define BD_REST_WEIGHT_H
 

@@ -1,10 +1,14 @@
-/* The system's warning list (system.h). */
+/* The system's node arrays and warning list (system.h). */
 #include "model/system.h"
+
+#include <stddef.h>
 
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "base/alloc.h"
 
 void bd_sim_warn(bd_sim *sim, const char *fmt, ...)
 {
@@ -25,4 +29,27 @@ void bd_sim_warn(bd_sim *sim, const char *fmt, ...)
         strcpy(sim->warnings[sim->warning_count], buf);
         sim->warning_count++;
     }
+}
+
+/* every [n] array of the state, named once */
+static const size_t NODE_ARRAYS[] = {
+    offsetof(bd_sim, x),    offsetof(bd_sim, y),        offsetof(bd_sim, vx),
+    offsetof(bd_sim, vy),   offsetof(bd_sim, fx),       offsetof(bd_sim, fy),
+    offsetof(bd_sim, fnx),  offsetof(bd_sim, fny),      offsetof(bd_sim, mass),
+    offsetof(bd_sim, material), offsetof(bd_sim, tension), offsetof(bd_sim, dt_per_mass)};
+#define NODE_ARRAY_COUNT ((int)(sizeof NODE_ARRAYS / sizeof NODE_ARRAYS[0]))
+
+void bd_node_arrays_alloc(bd_sim *sim)
+{
+    bd_doubles_alloc(sim, NODE_ARRAYS, NODE_ARRAY_COUNT, (size_t)sim->model->n);
+}
+
+void bd_node_arrays_dup(bd_sim *dst, const bd_sim *src)
+{
+    bd_doubles_dup(dst, src, NODE_ARRAYS, NODE_ARRAY_COUNT, (size_t)src->model->n);
+}
+
+void bd_node_arrays_free(bd_sim *sim)
+{
+    bd_doubles_free(sim, NODE_ARRAYS, NODE_ARRAY_COUNT);
 }

@@ -83,7 +83,6 @@ typedef struct bd_pulley_body {
     /* step, part torques: what the drive and bearing put on it */
     double drive_torque;    /* N·m last applied by the drive */
     double bearing_torque;  /* N·m bearing torque this step */
-    double torque_external; /* N·m drive + bearing torque this step */
     /* step, wrap coupling: what the pulley feels from the belt */
     double alpha;           /* rad/s² angular acceleration */
     double f_axis;          /* N belt force on the pulley along its axis */
@@ -234,6 +233,12 @@ static inline void bd_node_mass_changed(bd_sim *sim, int i)
 {
     sim->dt_per_mass[i] = sim->model->dt / sim->mass[i];
 }
+
+/* the state's node and element arrays [n], allocated (zeroed), copied
+ * and freed together (system.c) */
+void bd_node_arrays_alloc(bd_sim *sim);
+void bd_node_arrays_dup(bd_sim *dst, const bd_sim *src);
+void bd_node_arrays_free(bd_sim *sim);
 
 /* add a warning (repeats are dropped); never from inside the step loop */
 void bd_sim_warn(bd_sim *sim, const char *fmt, ...)

@@ -7,18 +7,17 @@
 
 #include "base/alloc.h"
 
-static int parts_of(const bd_pulley_def *pd)
+/* a drive (or transmission), and a takeup whose carriage moves */
+static int parts_of(const bd_pulley_model *pm)
 {
-    return (pd->has_drive ? 1 : 0) + (pd->has_takeup && pd->takeup.type != BD_TAKEUP_FIXED);
+    return (pm->def->has_drive ? 1 : 0) + pm->movable;
 }
 
-int bd_parts_create(bd_sim *sim, bd_diag *diag)
+void bd_parts_create(bd_sim *sim)
 {
-    (void)diag;
-    const bd_model_def *def = sim->model->def;
     int total = 0;
     for (int i = 0; i < sim->model->pulley_count; i++)
-        total += parts_of(&def->pulleys[i]);
+        total += parts_of(&sim->model->pulleys[i]);
     /* the table first, its count after: a jump out of memory in between
      * leaves an empty table to free */
     sim->parts = bd_xcalloc((size_t)total, sizeof *sim->parts);
@@ -28,7 +27,7 @@ int bd_parts_create(bd_sim *sim, bd_diag *diag)
         bd_pulley_model *pm = &sim->own->pulleys[i];
         const bd_pulley_def *pd = pm->def;
         pm->first_part = at;
-        pm->part_count = parts_of(pd);
+        pm->part_count = parts_of(pm);
         if (pd->has_drive) {
             bd_part *part = &sim->parts[at++];
             part->pulley = i;
@@ -41,7 +40,7 @@ int bd_parts_create(bd_sim *sim, bd_diag *diag)
                 part->u.drive.def = &pd->drive;
             }
         }
-        if (pd->has_takeup && pd->takeup.type != BD_TAKEUP_FIXED) {
+        if (pm->movable) {
             bd_part *part = &sim->parts[at++];
             part->type = BD_PART_TAKEUP;
             part->pulley = i;
@@ -49,7 +48,6 @@ int bd_parts_create(bd_sim *sim, bd_diag *diag)
             part->u.takeup.force_prev = bd_table_eval(&pd->takeup.force, 0.0);
         }
     }
-    return 0;
 }
 
 void bd_parts_free(bd_sim *sim)

@@ -53,7 +53,7 @@ typedef struct bd_part {
 } bd_part;
 
 /* part.c: the parts of the model, in pulley order (build) */
-int bd_parts_create(bd_sim *sim, bd_diag *diag);
+void bd_parts_create(bd_sim *sim);
 void bd_parts_free(bd_sim *sim);
 /* dst's parts as a deep copy of src's (a new run on the same model) */
 void bd_parts_clone(bd_sim *dst, const bd_sim *src);

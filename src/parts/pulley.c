@@ -39,16 +39,8 @@ void bd_pulley_model_init(bd_model *model, bd_pulley_model *pm, const bd_pulley_
 /* the drive's torque (through its transmission, if any) and the bearing's */
 double bd_pulley_external_torque(bd_sim *sim, bd_pulley_body *p)
 {
-    double T_drive = 0.0;
-    int any = 0;
-    for (int k = p->m->first_part; k < p->m->first_part + p->m->part_count; k++) {
-        bd_part *part = &sim->parts[k];
-        if (part->type == BD_PART_TAKEUP)
-            continue;
-        double T = bd_part_torque(sim, part);
-        T_drive = any ? T_drive + T : T;
-        any = 1;
-    }
+    bd_part *drive = bd_pulley_drive_part(sim, p);
+    double T_drive = drive ? bd_part_torque(sim, drive) : 0.0;
     p->drive_torque = T_drive;
     if (fabs(T_drive) > p->torque_max_abs)
         p->torque_max_abs = fabs(T_drive);

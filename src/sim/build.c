@@ -18,9 +18,7 @@
  * moves, reflected to each drive pulley, shared among the speed drives */
 static void prepare_drives(bd_sim *sim)
 {
-    double belt_mass = 0.0;
-    for (int i = 0; i < sim->model->n; i++)
-        belt_mass += sim->mass[i];
+    double belt_mass = bd_sim_belt_mass(sim);
     int speed_drives = 0;
     for (int i = 0; i < sim->model->pulley_count; i++)
         if (sim->pulleys[i].m->def->has_drive
@@ -89,6 +87,11 @@ static int create(const bd_model_def *def, bd_sim *volatile *out, bd_diag *diag)
     sim->model = sim->own;
     sim->own->def = def;
     sim->own->belt = bd_belt_ops_for(def->belt.formulation);
+    if (!sim->own->belt) {
+        bd_diag_error(diag, def->source, def->belt.mark, "belt.formulation: unknown (%d)",
+                      (int)def->belt.formulation);
+        return 1;
+    }
     sim->own->gravity = def->gravity;
     sim->own->EA = def->belt.axial_stiffness;
     sim->own->EI = def->belt.bending_stiffness;
@@ -99,16 +102,17 @@ static int create(const bd_model_def *def, bd_sim *volatile *out, bd_diag *diag)
     for (int i = 0; i < def->pulley_count; i++) {
         bd_pulley_model_init(sim->own, &sim->own->pulleys[i], &def->pulleys[i]);
         sim->pulleys[i].m = &sim->own->pulleys[i];
-        sim->pulleys[i].cx = def->pulleys[i].x;
-        sim->pulleys[i].cy = def->pulleys[i].y;
+        sim->pulleys[i].cx = sim->own->pulleys[i].x0;
+        sim->pulleys[i].cy = sim->own->pulleys[i].y0;
     }
     if (sim->model->belt->build(sim, diag))
         return 1;
     for (int i = 0; i < sim->model->pulley_count; i++)
         if (sim->pulleys[i].m->def->has_drive)
             bd_monitor_init(sim, &sim->pulleys[i]);
-    if (bd_time_step_choose(sim, diag) || bd_parts_create(sim, diag))
+    if (bd_time_step_choose(sim, diag))
         return 1;
+    bd_parts_create(sim);
     prepare_drives(sim);
     for (int i = 0; i < sim->model->n; i++)
         bd_node_mass_changed(sim, i);
@@ -128,11 +132,7 @@ static void free_state(bd_sim *sim)
     if (sim->model && sim->model->belt)
         sim->model->belt->free(sim);
     bd_parts_free(sim);
-    double *arrays[] = {sim->x,    sim->y,        sim->vx,      sim->vy,
-                        sim->fx,   sim->fy,       sim->fnx,     sim->fny,
-                        sim->mass, sim->material, sim->tension, sim->dt_per_mass};
-    for (size_t i = 0; i < sizeof arrays / sizeof arrays[0]; i++)
-        free(arrays[i]);
+    bd_node_arrays_free(sim);
     free(sim->pulleys);
     free(sim->idlers);
     free(sim->probes);
@@ -189,12 +189,9 @@ int bd_model_compile(const bd_model_def *def, bd_model **out, bd_diag *diag)
 static void clone_state(bd_sim *volatile *out, const bd_sim *src)
 {
     const bd_model *m = src->model;
-    size_t n = (size_t)m->n;
     bd_sim *sim = bd_xcalloc(1, sizeof *sim);
     *sim = *src;
     sim->own = NULL;
-    sim->x = sim->y = sim->vx = sim->vy = sim->fx = sim->fy = NULL;
-    sim->fnx = sim->fny = sim->mass = sim->material = sim->tension = sim->dt_per_mass = NULL;
     sim->pulleys = NULL;
     sim->idlers = NULL;
     sim->probes = NULL;
@@ -204,14 +201,7 @@ static void clone_state(bd_sim *volatile *out, const bd_sim *src)
     sim->warnings = NULL;
     sim->warning_count = 0;
     *out = sim;
-    double **dst[] = {&sim->x,    &sim->y,        &sim->vx,      &sim->vy,
-                      &sim->fx,   &sim->fy,       &sim->fnx,     &sim->fny,
-                      &sim->mass, &sim->material, &sim->tension, &sim->dt_per_mass};
-    const double *from[] = {src->x,    src->y,        src->vx,      src->vy,
-                            src->fx,   src->fy,       src->fnx,     src->fny,
-                            src->mass, src->material, src->tension, src->dt_per_mass};
-    for (size_t i = 0; i < sizeof dst / sizeof dst[0]; i++)
-        *dst[i] = bd_xdup(from[i], n, sizeof(double));
+    bd_node_arrays_dup(sim, src);   /* its first step: no longer the source's */
     sim->pulleys = bd_xdup(src->pulleys, (size_t)m->pulley_count, sizeof *sim->pulleys);
     sim->idlers = bd_xdup(src->idlers, (size_t)m->idler_count, sizeof *sim->idlers);
     sim->probes = bd_xdup(src->probes, (size_t)m->probe_count, sizeof *sim->probes);

@@ -15,7 +15,6 @@ void bd_sim_start_at_rest(bd_sim *sim);
 double bd_energy_potential(const bd_sim *sim);
 void bd_energy_update_balance(bd_sim *sim);
 
-
 /* the tension field, for the writers: element e's midpoint path
  * coordinate and speed (the formulation's) */
 double bd_element_s(const bd_sim *sim, int e);

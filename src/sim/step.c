@@ -40,8 +40,6 @@ static int check_elements(bd_sim *sim)
         int e = nan_at >= 0 ? nan_at
               : hi > DIVERGED_STRAIN * sim->model->EA ? bd_tension_element(sim, hi)
                                                       : bd_tension_element(sim, lo);
-        if (e < 0)
-            e = 0;
         double strain = belt->element_strain(sim, e);
         snprintf(sim->fail_msg, sizeof sim->fail_msg,
                  "the simulation diverged at t = %.6f s (step %ld): %s belt element %d at "

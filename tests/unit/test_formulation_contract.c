@@ -131,9 +131,8 @@ static void contract(const char *formulation, const char *element_length, const 
     bd_sim_result(sim, &r);
 
     /* every output */
-    const char *files[] = {"summary.json", "history.csv", "tension.csv", "envelope.csv"};
-    for (int i = 0; i < 4; i++)
-        CHECK(file_present(dir, files[i]));
+    for (int i = 0; i < BD_TEST_RUN_FILE_COUNT; i++)
+        CHECK(file_present(dir, bd_test_run_files[i]));
     char path[1024];
     snprintf(path, sizeof path, "%s/summary.json", dir);
     cJSON *s = read_json(path);
@@ -194,13 +193,7 @@ int main(void)
         char dir[512];
         snprintf(dir, sizeof dir, "%s/%s", root, forms[k][0]);
         contract(forms[k][0], forms[k][1], dir);
-        const char *files[] = {"summary.json", "history.csv", "tension.csv", "envelope.csv"};
-        for (int i = 0; i < 4; i++) {
-            char p[1024];
-            snprintf(p, sizeof p, "%s/%s", dir, files[i]);
-            remove(p);
-        }
-        remove(dir);
+        bd_test_remove_run(dir);
     }
     remove(root);
     return bd_test_finish("test_formulation_contract");

@@ -34,8 +34,6 @@ static const struct {
     {"cement_plant", 0.3},   {"overland_axial", 8.0},  {"vbelt_dol_axial", 6.0},
 };
 #define EXAMPLE_COUNT ((int)(sizeof EXAMPLES / sizeof EXAMPLES[0]))
-static const char *FILES[] = {"summary.json", "history.csv", "tension.csv", "envelope.csv"};
-#define FILE_COUNT ((int)(sizeof FILES / sizeof FILES[0]))
 
 
 /* run one example into dir; 0 ok */
@@ -106,22 +104,22 @@ int main(int argc, char **argv)
         snprintf(dir, sizeof dir, "%s/%s", root, EXAMPLES[k].name);
         int rc = run_example(EXAMPLES[k].name, EXAMPLES[k].duration, dir);
         CHECK(rc == 0);
-        for (int j = 0; j < FILE_COUNT; j++) {
+        for (int j = 0; j < BD_TEST_RUN_FILE_COUNT; j++) {
             char path[1024];
-            snprintf(path, sizeof path, "%s/%s", dir, FILES[j]);
+            snprintf(path, sizeof path, "%s/%s", dir, bd_test_run_files[j]);
             uint64_t h = bd_test_hash_file(path);
             CHECK(h != 0);
             if (out) {
-                fprintf(out, "%s %s %016llx\n", EXAMPLES[k].name, FILES[j],
+                fprintf(out, "%s %s %016llx\n", EXAMPLES[k].name, bd_test_run_files[j],
                         (unsigned long long)h);
                 continue;
             }
-            uint64_t want = stored_hash(EXAMPLES[k].name, FILES[j]);
+            uint64_t want = stored_hash(EXAMPLES[k].name, bd_test_run_files[j]);
             bd_test_checks++;
             if (h != want) {
                 bd_test_failures++;
                 fprintf(stderr, "%s/%s: hash %016llx, stored %016llx (outputs in %s)\n",
-                        EXAMPLES[k].name, FILES[j], (unsigned long long)h,
+                        EXAMPLES[k].name, bd_test_run_files[j], (unsigned long long)h,
                         (unsigned long long)want, dir);
             } else {
                 remove(path);

@@ -23,21 +23,18 @@
 #include "beltdyn/sim.h"
 #include "testlib.h"
 
-
 /* all four outputs of a run in dir, hashed together */
 static uint64_t hash_run(const char *dir)
 {
-    const char *files[] = {"summary.json", "history.csv", "tension.csv", "envelope.csv"};
     uint64_t h = 0;
-    for (int i = 0; i < 4; i++) {
+    for (int i = 0; i < BD_TEST_RUN_FILE_COUNT; i++) {
         char p[1024];
-        snprintf(p, sizeof p, "%s/%s", dir, files[i]);
+        snprintf(p, sizeof p, "%s/%s", dir, bd_test_run_files[i]);
         uint64_t fh = bd_test_hash_file(p);
         CHECK(fh != 0);
         h = h * 31 + fh;
-        remove(p);
     }
-    remove(dir);
+    bd_test_remove_run(dir);
     return h;
 }
 

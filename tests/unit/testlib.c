@@ -61,3 +61,16 @@ unsigned long long bd_test_hash_file(const char *path)
     fclose(f);
     return h;
 }
+
+const char *const bd_test_run_files[BD_TEST_RUN_FILE_COUNT] = {"summary.json", "history.csv",
+                                                               "tension.csv", "envelope.csv"};
+
+void bd_test_remove_run(const char *dir)
+{
+    for (int i = 0; i < BD_TEST_RUN_FILE_COUNT; i++) {
+        char p[1024];
+        snprintf(p, sizeof p, "%s/%s", dir, bd_test_run_files[i]);
+        remove(p);
+    }
+    remove(dir);
+}

@@ -26,6 +26,11 @@ int bd_test_finish(const char *name);
 /* 64-bit FNV-1a of a file's bytes, leaving out any line that holds
  * "wall_time_s" (the one value two runs may differ in); 0 when unreadable */
 unsigned long long bd_test_hash_file(const char *path);
+/* the files a run writes (cli.md `run` outputs) */
+#define BD_TEST_RUN_FILE_COUNT 4
+extern const char *const bd_test_run_files[BD_TEST_RUN_FILE_COUNT];
+/* remove a run's directory with its files */
+void bd_test_remove_run(const char *dir);
 #endif
 
 /* build a simulation from model text; aborts the test on failure */

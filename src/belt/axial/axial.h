@@ -8,10 +8,8 @@
 
 #include "belt/belt.h"
 #include "laws/belt_pulley_law.h"
+#include "laws/rolling.h"
 
-/* m/s: the axial belt's rolling resistance fades to zero below this speed
- * (as the discrete idlers' does, belt/lumped/idler_contact.c) */
-#define BD_AXIAL_ROLLING_SPEED 0.01
 
 /* what the axial belt keeps of each pulley: compiled (in the model) */
 typedef struct bd_axial_pulley {
@@ -22,7 +20,6 @@ typedef struct bd_axial_pulley {
 
 /* ... and as it runs (in the state) */
 typedef struct bd_axial_pulley_state {
-    double belt_force;      /* step: N, its friction force on the belt */
     int slack_warned;       /* stats: a belt end lost tension (recorded once) */
     int slack_arriving;     /* it was the arriving end */
     double slack_t;         /* s, when */

@@ -24,6 +24,7 @@
 #include "model/rest_weight.h"
 
 #include <math.h>
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -138,18 +139,25 @@ static int place_stations(bd_sim *sim, double target, int **pulley_node_out)
     return n;
 }
 
+/* the axial state's and compiled model's arrays of doubles [n] */
+static const size_t STATE_DOUBLES[] = {offsetof(bd_axial, u),       offsetof(bd_axial, gap),
+                                       offsetof(bd_axial, gap_rate), offsetof(bd_axial, td),
+                                       offsetof(bd_axial, f_const), offsetof(bd_axial, resist)};
+static const size_t MODEL_DOUBLES[] = {offsetof(bd_axial_model, k), offsetof(bd_axial_model, c),
+                                       offsetof(bd_axial_model, l0),
+                                       offsetof(bd_axial_model, s_len)};
+#define COUNT(a) ((int)(sizeof a / sizeof a[0]))
+
 static void alloc_arrays(bd_sim *sim)
 {
     size_t n = (size_t)sim->model->n;
-    bd_alloc_node_arrays(sim);
+    bd_node_arrays_alloc(sim);
     bd_axial *ax = bd_axial_of(sim);
     bd_axial_model *am = bd_axial_model_build(sim);
     ax->pulleys = bd_xcalloc((size_t)sim->model->pulley_count, sizeof *ax->pulleys);
     am->pulleys = bd_xcalloc((size_t)sim->model->pulley_count, sizeof *am->pulleys);
-    double **d[] = {&ax->u,  &ax->gap, &ax->gap_rate, &ax->td,    &ax->f_const, &ax->resist,
-                    &am->k, &am->c,   &am->l0,       &am->s_len};
-    for (size_t i = 0; i < sizeof d / sizeof d[0]; i++)
-        *d[i] = bd_xcalloc(n, sizeof(double));
+    bd_doubles_alloc(ax, STATE_DOUBLES, COUNT(STATE_DOUBLES), n);
+    bd_doubles_alloc(am, MODEL_DOUBLES, COUNT(MODEL_DOUBLES), n);
 }
 
 /* weight of belt and material along the path from a to b, ∫ m'·g dy
@@ -462,7 +470,7 @@ double bd_axial_stable_step(const bd_sim *sim, bd_time_step_limit *limit)
         int b = i == 0 ? n - 1 : i - 1;
         double K = 2.0 * (am->k[b] + am->k[i]);
         /* the rolling resistance's slope with the most load the node can carry */
-        double C = 2.0 * (am->c[b] + am->c[i]) + node_resist(sim, i, 1) / BD_AXIAL_ROLLING_SPEED;
+        double C = 2.0 * (am->c[b] + am->c[i]) + node_resist(sim, i, 1) / BD_ROLLING_SPEED;
         for (int p = 0; p < sim->model->pulley_count; p++) {
             const bd_axial_pulley *ap = &am->pulleys[p];
             if (!sim->pulleys[p].m->movable)
@@ -497,12 +505,7 @@ void bd_axial_free(bd_sim *sim)
     bd_axial *ax = bd_axial_of(sim);
     if (!ax)
         return;
-    free(ax->u);
-    free(ax->gap);
-    free(ax->gap_rate);
-    free(ax->td);
-    free(ax->f_const);
-    free(ax->resist);
+    bd_doubles_free(ax, STATE_DOUBLES, COUNT(STATE_DOUBLES));
     free(ax->pulleys);
     free(ax);
     sim->belt_data = NULL;
@@ -513,10 +516,7 @@ void bd_axial_free_model(bd_model *model)
     bd_axial_model *am = model->belt_model;
     if (!am)
         return;
-    free(am->k);
-    free(am->c);
-    free(am->l0);
-    free(am->s_len);
+    bd_doubles_free(am, MODEL_DOUBLES, COUNT(MODEL_DOUBLES));
     free(am->pulleys);
     free(am);
     model->belt_model = NULL;
@@ -537,12 +537,7 @@ void bd_axial_clone(bd_sim *dst, const bd_sim *src)
     ax->head_free = S->head_free;
     ax->e_tail = S->e_tail;
     ax->e_head = S->e_head;
-    ax->u = bd_xdup(S->u, n, sizeof(double));
-    ax->gap = bd_xdup(S->gap, n, sizeof(double));
-    ax->gap_rate = bd_xdup(S->gap_rate, n, sizeof(double));
-    ax->td = bd_xdup(S->td, n, sizeof(double));
-    ax->f_const = bd_xdup(S->f_const, n, sizeof(double));
-    ax->resist = bd_xdup(S->resist, n, sizeof(double));
+    bd_doubles_dup(ax, S, STATE_DOUBLES, COUNT(STATE_DOUBLES), n);
     ax->pulleys = bd_xdup(S->pulleys, np, sizeof *ax->pulleys);
 }
 

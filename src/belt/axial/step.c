@@ -17,7 +17,6 @@
 
 #include <math.h>
 
-
 /* elements 0 .. count−1 of the node arrays u, v (element e from node e
  * to e + 1): tension and its dashpot part; no node written */
 static void elements(int count, const double *restrict u, const double *restrict v,
@@ -49,7 +48,7 @@ static void element_pass(bd_sim *sim)
 /* rolling resistance on node i at speed v, smoothed through zero */
 static inline double rolling(double resist, double v)
 {
-    double sat = v / BD_AXIAL_ROLLING_SPEED;
+    double sat = v / BD_ROLLING_SPEED;
     sat = sat > 1.0 ? 1.0 : (sat < -1.0 ? -1.0 : sat);
     return -resist * sat;
 }
@@ -100,9 +99,7 @@ void bd_axial_wrap(bd_sim *sim, bd_pulley_body *p, double Q)
     }
     sim->fx[i] += F;
     sim->fnx[i] += F;
-    as->belt_force = F;
     p->torque_friction = -R * F;
-    p->torque_external = Q;
     p->alpha = (Q - R * F) / p->m->inertia;
     /* recorded here, said after the run (bd_axial_report_events) */
     if ((T_in <= 0.0 || T_out <= 0.0) && !as->slack_warned && !sim->friction_off) {

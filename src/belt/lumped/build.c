@@ -6,6 +6,7 @@
 #include "belt/lumped/layout.h"
 
 #include <math.h>
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -23,6 +24,17 @@ static double default_element_length(const bd_model_def *def)
             r = def->pulleys[i].radius;
     return 2.0 * r * sin(BD_PI / 12.0);
 }
+
+/* the lumped state's arrays of doubles: [n] of the belt, [win_max] of a
+ * shell contact (ints apart) */
+static const size_t BELT_DOUBLES[] = {offsetof(bd_lumped, ux), offsetof(bd_lumped, uy),
+                                      offsetof(bd_lumped, len), offsetof(bd_lumped, td),
+                                      offsetof(bd_lumped, pw), offsetof(bd_lumped, ek)};
+static const size_t WRAP_DOUBLES[] = {offsetof(bd_wrap_contact, c_normal),
+                                      offsetof(bd_wrap_contact, c_tx),
+                                      offsetof(bd_wrap_contact, c_ty),
+                                      offsetof(bd_wrap_contact, c_f)};
+#define COUNT(a) ((int)(sizeof a / sizeof a[0]))
 
 static void setup_pulleys(bd_sim *sim, const bd_layout *lay)
 {
@@ -44,11 +56,8 @@ static void setup_pulleys(bd_sim *sim, const bd_layout *lay)
         /* contact: stiff and linearly implicit (pulley_contact.c) */
         double wrap = bd_path_wrap_angle(&sim->model->path, i);
         W->win_max = (int)ceil((wrap + 0.5) * pd->radius / sim->model->l0) + 16;
+        bd_doubles_alloc(W, WRAP_DOUBLES, COUNT(WRAP_DOUBLES), (size_t)W->win_max);
         W->c_node = bd_xcalloc((size_t)W->win_max, sizeof *W->c_node);
-        W->c_normal = bd_xcalloc((size_t)W->win_max, sizeof *W->c_normal);
-        W->c_tx = bd_xcalloc((size_t)W->win_max, sizeof *W->c_tx);
-        W->c_ty = bd_xcalloc((size_t)W->win_max, sizeof *W->c_ty);
-        W->c_f = bd_xcalloc((size_t)W->win_max, sizeof *W->c_f);
         W->c_slip = bd_xcalloc((size_t)W->win_max, sizeof *W->c_slip);
         /* window: nodes lying on its arc */
         const bd_path_segment *arc = bd_path_arc(&sim->model->path, i);
@@ -276,14 +285,9 @@ int bd_lumped_build(bd_sim *sim, bd_diag *diag)
     /* contacts: stiff and linearly implicit (pulley_contact.c, idler_contact.c) */
     LM->k_contact = 100.0 * LM->k_axial;
 
-    bd_alloc_node_arrays(sim);
+    bd_node_arrays_alloc(sim);
     size_t n = (size_t)sim->model->n;
-    L->ux = bd_xcalloc(n, sizeof *L->ux);
-    L->uy = bd_xcalloc(n, sizeof *L->uy);
-    L->len = bd_xcalloc(n, sizeof *L->len);
-    L->td = bd_xcalloc(n, sizeof *L->td);
-    L->pw = bd_xcalloc(n, sizeof *L->pw);
-    L->ek = bd_xcalloc(n, sizeof *L->ek);
+    bd_doubles_alloc(L, BELT_DOUBLES, COUNT(BELT_DOUBLES), n);
     L->seg_hint = bd_xcalloc(n, sizeof *L->seg_hint);
     sim->own->s_node0 = bd_xcalloc(n, sizeof *sim->own->s_node0);
     for (int i = 0; i < sim->model->n; i++)
@@ -304,20 +308,12 @@ void bd_lumped_free(bd_sim *sim)
     bd_lumped *L = bd_lumped_of(sim);
     if (!L)
         return;
-    free(L->ux);
-    free(L->uy);
-    free(L->len);
-    free(L->td);
-    free(L->pw);
-    free(L->ek);
+    bd_doubles_free(L, BELT_DOUBLES, COUNT(BELT_DOUBLES));
     free(L->seg_hint);
     for (int i = 0; L->wraps && i < sim->model->pulley_count; i++) {
         bd_wrap_contact *W = &L->wraps[i];
+        bd_doubles_free(W, WRAP_DOUBLES, COUNT(WRAP_DOUBLES));
         free(W->c_node);
-        free(W->c_normal);
-        free(W->c_tx);
-        free(W->c_ty);
-        free(W->c_f);
         free(W->c_slip);
     }
     free(L->wraps);
@@ -331,7 +327,6 @@ void bd_lumped_free_model(bd_model *model)
     model->belt_model = NULL;
 }
 
-
 /* dst's state as a copy of src's, for a new run on the same model; every
  * pointer is dst's own from the moment it is set, so that a jump out of
  * memory half way leaves nothing shared to free */
@@ -341,12 +336,7 @@ void bd_lumped_clone(bd_sim *dst, const bd_sim *src)
     size_t n = (size_t)src->model->n;
     bd_lumped *L = bd_xcalloc(1, sizeof *L);
     dst->belt_data = L;
-    L->ux = bd_xdup(S->ux, n, sizeof *L->ux);
-    L->uy = bd_xdup(S->uy, n, sizeof *L->uy);
-    L->len = bd_xdup(S->len, n, sizeof *L->len);
-    L->td = bd_xdup(S->td, n, sizeof *L->td);
-    L->pw = bd_xdup(S->pw, n, sizeof *L->pw);
-    L->ek = bd_xdup(S->ek, n, sizeof *L->ek);
+    bd_doubles_dup(L, S, BELT_DOUBLES, COUNT(BELT_DOUBLES), n);
     L->seg_hint = bd_xdup(S->seg_hint, n, sizeof *L->seg_hint);
     size_t np = (size_t)src->model->pulley_count;
     L->wraps = bd_xcalloc(np, sizeof *L->wraps);
@@ -354,16 +344,13 @@ void bd_lumped_clone(bd_sim *dst, const bd_sim *src)
         const bd_wrap_contact *from = &S->wraps[i];
         bd_wrap_contact *W = &L->wraps[i];
         size_t w = (size_t)from->win_max;
-        W->c_node = bd_xdup(from->c_node, w, sizeof *W->c_node);
-        W->c_normal = bd_xdup(from->c_normal, w, sizeof *W->c_normal);
-        W->c_tx = bd_xdup(from->c_tx, w, sizeof *W->c_tx);
-        W->c_ty = bd_xdup(from->c_ty, w, sizeof *W->c_ty);
-        W->c_f = bd_xdup(from->c_f, w, sizeof *W->c_f);
-        W->c_slip = bd_xdup(from->c_slip, w, sizeof *W->c_slip);
         W->win_first = from->win_first;
         W->win_count = from->win_count;
         W->win_max = from->win_max;
         W->contact_count = from->contact_count;
+        bd_doubles_dup(W, from, WRAP_DOUBLES, COUNT(WRAP_DOUBLES), w);
+        W->c_node = bd_xdup(from->c_node, w, sizeof *W->c_node);
+        W->c_slip = bd_xdup(from->c_slip, w, sizeof *W->c_slip);
     }
 }
 

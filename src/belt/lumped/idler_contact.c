@@ -22,7 +22,7 @@
  *
  * Rolling (indentation) resistance: a force rr·f_n on the belt against its
  * motion over the idler (model-format.md `rolling_resistance`), smoothed
- * below ROLLING_SPEED so a belt at rest carries none.
+ * below BD_ROLLING_SPEED (laws/rolling.h) so a belt at rest carries none.
  *
  * Friction: t̂ along the belt in the direction of travel, slip speed
  * v_r = t̂·((1−γ)v_e + γv_j) − ω·R (eq 4.107). The stick force f (−f·t̂ on
@@ -35,9 +35,8 @@
 
 #include <math.h>
 
-/* m/s: below this belt speed over the idler the rolling resistance fades
- * linearly to zero (a belt at rest is not pushed) */
-#define ROLLING_SPEED 0.01
+#include "laws/rolling.h"
+
 /* predictive contact gap, as a fraction of the element length */
 #define IDLER_CONTACT_GAP 0.02
 
@@ -77,7 +76,7 @@ static void idler_contact(bd_sim *sim, bd_idler *id)
         ty = -ty;
     }
     double vt = tx * vcx + ty * vcy;
-    double sat = vt * (1.0 / ROLLING_SPEED);
+    double sat = vt * (1.0 / BD_ROLLING_SPEED);
     if (sat > 1.0)
         sat = 1.0;
     if (sat < -1.0)

@@ -168,7 +168,6 @@ void bd_lumped_wrap(bd_sim *sim, bd_pulley_body *p, double external_torque)
 {
     normal_forces(sim, p);
     const bd_wrap_contact *W = wrap_of(sim, p);
-    p->torque_external = external_torque;
     p->torque_friction = 0.0;
     if (sim->friction_off || W->contact_count == 0) {
         p->alpha = external_torque / p->m->inertia;
