@@ -113,6 +113,9 @@ const char *bd_sim_formulation(const bd_sim *sim);   /* "discrete", "axial" */
 double bd_sim_belt_length(const bd_sim *sim);    /* m, the loop's path at t = 0 */
 /* m, length of the span leaving pulley i */
 double bd_sim_span_length(const bd_sim *sim, int pulley);
+/* where the span leaving pulley `pulley` starts and ends on the path at
+ * t = 0 (the tangent points), m; 0 ok, -1 out of range */
+int bd_sim_span_ends(const bd_sim *sim, int pulley, double start[2], double end[2]);
 
 typedef struct bd_node_state {
     double x_m, y_m;           /* position */

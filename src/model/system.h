@@ -81,7 +81,13 @@ typedef struct bd_pulley_model {
 typedef struct bd_pulley_body {
     const bd_pulley_model *m;   /* its compiled model (model->pulleys[i]) */
     /* step, part torques: what the drive and bearing put on it */
-    double drive_torque;    /* N·m last applied by the drive */
+    double drive_torque;    /* N·m the drive applies: at the present speed
+                               (part torques), at the end-of-step speed once
+                               the pulley turned (parts advance) */
+    double torque_damping;  /* N·m·s, −dT/dω of the drive, taken implicitly:
+                               the wrap coupling solves the pulley with
+                               bd_pulley_solve_inertia, and the drive applies
+                               drive_torque − torque_damping·Δt·α */
     double bearing_torque;  /* N·m bearing torque this step */
     /* step, wrap coupling: what the pulley feels from the belt */
     double alpha;           /* rad/s² angular acceleration */
@@ -227,6 +233,13 @@ struct bd_sim {
     char **warnings;       /* [warning_count] said after the run */
     int warning_count;
 };
+
+/* the inertia the wrap coupling solves pulley p with: its own and the
+ * drive's implicit damping over one step (drive.c) */
+static inline double bd_pulley_solve_inertia(const bd_sim *sim, const bd_pulley_body *p)
+{
+    return p->m->inertia + p->torque_damping * sim->model->dt;
+}
 
 /* node i's mass changed: keep what is derived from it */
 static inline void bd_node_mass_changed(bd_sim *sim, int i)

@@ -6,6 +6,21 @@
  * tuned for J, the inertia of everything the drives move (belt, material,
  * pulleys, idlers reflected to this pulley, shared among the speed drives);
  * the integral stops winding up while the torque is at max_torque.
+ * Its bandwidth ω_c is 2 Hz, lowered so that the proportional gain
+ * K_p = 2ω_c·J does not exceed the wave impedance the belt presents at
+ * the pulley, R²·(Z_in + Z_out) with Z = √(EA·m′): above that the loop is
+ * stiffer than the belt and turns every speed ripple of the mesh (node
+ * passage over the pulley, idler impacts) into torque, where a drive tuned
+ * to the belt's impedance absorbs a wave arriving at the pulley instead of
+ * reflecting it (issue 10 item 3: K_p 16× the impedance made 11 kN swings
+ * out of 0.04 rad/s of chordal ripple).
+ * The proportional term is implicit: the torque applied is
+ *   T = T(ω) − K_p·Δt·α,
+ * the speed at the end of the step in place of the speed at its start (the
+ * wrap coupling solves the pulley with I + K_p·Δt, see bd_pulley_body
+ * torque_damping). Explicit, a loop tuned for a whole conveyor acting on the
+ * bare pulley when the belt slips had a gain Δt·K_p/I of ~50 (stable below
+ * 2) and ran to NaN; implicit it is stable for any gain.
  * torque: the table, linear between points.
  * motor: an induction motor direct on line by the Kloss formula (the
  * classical approximation of the induction machine's torque–speed curve
@@ -14,7 +29,9 @@
  *   T_m = 2·T_b·s·s_b/(s² + s_b²),  s = 1 − ω_m/ω_sync,
  * T_b = breakdown_torque_ratio·T_rated, T_rated = P/ω_rated, and s_b from
  * the rated point: s_b = s_r·(k + √(k² − 1)), k = T_b/T_rated; at the pulley
- * T = gear_ratio·T_m with ω_m = gear_ratio·ω.
+ * T = gear_ratio·T_m with ω_m = gear_ratio·ω. Where the curve falls with
+ * speed (the stable side, |s| < s_b) its slope −dT/dω is taken implicitly
+ * like the speed loop's gain: near synchronous speed it is steep.
  * Stops at stop.at: coast (no torque), ramp (the speed reference falls
  * linearly to zero over stop.time), brake (brake_torque against the motion,
  * holding at standstill). Every torque is clipped to ±max_torque. */
@@ -39,17 +56,36 @@ static double motor_torque(const bd_drive *p, double omega_pulley)
     return 2.0 * p->motor_breakdown * s * sb / (s * s + sb * sb);
 }
 
+/* dT_m/dω_m of the Kloss curve at the motor shaft, N·m·s */
+static double motor_slope(const bd_drive *p, double omega_pulley)
+{
+    const bd_motor_def *m = &p->def->motor;
+    double w_sync = m->synchronous_speed_rpm * 2.0 * BD_PI / 60.0;
+    double s = 1.0 - omega_pulley * m->gear_ratio / w_sync;
+    double sb = p->motor_slip_b, q = s * s + sb * sb;
+    /* dT/ds = 2·T_b·s_b·(s_b² − s²)/(s² + s_b²)², ds/dω_m = −1/ω_sync */
+    return -2.0 * p->motor_breakdown * sb * (sb * sb - s * s) / (q * q) / w_sync;
+}
+
 void bd_drive_prepare(bd_sim *sim, bd_drive *dr, const bd_pulley_body *p,
                       double reflected_inertia)
 {
     const bd_drive_def *d = dr->def;
     dr->ctrl_inertia = reflected_inertia;
-    /* 2 Hz speed loop, slowed if the explicit step could not carry it: the
-     * proportional gain acts like a damper 2ω_c·J on the pulley and the belt
-     * sticking to it, stable for Δt·2ω_c·J/I_local < 2; keep it below 0.5 */
-    double I_local = p->m->inertia + sim->model->belt_mpl * BD_PI * p->m->radius * p->m->radius * p->m->radius;
+    /* 2 Hz, or the bandwidth at which K_p = 2ω_c·J equals the belt's
+     * impedance at the pulley, R²·2·√(EA·m′) (the bare belt: the load only
+     * raises it) */
+    double R = p->m->radius;
+    double Z = sqrt(sim->model->EA * sim->model->belt_mpl);
     double w = 2.0 * BD_PI * 2.0;
-    double w_max = 0.25 * I_local / (sim->model->dt * reflected_inertia);
+    double w_impedance = R * R * 2.0 * Z / (2.0 * reflected_inertia);
+    if (w > w_impedance)
+        w = w_impedance;
+    /* the integral term stays explicit: a spring ω_c²·J on the pulley and
+     * the belt wrapped on it, stable for Δt·ω_c·√(J/I_local) < 2; keep a
+     * tenth of that */
+    double I_local = p->m->inertia + sim->model->belt_mpl * BD_PI * R * R * R;
+    double w_max = 0.2 * sqrt(I_local / reflected_inertia) / sim->model->dt;
     dr->ctrl_bandwidth = w < w_max ? w : w_max;
     if (d->control == BD_CONTROL_MOTOR) {
         const bd_motor_def *m = &d->motor;
@@ -62,10 +98,14 @@ void bd_drive_prepare(bd_sim *sim, bd_drive *dr, const bd_pulley_body *p,
     }
 }
 
-double bd_drive_torque(const bd_sim *sim, bd_drive *dr, const bd_pulley_body *p, double omega)
+double bd_drive_torque(const bd_sim *sim, bd_drive *dr, const bd_pulley_body *p, double omega,
+                       double *slope)
 {
     const bd_drive_def *d = dr->def;
     double t = sim->t, T = 0.0;
+    double K = 0.0;   /* −dT/dω where the torque is not clipped */
+    if (slope)
+        *slope = 0.0;
     int stopped = d->stop_mode != BD_STOP_NONE && t >= d->stop_at;
     if (stopped && d->stop_mode == BD_STOP_COAST)
         return 0.0;
@@ -86,16 +126,26 @@ double bd_drive_torque(const bd_sim *sim, bd_drive *dr, const bd_pulley_body *p,
         double T_unclipped = J * (a_ref + 2.0 * wc * err + wc * wc * dr->integral);
         T = clip(T_unclipped, d->max_torque);
         /* integrate only while not saturated (anti-windup) */
-        if (T == T_unclipped)
+        if (T == T_unclipped) {
             dr->integral += err * sim->model->dt;
+            if (slope)
+                *slope = 2.0 * wc * J;
+        }
         return T;
     }
     case BD_CONTROL_TORQUE:
         T = bd_table_eval(&d->torque, t);
         break;
     case BD_CONTROL_MOTOR:
-        T = t >= d->motor.start_time ? motor_torque(dr, omega) * d->motor.gear_ratio : 0.0;
+        if (t >= d->motor.start_time) {
+            double G = d->motor.gear_ratio;
+            T = motor_torque(dr, omega) * G;
+            K = -motor_slope(dr, omega) * G * G;
+        }
         break;
     }
-    return clip(T, d->max_torque);
+    double Tc = clip(T, d->max_torque);
+    if (slope && Tc == T && K > 0.0)
+        *slope = K;
+    return Tc;
 }

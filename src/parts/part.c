@@ -97,14 +97,17 @@ bd_drive *bd_part_drive(bd_part *part)
     return NULL;
 }
 
-/* part torques phase: what the part puts on its pulley's shaft. A drive is
- * off while stabilizing; a transmission then still carries its belt. */
-double bd_part_torque(bd_sim *sim, bd_part *part)
+/* part torques phase: what the part puts on its pulley's shaft at the
+ * pulley's present speed, and (*slope) how fast that falls with the speed.
+ * A drive is off while stabilizing; a transmission then still carries its
+ * belt. */
+double bd_part_torque(bd_sim *sim, bd_part *part, double *slope)
 {
     bd_pulley_body *p = &sim->pulleys[part->pulley];
+    *slope = 0.0;
     switch (part->type) {
     case BD_PART_DRIVE:
-        return sim->friction_off ? 0.0 : bd_drive_torque(sim, &part->u.drive, p, p->omega);
+        return sim->friction_off ? 0.0 : bd_drive_torque(sim, &part->u.drive, p, p->omega, slope);
     case BD_PART_TRANSMISSION: return bd_transmission_torque(sim, part);
     case BD_PART_TAKEUP: break;
     }

@@ -61,7 +61,7 @@ void bd_parts_clone(bd_sim *dst, const bd_sim *src);
 bd_part *bd_pulley_drive_part(const bd_sim *sim, const bd_pulley_body *p);
 bd_drive *bd_part_drive(bd_part *part);
 /* phases, one switch each */
-double bd_part_torque(bd_sim *sim, bd_part *part);
+double bd_part_torque(bd_sim *sim, bd_part *part, double *slope);
 void bd_part_advance(bd_sim *sim, bd_part *part, double omega_old, double w_mid, double *ke,
                      double *w_nc);
 /* a takeup's potential −(F + wrap weight)·q; 0 for the others */
@@ -92,8 +92,11 @@ void bd_idlers_advance(bd_sim *sim, double *ke, double *w_nc);
 /* tune the speed loop of drive d on pulley p for the inertia it moves */
 void bd_drive_prepare(bd_sim *sim, bd_drive *d, const bd_pulley_body *p,
                       double reflected_inertia);
-/* the drive's torque on pulley p when the shaft turns at omega (rad/s) */
-double bd_drive_torque(const bd_sim *sim, bd_drive *d, const bd_pulley_body *p, double omega);
+/* the drive's torque on pulley p when the shaft turns at omega (rad/s);
+ * *slope (NULL: not wanted) gets −dT/dω ≥ 0, the part the pulley solve
+ * takes implicitly (bd_pulley_body.torque_damping) */
+double bd_drive_torque(const bd_sim *sim, bd_drive *d, const bd_pulley_body *p, double omega,
+                       double *slope);
 
 /* takeup.c */
 double bd_takeup_force(const bd_takeup *tk, double t);

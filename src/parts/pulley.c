@@ -36,14 +36,15 @@ void bd_pulley_model_init(bd_model *model, bd_pulley_model *pm, const bd_pulley_
     }
 }
 
-/* the drive's torque (through its transmission, if any) and the bearing's */
+/* the drive's torque (through its transmission, if any) and the bearing's
+ * at the present speed; the drive's implicit part goes to torque_damping */
 double bd_pulley_external_torque(bd_sim *sim, bd_pulley_body *p)
 {
     bd_part *drive = bd_pulley_drive_part(sim, p);
-    double T_drive = drive ? bd_part_torque(sim, drive) : 0.0;
+    double K = 0.0;
+    double T_drive = drive ? bd_part_torque(sim, drive, &K) : 0.0;
     p->drive_torque = T_drive;
-    if (fabs(T_drive) > p->torque_max_abs)
-        p->torque_max_abs = fabs(T_drive);
+    p->torque_damping = K;
     p->bearing_torque = -p->m->bearing_damping * p->omega;
     return T_drive + p->bearing_torque;
 }
@@ -56,6 +57,10 @@ void bd_pulleys_advance(bd_sim *sim, double *ke, double *w_nc)
     const double dt = sim->model->dt;
     for (int i = 0; i < sim->model->pulley_count; i++) {
         bd_pulley_body *p = &sim->pulleys[i];
+        /* the drive torque applied: its implicit part at the end-of-step speed */
+        p->drive_torque -= p->torque_damping * dt * p->alpha;
+        if (fabs(p->drive_torque) > p->torque_max_abs)
+            p->torque_max_abs = fabs(p->drive_torque);
         double w_mid = p->omega + 0.5 * p->alpha * dt;
         *ke += 0.5 * p->m->inertia * w_mid * w_mid;
         *w_nc += (p->torque_friction + p->bearing_torque) * w_mid * dt;

@@ -207,7 +207,7 @@ double bd_transmission_torque(bd_sim *sim, bd_part *part)
     tr->Q_m = 0.0;
     if (!sim->friction_off)
         tr->Q_m = bd_drive_torque(sim, &part->u.transmission.drive, &sim->pulleys[part->pulley],
-                                  tr->w_m / tr->i) / tr->i;
+                                  tr->w_m / tr->i, NULL) / tr->i;
     return tr->torque_p;
 }
 

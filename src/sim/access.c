@@ -18,6 +18,18 @@ double bd_sim_span_length(const bd_sim *sim, int pulley)
     return bd_path_span(&sim->model->path, pulley)->length;
 }
 
+int bd_sim_span_ends(const bd_sim *sim, int pulley, double start[2], double end[2])
+{
+    if (pulley < 0 || pulley >= sim->model->pulley_count)
+        return -1;
+    const bd_path_segment *span = bd_path_span(&sim->model->path, pulley);
+    start[0] = span->p0[0];
+    start[1] = span->p0[1];
+    end[0] = span->p1[0];
+    end[1] = span->p1[1];
+    return 0;
+}
+
 int bd_sim_node(const bd_sim *sim, int i, bd_node_state *out)
 {
     if (i < 0 || i >= sim->model->n)

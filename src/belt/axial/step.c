@@ -90,17 +90,17 @@ void bd_axial_wrap(bd_sim *sim, bd_pulley_body *p, double Q)
     const double dt = sim->model->dt, R = p->m->radius;
     int e_in = i == 0 ? n - 1 : i - 1;
     double T_in = sim->tension[e_in], T_out = sim->tension[i];
-    double F = 0.0;
+    double F = 0.0, I = bd_pulley_solve_inertia(sim, p);
     if (!sim->friction_off) {
         double m = sim->mass[i];
-        double v_free = sim->vx[i] + dt * sim->fx[i] / m - R * (p->omega + dt * Q / p->m->inertia);
-        double kappa = dt * (1.0 / m + R * R / p->m->inertia);
+        double v_free = sim->vx[i] + dt * sim->fx[i] / m - R * (p->omega + dt * Q / I);
+        double kappa = dt * (1.0 / m + R * R / I);
         F = bd_bpl_solve(&ap->law, T_in, T_out, sim->vx[i], v_free, kappa);
     }
     sim->fx[i] += F;
     sim->fnx[i] += F;
     p->torque_friction = -R * F;
-    p->alpha = (Q - R * F) / p->m->inertia;
+    p->alpha = (Q - R * F) / I;
     /* recorded here, said after the run (bd_axial_report_events) */
     if ((T_in <= 0.0 || T_out <= 0.0) && !as->slack_warned && !sim->friction_off) {
         as->slack_warned = 1;

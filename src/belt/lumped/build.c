@@ -42,7 +42,6 @@ static void setup_pulleys(bd_sim *sim, const bd_layout *lay)
     bd_lumped *L = bd_lumped_of(sim);
     L->wraps = bd_xcalloc((size_t)def->pulley_count, sizeof *L->wraps);
     for (int i = 0; i < def->pulley_count; i++) {
-        const bd_pulley_def *pd = &def->pulleys[i];
         bd_pulley_body *p = &sim->pulleys[i];
         bd_wrap_contact *W = &L->wraps[i];
         if (i == lay->takeup) {
@@ -53,25 +52,12 @@ static void setup_pulleys(bd_sim *sim, const bd_layout *lay)
             pm->x0 = p->cx;
             pm->y0 = p->cy;
         }
-        /* contact: stiff and linearly implicit (pulley_contact.c) */
-        double wrap = bd_path_wrap_angle(&sim->model->path, i);
-        W->win_max = (int)ceil((wrap + 0.5) * pd->radius / sim->model->l0) + 16;
+        /* contact: stiff and linearly implicit, every node of the wrap's
+         * sector tested every step (pulley_contact.c) */
+        bd_lumped_sector_init(sim, i, W);
         bd_doubles_alloc(W, WRAP_DOUBLES, COUNT(WRAP_DOUBLES), (size_t)W->win_max);
         W->c_node = bd_xcalloc((size_t)W->win_max, sizeof *W->c_node);
         W->c_slip = bd_xcalloc((size_t)W->win_max, sizeof *W->c_slip);
-        /* window: nodes lying on its arc */
-        const bd_path_segment *arc = bd_path_arc(&sim->model->path, i);
-        int first = -1, count = 0;
-        for (int k = 0; k < sim->model->n; k++) {
-            double rel = sim->model->s_node0[k] - arc->s0;
-            if (rel >= -1e-9 * sim->model->path.length && rel <= arc->length + 1e-9) {
-                if (first < 0)
-                    first = k;
-                count++;
-            }
-        }
-        W->win_first = first < 0 ? 0 : first;
-        W->win_count = count;
     }
 }
 
@@ -294,6 +280,8 @@ int bd_lumped_build(bd_sim *sim, bd_diag *diag)
         sim->own->s_node0[i] = lay.s[i];
     setup_pulleys(sim, &lay);
     place_nodes(sim, &lay);
+    for (int i = 0; i < sim->model->pulley_count; i++)
+        bd_lumped_sector_anchor(sim, i, &bd_lumped_of(sim)->wraps[i]);
     for (int i = 0; i < sim->model->n; i++)
         sim->tension[i] = lay.tension[i];
     bd_layout_free(&lay);
@@ -344,6 +332,12 @@ void bd_lumped_clone(bd_sim *dst, const bd_sim *src)
         const bd_wrap_contact *from = &S->wraps[i];
         bd_wrap_contact *W = &L->wraps[i];
         size_t w = (size_t)from->win_max;
+        /* the scalars; each array is owned as it is copied */
+        W->mid[0] = from->mid[0];
+        W->mid[1] = from->mid[1];
+        W->cos_limit = from->cos_limit;
+        W->reach = from->reach;
+        W->anchor = from->anchor;
         W->win_first = from->win_first;
         W->win_count = from->win_count;
         W->win_max = from->win_max;

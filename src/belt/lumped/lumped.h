@@ -17,9 +17,16 @@ typedef struct bd_lumped_model {
 
 /* the contact of the belt with one pulley's shell (pulley_contact.c) */
 typedef struct bd_wrap_contact {
-    /* step: nodes first .. first+count-1 (mod n) were in contact */
+    /* build: the wrap's sector with its margin (pulley_contact.c) */
+    double mid[2];          /* unit vector from the centre to the arc's middle */
+    double cos_limit;       /* a node is in the sector when cos(angle to mid) ≥ this */
+    double reach;           /* m, and nearer the centre than this */
+    /* step: the node nearest the arc's middle, and the sector's nodes
+     * first .. first+count-1 (mod n) tested this step */
+    int anchor;
     int win_first, win_count;
-    int win_max;            /* build: capacity of the scratch arrays below */
+    int win_max;            /* build: capacity of the scratch arrays below,
+                               the most nodes a sector can hold */
     /* step scratch of the stick-force solve [win_max] */
     int *c_node;
     double *c_normal;       /* N, normal force */
@@ -68,6 +75,8 @@ double bd_lumped_elastic_energy(const bd_sim *sim);
 double bd_lumped_potential(const bd_sim *sim);
 
 /* pulley_contact.c / idler_contact.c */
+void bd_lumped_sector_init(bd_sim *sim, int pulley, bd_wrap_contact *W);
+void bd_lumped_sector_anchor(bd_sim *sim, int pulley, bd_wrap_contact *W);
 void bd_lumped_wrap(bd_sim *sim, bd_pulley_body *p, double external_torque);
 double bd_lumped_wrap_energy(const bd_sim *sim, const bd_pulley_body *p);
 void bd_lumped_idlers(bd_sim *sim);

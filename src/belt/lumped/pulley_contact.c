@@ -33,13 +33,113 @@
 
 #include <math.h>
 
-#define WINDOW_MARGIN 3
+#include "base/constants.h"
+
+/* Which nodes are tested: every node of the wrap's sector, every step.
+ * The sector is the arc's angle widened on each side by SECTOR_MARGIN_DEG
+ * plus two elements' angle (the tangent points move as spans swing and a
+ * takeup travels), out to SECTOR_REACH_ELEMENTS element lengths beyond
+ * the shell. The belt passes through it as one run of consecutive nodes;
+ * the step finds it from the node nearest the arc's middle (the anchor,
+ * which moves by at most a node or two per step) by walking out to both
+ * ends of the run: O(nodes in the sector). Until issue 10 only last step's
+ * contact set ± 3 nodes was tested: when a wrap unloaded the window shrank
+ * and regrew 3 nodes per step, nodes outside it sank 15–46 mm into the
+ * shell unseen and were then thrown out by a force 200× the wrap's normal
+ * load, and the run diverged. The contact energy is summed over the same
+ * nodes. */
+#define SECTOR_MARGIN_DEG 15.0
+#define SECTOR_REACH_ELEMENTS 2.0
 /* predictive contact gap, as a fraction of the element length */
 #define CONTACT_GAP 0.02
 
 static bd_wrap_contact *wrap_of(const bd_sim *sim, const bd_pulley_body *p)
 {
     return &bd_lumped_of(sim)->wraps[p - sim->pulleys];
+}
+
+void bd_lumped_sector_init(bd_sim *sim, int pulley, bd_wrap_contact *W)
+{
+    const bd_path_segment *arc = bd_path_arc(&sim->model->path, pulley);
+    const double R = arc->radius, l0 = sim->model->l0;
+    double mid = arc->angle0 + 0.5 * arc->sweep;
+    W->mid[0] = cos(mid);
+    W->mid[1] = sin(mid);
+    double half = 0.5 * fabs(arc->sweep) + SECTOR_MARGIN_DEG * BD_DEG + 2.0 * l0 / R;
+    W->cos_limit = half >= BD_PI ? -2.0 : cos(half);
+    W->reach = R + SECTOR_REACH_ELEMENTS * l0;
+    W->win_max = (int)ceil(2.0 * half * W->reach / l0) + 8;
+}
+
+/* the node nearest the arc's middle, once by a full search (the belt laid) */
+void bd_lumped_sector_anchor(bd_sim *sim, int pulley, bd_wrap_contact *W)
+{
+    const bd_pulley_body *p = &sim->pulleys[pulley];   /* a takeup's centre as laid */
+    const double R = p->m->radius;
+    double mx = p->cx + R * W->mid[0], my = p->cy + R * W->mid[1];
+    double best = INFINITY;
+    for (int k = 0; k < sim->model->n; k++) {
+        double d = hypot(sim->x[k] - mx, sim->y[k] - my);
+        if (d < best) {
+            best = d;
+            W->anchor = k;
+        }
+    }
+    W->win_first = W->anchor;
+    W->win_count = 0;
+}
+
+static int in_sector(const bd_sim *sim, const bd_pulley_body *p, const bd_wrap_contact *W, int k)
+{
+    double rx = sim->x[k] - p->cx, ry = sim->y[k] - p->cy;
+    double a2 = rx * rx + ry * ry;
+    if (a2 >= W->reach * W->reach)
+        return 0;
+    double c = rx * W->mid[0] + ry * W->mid[1];   /* a·cos(angle to mid) */
+    if (W->cos_limit >= 0.0)
+        return c >= 0.0 && c * c >= W->cos_limit * W->cos_limit * a2;
+    return c >= W->cos_limit * sqrt(a2);
+}
+
+/* the node nearest the arc's middle, from the last one; then the run of
+ * sector nodes through it: *first and *count (count ≤ win_max) */
+static int find_sector(const bd_sim *sim, const bd_pulley_body *p, const bd_wrap_contact *W,
+                       int *first, int *count)
+{
+    const int n = sim->model->n;
+    double mx = p->cx + p->m->radius * W->mid[0], my = p->cy + p->m->radius * W->mid[1];
+    int a = W->anchor;
+    double da = hypot(sim->x[a] - mx, sim->y[a] - my);
+    for (int it = 0; it < n; it++) {
+        int f = a + 1 == n ? 0 : a + 1, b = a == 0 ? n - 1 : a - 1;
+        double df = hypot(sim->x[f] - mx, sim->y[f] - my);
+        double db = hypot(sim->x[b] - mx, sim->y[b] - my);
+        if (df < da && df <= db) {
+            a = f;
+            da = df;
+        } else if (db < da) {
+            a = b;
+            da = db;
+        } else {
+            break;
+        }
+    }
+    int lo = a, c = 1;
+    while (c < W->win_max) {
+        int b = lo == 0 ? n - 1 : lo - 1;
+        if (!in_sector(sim, p, W, b))
+            break;
+        lo = b;
+        c++;
+    }
+    for (int k = a + 1 == n ? 0 : a + 1; c < W->win_max; k = k + 1 == n ? 0 : k + 1) {
+        if (!in_sector(sim, p, W, k))
+            break;
+        c++;
+    }
+    *first = lo;
+    *count = c;
+    return a;
 }
 
 static void normal_forces(bd_sim *sim, bd_pulley_body *p)
@@ -55,16 +155,11 @@ static void normal_forces(bd_sim *sim, bd_pulley_body *p)
      * acceleration of the last step (a moving takeup pulley) */
     double vp_end = p->qdot + sim->model->dt * p->qddot;
     double vpx = vp_end * p->m->axis[0], vpy = vp_end * p->m->axis[1];
-    int found = 0, first_found = 0, last_found = 0;
     W->contact_count = 0;
     p->f_axis = 0.0;
     p->fnc_axis = 0.0;
-    int span = W->win_count + 2 * WINDOW_MARGIN;
-    if (span > W->win_max)
-        span = W->win_max;
-    int start = W->win_first - WINDOW_MARGIN;
-    for (int w = 0; w < span; w++) {
-        int k = ((start + w) % n + n) % n;
+    W->anchor = find_sector(sim, p, W, &W->win_first, &W->win_count);
+    for (int w = 0, k = W->win_first; w < W->win_count; w++, k = k + 1 == n ? 0 : k + 1) {
         double rx = sim->x[k] - p->cx, ry = sim->y[k] - p->cy;
         double a2 = rx * rx + ry * ry;
         if (a2 >= Rc * Rc)
@@ -92,14 +187,6 @@ static void normal_forces(bd_sim *sim, bd_pulley_body *p)
         W->c_normal[c] = fn;
         W->c_tx[c] = -p->m->wrap * ny;
         W->c_ty[c] = p->m->wrap * nx;
-        if (!found)
-            first_found = start + w;
-        found = 1;
-        last_found = start + w;
-    }
-    if (found) {
-        W->win_first = ((first_found % n) + n) % n;
-        W->win_count = last_found - first_found + 1;
     }
 }
 
@@ -126,7 +213,7 @@ static void friction_forces(bd_sim *sim, bd_pulley_body *p, double T_p)
             A += sim->mass[k] * vr / dt + W->c_tx[c] * sim->fx[k] + W->c_ty[c] * sim->fy[k];
             M += sim->mass[k];
         }
-        alpha = (R * A + R * Fk + T_p) / (p->m->inertia + R * R * M);
+        alpha = (R * A + R * Fk + T_p) / (bd_pulley_solve_inertia(sim, p) + R * R * M);
         int changed = 0;
         for (int c = 0; c < nc; c++) {
             if (W->c_slip[c])
@@ -170,24 +257,22 @@ void bd_lumped_wrap(bd_sim *sim, bd_pulley_body *p, double external_torque)
     const bd_wrap_contact *W = wrap_of(sim, p);
     p->torque_friction = 0.0;
     if (sim->friction_off || W->contact_count == 0) {
-        p->alpha = external_torque / p->m->inertia;
+        p->alpha = external_torque / bd_pulley_solve_inertia(sim, p);
         return;
     }
     friction_forces(sim, p, external_torque);
 }
 
 /* elastic energy of the contact springs: ½k_c·δ² of every node inside the
- * shell, among the nodes the window covers */
+ * shell, among the nodes of the wrap's sector */
 double bd_lumped_wrap_energy(const bd_sim *sim, const bd_pulley_body *p)
 {
     const bd_wrap_contact *W = wrap_of(sim, p);
     const int n = sim->model->n;
     double e = 0.0, R = p->m->radius;
-    int span = W->win_count + 2 * WINDOW_MARGIN;
-    if (span > W->win_max)
-        span = W->win_max;
-    for (int w = 0; w < span; w++) {
-        int k = ((W->win_first - WINDOW_MARGIN + w) % n + n) % n;
+    int first, count;
+    find_sector(sim, p, W, &first, &count);
+    for (int w = 0, k = first; w < count; w++, k = k + 1 == n ? 0 : k + 1) {
         double a = hypot(sim->x[k] - p->cx, sim->y[k] - p->cy);
         if (a < R)
             e += 0.5 * bd_lumped_model_of(sim)->k_contact * (R - a) * (R - a);

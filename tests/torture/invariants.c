@@ -1,0 +1,233 @@
+/* The invariant checks of one run (invariants.h). */
+#include "invariants.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* which spans carry load: the feed span from the feed point on, then
+ * every span up to the one arriving at the discharge pulley */
+static double loaded_from(const bd_model_def *def, int span)
+{
+    const bd_material_def *mat = &def->material;
+    if (!mat->present || mat->mass_per_length <= 0.0)
+        return -1.0;
+    int n = def->pulley_count;
+    for (int j = mat->feed_span, k = 0; k < n; k++, j = (j + 1) % n) {
+        if (j == span)
+            return j == mat->feed_span ? mat->feed_at : 0.0;
+        if ((j + 1) % n == mat->discharge)
+            break;
+    }
+    return -1.0;
+}
+
+double bd_torture_law_force(const bd_sim *sim, const bd_model_def *def, double v)
+{
+    double g = def->gravity, mB = def->belt.mass_per_length;
+    double mL = def->material.present ? def->material.mass_per_length : 0.0;
+    double F = 0.0;
+    int idlers = bd_sim_idler_count(sim);
+    double *t = malloc((size_t)(idlers + 2) * sizeof *t);
+    /* idler rolling resistance: each idler carries the weight (normal to
+     * its span) between the midpoints to its neighbours, a pulley's tangent
+     * point being the neighbour of the first and the last */
+    for (int k = 0; k < def->idler_set_count; k++) {
+        const bd_idler_set_def *set = &def->idler_sets[k];
+        double p0[2], p1[2];
+        bd_sim_span_ends(sim, set->span, p0, p1);
+        double Ls = hypot(p1[0] - p0[0], p1[1] - p0[1]);
+        double u[2] = {(p1[0] - p0[0]) / Ls, (p1[1] - p0[1]) / Ls};
+        int m = 0;
+        t[m++] = 0.0;
+        for (int i = 0; i < idlers; i++) {
+            bd_idler_state st;
+            bd_sim_idler(sim, i, &st);
+            if (st.set == k)
+                t[m++] = (st.x_m - p0[0]) * u[0] + (st.y_m - p0[1]) * u[1];
+        }
+        t[m++] = Ls;
+        qsort(t, (size_t)m, sizeof *t, cmp_double);
+        double from = loaded_from(def, set->span);
+        double feed_t = from >= 0.0 ? from * Ls : INFINITY;
+        for (int i = 1; i + 1 < m; i++) {
+            double a = 0.5 * (t[i - 1] + t[i]), b = 0.5 * (t[i] + t[i + 1]);
+            double loaded = b > feed_t ? b - (a > feed_t ? a : feed_t) : 0.0;
+            double N = g * fabs(u[0]) * (mB * (b - a) + mL * loaded);
+            F += set->rolling_resistance * N;
+        }
+    }
+    free(t);
+    /* the load: lifted from the feed point to the end of the loaded region,
+     * and brought to belt speed where it lands */
+    if (mL > 0.0) {
+        int n = def->pulley_count, j = def->material.feed_span;
+        double p0[2], p1[2], y_feed, y_end = 0.0;
+        bd_sim_span_ends(sim, j, p0, p1);
+        y_feed = p0[1] + def->material.feed_at * (p1[1] - p0[1]);
+        for (int k = 0; k < n; k++, j = (j + 1) % n) {
+            bd_sim_span_ends(sim, j, p0, p1);
+            y_end = p1[1];
+            if ((j + 1) % n == def->material.discharge)
+                break;
+        }
+        F += mL * g * (y_end - y_feed);
+        if (def->material.feeding)
+            F += mL * v * v;
+    }
+    /* bearings of the pulleys the belt turns: b·ω = R·ΔT */
+    for (int i = 0; i < def->pulley_count; i++) {
+        const bd_pulley_def *p = &def->pulleys[i];
+        if (!p->has_drive)
+            F += p->bearing_damping * v / (p->radius * p->radius);
+    }
+    return F;
+}
+
+/* the belt speed at which the motors' Kloss curves deliver the law's force
+ * (every drive a motor with the same data, sharing the force equally) */
+static double motor_speed(const bd_sim *sim, const bd_model_def *def)
+{
+    int drives = 0;
+    const bd_pulley_def *d = NULL;
+    for (int i = 0; i < def->pulley_count; i++)
+        if (def->pulleys[i].has_drive) {
+            drives++;
+            d = &def->pulleys[i];
+        }
+    const bd_motor_def *m = &d->drive.motor;
+    double w_sync = m->synchronous_speed_rpm * 2.0 * 3.14159265358979323846 / 60.0;
+    double w_rated = m->rated_speed_rpm * 2.0 * 3.14159265358979323846 / 60.0;
+    double k = m->breakdown_torque_ratio;
+    double Tb = k * m->rated_power / w_rated;
+    double s_r = 1.0 - m->rated_speed_rpm / m->synchronous_speed_rpm;
+    double sb = s_r * (k + sqrt(k * k - 1.0));
+    double lo = 0.0, hi = sb, v = 0.0;
+    for (int it = 0; it < 100; it++) {
+        double s = 0.5 * (lo + hi);
+        v = (1.0 - s) * w_sync / m->gear_ratio * d->radius;
+        double T = m->gear_ratio * 2.0 * Tb * s * sb / (s * s + sb * sb);
+        double need = (bd_torture_law_force(sim, def, v) / drives) * d->radius
+                    + d->bearing_damping * v / d->radius;
+        if (T < need)
+            lo = s;
+        else
+            hi = s;
+    }
+    return v;
+}
+
+void bd_torture_run(const char *yaml, const char *label, const bd_torture_options *opt,
+                    bd_torture_result *res)
+{
+    memset(res, 0, sizeof *res);
+    double wall0 = now();
+    bd_model_def def;
+    bd_diag diag;
+    bd_diag_init(&diag);
+    bd_sim *sim = NULL;
+    if (bd_model_load_string(yaml, strlen(yaml), label, &def, &diag)
+        || bd_sim_create(&def, &sim, &diag)) {
+        snprintf(res->message, sizeof res->message, "does not load: %s",
+                 diag.count + diag.warning_count > 0 ? diag.lines[0] : "?");
+        bd_diag_free(&diag);
+        bd_model_def_free(&def);
+        return;
+    }
+    bd_diag_free(&diag);
+    res->loaded = 1;
+    res->nodes = bd_sim_node_count(sim);
+    char err[600];
+    if (def.simulation.stabilize && bd_sim_stabilize(sim, NULL)) {
+        snprintf(res->message, sizeof res->message, "stabilization failed");
+        goto done;
+    }
+    bd_sim_book_energy_every_step(sim, 1);
+    int drives[16], nd = 0;
+    for (int i = 0; i < def.pulley_count && nd < 16; i++)
+        if (def.pulleys[i].has_drive)
+            drives[nd++] = i;
+    double dt = bd_sim_time_step(sim), duration = def.simulation.duration;
+    double window_start = duration - opt->window;
+    double chunk = 0.01;
+    bd_energy_state e0, e;
+    /* the reference: one step in, when the scheme's energy is defined */
+    if (bd_sim_step(sim, 1, err, sizeof err))
+        goto failed;
+    bd_sim_energy(sim, &e0);
+    double ref = e0.kinetic_J + e0.potential_J + e0.dissipated_J - e0.input_J;
+    double scale_e0 = fabs(ref), d_prev = e0.dissipated_J, k_max = 0.0;
+    double f_sum = 0.0, v_sum = 0.0;
+    long f_count = 0, v_count = 0;
+    while (bd_sim_time(sim) < duration - 0.5 * dt) {
+        double t = bd_sim_time(sim);
+        if (t >= window_start) {
+            /* every step: the drive torque carries the ripple of the mesh */
+            if (bd_sim_step(sim, 1, err, sizeof err))
+                goto failed;
+            double F = 0.0;
+            for (int k = 0; k < nd; k++) {
+                bd_pulley_state ps;
+                bd_sim_pulley(sim, drives[k], &ps);
+                F += (ps.drive_torque_Nm - def.pulleys[drives[k]].bearing_damping * ps.omega_rad_s)
+                   / ps.radius_m;
+            }
+            f_sum += F;
+            f_count++;
+            /* the belt's speed through a fixed point (the first probe) */
+            bd_probe_state pr;
+            if (bd_sim_probe(sim, 0, &pr) == 0) {
+                v_sum += pr.speed_mps;
+                v_count++;
+            }
+        } else {
+            long steps = (long)ceil(chunk / dt);
+            if (bd_sim_step(sim, steps, err, sizeof err))
+                goto failed;
+        }
+        bd_sim_energy(sim, &e);
+        if (e.kinetic_J > k_max)
+            k_max = e.kinetic_J;
+        double scale = scale_e0;
+        if (e.input_J > scale)
+            scale = e.input_J;
+        if (k_max > scale)
+            scale = k_max;
+        if (scale < 1.0)
+            scale = 1.0;
+        double bal = fabs(e.kinetic_J + e.potential_J + e.dissipated_J - e.input_J - ref) / scale;
+        if (bal > res->balance)
+            res->balance = bal;
+        double drop = (d_prev - e.dissipated_J) / scale;
+        if (drop > res->dissipation_drop)
+            res->dissipation_drop = drop;
+        d_prev = e.dissipated_J;
+    }
+    res->completed = 1;
+    res->force = f_count ? f_sum / (double)f_count : 0.0;
+    res->speed = v_count ? v_sum / (double)v_count : 0.0;
+    res->speed_target = opt->target_speed > 0.0 ? opt->target_speed : motor_speed(sim, &def);
+    res->force_law = bd_torture_law_force(sim, &def, res->speed);
+    goto done;
+failed:
+    snprintf(res->message, sizeof res->message, "%s", err);
+done:
+    res->wall_s = now() - wall0;
+    bd_sim_free(sim);
+    bd_model_def_free(&def);
+}

@@ -1,0 +1,37 @@
+/* Runs one model and checks the invariants every conveyor must satisfy
+ * (issue 10): it completes; energy balances; no energy is created by a
+ * dissipative force; the belt reaches the target speed; in steady running
+ * the drives deliver the force of the model's own resistance law. */
+#ifndef BD_TORTURE_INVARIANTS_H
+#define BD_TORTURE_INVARIANTS_H
+
+#include "beltdyn/sim.h"
+
+typedef struct bd_torture_result {
+    int loaded;                /* the model loaded and built */
+    int completed;             /* the run reached its duration */
+    char message[700];         /* why not */
+    double balance;            /* largest |E_k+E_p+E_d−E_in−E_0| / energy scale */
+    double dissipation_drop;   /* largest fall of E_d between checks / scale */
+    double speed, speed_target;/* m/s, mean over the last window */
+    double force, force_law;   /* N, mean drive force over the last window, the law */
+    double wall_s;
+    int nodes;
+} bd_torture_result;
+
+typedef struct bd_torture_options {
+    double window;             /* s of steady running averaged at the end */
+    double target_speed;       /* m/s of a speed drive; 0: from the motor curve */
+} bd_torture_options;
+
+/* run the model text (YAML) to its duration */
+void bd_torture_run(const char *yaml, const char *label, const bd_torture_options *opt,
+                    bd_torture_result *res);
+
+/* the steady running force of the model's own resistance law at belt
+ * speed v, N: idler rolling resistance × the weight the idlers carry,
+ * the lift of the load, the load's acceleration at the feed, the bearing
+ * damping of the pulleys that do not drive */
+double bd_torture_law_force(const bd_sim *sim, const bd_model_def *def, double v);
+
+#endif

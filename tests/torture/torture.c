@@ -1,0 +1,124 @@
+/* The torture test (issue 10): generated conveyors, each run to the end of
+ * its start and some seconds of steady running, each held to the
+ * invariants every conveyor must satisfy. ctest runs a fixed set; the soak
+ * (scripts/soak) a long one.
+ *
+ *   torture [--first SEED] [--count N] [--formulation discrete|axial]
+ *           [--max-length M] [--settle S] [--print SEED]
+ *
+ * The tolerances, and what each allows for:
+ * - energy balance 0.5 % of the largest energy flow: the scheme's energy
+ *   is exact to round-off for the conservative forces; what remains is the
+ *   bookkeeping of the contact springs and the material carried on and
+ *   off, which are first order in the time step.
+ * - dissipation never falls by more than 1e-9 of that scale between
+ *   checks: round-off of the sums only.
+ * - speed within 1 % of the target (speed drives) or of the Kloss curve's
+ *   speed at the law's force (motors), mean over the window: what the
+ *   PI loop and the motor curve leave with the torque ripple averaged.
+ * - steady drive force within 3 % (discrete) or 1 % (axial) of the law: the
+ *   discrete belt sags between idlers and runs over them as a polygon, so
+ *   the weight each idler carries fluctuates with the node passage and is
+ *   averaged over the window; the axial belt carries its idlers' resistance
+ *   as a distributed force, so only the averaging remains. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "generate.h"
+#include "invariants.h"
+
+#define TOL_BALANCE 0.005
+#define TOL_DISSIPATION 1e-9
+#define TOL_SPEED 0.01
+
+int main(int argc, char **argv)
+{
+    unsigned long first = 1;
+    int count = 30, print = 0;
+    bd_gen_options gen = {"discrete", 120.0, 6.0};
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--first") && i + 1 < argc)
+            first = strtoul(argv[++i], NULL, 10);
+        else if (!strcmp(argv[i], "--count") && i + 1 < argc)
+            count = atoi(argv[++i]);
+        else if (!strcmp(argv[i], "--formulation") && i + 1 < argc)
+            gen.formulation = argv[++i];
+        else if (!strcmp(argv[i], "--max-length") && i + 1 < argc)
+            gen.max_length = atof(argv[++i]);
+        else if (!strcmp(argv[i], "--settle") && i + 1 < argc)
+            gen.settle = atof(argv[++i]);
+        else if (!strcmp(argv[i], "--print") && i + 1 < argc) {
+            first = strtoul(argv[++i], NULL, 10);
+            print = 1;
+        } else {
+            fprintf(stderr, "usage: torture [--first SEED] [--count N] [--formulation F] "
+                            "[--max-length M] [--settle S] [--print SEED]\n");
+            return 2;
+        }
+    }
+    double tol_force = strcmp(gen.formulation, "axial") == 0 ? 0.01 : 0.03;
+    static char yaml[1 << 16];
+    bd_gen_info info;
+    if (print) {
+        bd_gen_conveyor(first, &gen, yaml, sizeof yaml, &info);
+        fputs(yaml, stdout);
+        return 0;
+    }
+    int failures = 0;
+    double worst_balance = 0.0, worst_force = 0.0, worst_speed = 0.0, wall = 0.0;
+    for (int k = 0; k < count; k++) {
+        unsigned long seed = first + (unsigned long)k;
+        if (bd_gen_conveyor(seed, &gen, yaml, sizeof yaml, &info) >= sizeof yaml) {
+            printf("seed %lu: generator overflow\n", seed);
+            failures++;
+            continue;
+        }
+        char label[64];
+        snprintf(label, sizeof label, "generated-%lu.yaml", seed);
+        bd_torture_options opt = {3.0, info.motor ? 0.0 : info.speed};
+        bd_torture_result r;
+        bd_torture_run(yaml, label, &opt, &r);
+        wall += r.wall_s;
+        char why[900] = "";
+        if (!r.completed) {
+            snprintf(why, sizeof why, "%s", r.message);
+        } else {
+            double ferr = (r.force - r.force_law) / fmax(fabs(r.force_law), 1.0);
+            double verr = (r.speed - r.speed_target) / r.speed_target;
+            if (r.balance > worst_balance)
+                worst_balance = r.balance;
+            if (fabs(ferr) > fabs(worst_force))
+                worst_force = ferr;
+            if (fabs(verr) > fabs(worst_speed))
+                worst_speed = verr;
+            if (r.balance > TOL_BALANCE)
+                snprintf(why + strlen(why), sizeof why - strlen(why),
+                         " energy balance %.3g > %.3g;", r.balance, TOL_BALANCE);
+            if (r.dissipation_drop > TOL_DISSIPATION)
+                snprintf(why + strlen(why), sizeof why - strlen(why),
+                         " dissipation fell by %.3g of the energy scale;", r.dissipation_drop);
+            if (fabs(verr) > TOL_SPEED)
+                snprintf(why + strlen(why), sizeof why - strlen(why),
+                         " speed %.4f m/s vs %.4f (%+.2f%%);", r.speed, r.speed_target,
+                         100.0 * verr);
+            if (fabs(ferr) > tol_force)
+                snprintf(why + strlen(why), sizeof why - strlen(why),
+                         " running force %.1f N vs law %.1f N (%+.2f%%);", r.force, r.force_law,
+                         100.0 * ferr);
+        }
+        int ok = why[0] == '\0';
+        failures += !ok;
+        printf("%s seed %lu [%s] %s: %d nodes, %.1f s wall, balance %.2g, force %.0f/%.0f N, "
+               "speed %.3f/%.3f%s%s\n",
+               ok ? "ok  " : "FAIL", seed, gen.formulation, info.summary, r.nodes, r.wall_s,
+               r.balance, r.force, r.force_law, r.speed, r.speed_target, ok ? "" : " —", why);
+        fflush(stdout);
+    }
+    printf("torture [%s]: %d of %d conveyors pass; worst balance %.3g, worst force error "
+           "%+.2f%%, worst speed error %+.2f%%; %.0f s wall\n",
+           gen.formulation, count - failures, count, worst_balance, 100.0 * worst_force,
+           100.0 * worst_speed, wall);
+    return failures ? 1 : 0;
+}
