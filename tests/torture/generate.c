@@ -110,7 +110,12 @@ size_t bd_gen_conveyor(unsigned long seed, const bd_gen_options *opt, char *buf,
     double F_start = fabs(F_run) + M * a_max;
     double rated_T = 0.0, gear = 0.0, t_acc = 0.0;
     if (motor) {
-        rated_T = (fabs(F_run) + M * v / 6.0) * Rh * uniform(&r, 1.1, 1.6);
+        /* Kloss with breakdown 2.2 and rated slip s_r starts with
+         * T(1)/T_rated = 2·2.2·s_b/(1 + s_b²), s_b = s_r·(2.2 + √(2.2² − 1)):
+         * about a quarter; size the motor to start the loaded belt */
+        double s_b = 0.02 * (2.2 + sqrt(2.2 * 2.2 - 1.0));
+        double start_ratio = 2.0 * 2.2 * s_b / (1.0 + s_b * s_b);
+        rated_T = (fabs(F_run) + M * v / 6.0) * Rh * uniform(&r, 1.3, 1.8) / start_ratio;
         F_start = 2.2 * rated_T / Rh;
         t_acc = M * v / (1.2 * rated_T / Rh - F_run);
         if (t_acc < 1.0)
@@ -129,7 +134,9 @@ size_t bd_gen_conveyor(unsigned long seed, const bd_gen_options *opt, char *buf,
 
     double ramp_end = motor ? 0.5 + 1.5 * t_acc : delay + ramp;
     double fill = preloaded ? 0.0 : Lc / v;
-    double duration = ramp_end + fill + opt->settle;
+    /* a motor started direct on line swings about its operating point
+     * with the belt before it settles: more time */
+    double duration = ramp_end + fill + opt->settle * (motor ? 3.0 : 1.0);
 
     static const char *tk_names[] = {"head loop", "tail loop", "tail takeup"};
     static const char *dr_names[] = {"head", "tail", "dual"};
@@ -159,7 +166,7 @@ size_t bd_gen_conveyor(unsigned long seed, const bd_gen_options *opt, char *buf,
     if (motor) {
         double w_sync = 1500.0 * 2.0 * PI / 60.0;
         gear = w_sync * Rh / (v * 1.01);
-        double rpm_rated = 1500.0 * (1.0 - uniform(&r, 0.01, 0.02));
+        double rpm_rated = 1500.0 * (1.0 - 0.02);
         put(&d, "    drive:\n      control: motor\n      inertia: %.6g\n      motor: "
                 "{rated_power: %.6g, rated_speed_rpm: %.6g, synchronous_speed_rpm: 1500, "
                 "breakdown_torque_ratio: 2.2, gear_ratio: %.6g, start_time: 0.5}\n",

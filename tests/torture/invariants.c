@@ -14,12 +14,6 @@ static double now(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
 /* which spans carry load: the feed span from the feed point on, then
  * every span up to the one arriving at the discharge pulley */
 static double loaded_from(const bd_model_def *def, int span)
@@ -37,32 +31,29 @@ static double loaded_from(const bd_model_def *def, int span)
     return -1.0;
 }
 
-double bd_torture_law_force(const bd_sim *sim, const bd_model_def *def, double v)
+double bd_torture_law_force(const bd_sim *sim, const bd_model_def *def, double v, double *scale)
 {
     double g = def->gravity, mB = def->belt.mass_per_length;
+    double sum_abs = 0.0;
     double mL = def->material.present ? def->material.mass_per_length : 0.0;
     double F = 0.0;
-    int idlers = bd_sim_idler_count(sim);
-    double *t = malloc((size_t)(idlers + 2) * sizeof *t);
     /* idler rolling resistance: each idler carries the weight (normal to
      * its span) between the midpoints to its neighbours, a pulley's tangent
-     * point being the neighbour of the first and the last */
+     * point being the neighbour of the first and the last; the idlers stand
+     * where the layout rule puts them (model-format: evenly, the spacing
+     * closest to the one given), whether or not the belt resolves them */
     for (int k = 0; k < def->idler_set_count; k++) {
         const bd_idler_set_def *set = &def->idler_sets[k];
         double p0[2], p1[2];
         bd_sim_span_ends(sim, set->span, p0, p1);
         double Ls = hypot(p1[0] - p0[0], p1[1] - p0[1]);
         double u[2] = {(p1[0] - p0[0]) / Ls, (p1[1] - p0[1]) / Ls};
-        int m = 0;
-        t[m++] = 0.0;
-        for (int i = 0; i < idlers; i++) {
-            bd_idler_state st;
-            bd_sim_idler(sim, i, &st);
-            if (st.set == k)
-                t[m++] = (st.x_m - p0[0]) * u[0] + (st.y_m - p0[1]) * u[1];
-        }
-        t[m++] = Ls;
-        qsort(t, (size_t)m, sizeof *t, cmp_double);
+        int count = 0, m = 0;
+        double spacing = 0.0;
+        bd_sim_idler_set(sim, k, &count, &spacing);
+        double *t = malloc((size_t)(count + 2) * sizeof *t);
+        for (m = 0; m < count + 2; m++)
+            t[m] = m == count + 1 ? Ls : m * spacing;
         double from = loaded_from(def, set->span);
         double feed_t = from >= 0.0 ? from * Ls : INFINITY;
         for (int i = 1; i + 1 < m; i++) {
@@ -70,9 +61,10 @@ double bd_torture_law_force(const bd_sim *sim, const bd_model_def *def, double v
             double loaded = b > feed_t ? b - (a > feed_t ? a : feed_t) : 0.0;
             double N = g * fabs(u[0]) * (mB * (b - a) + mL * loaded);
             F += set->rolling_resistance * N;
+            sum_abs += set->rolling_resistance * N;
         }
+        free(t);
     }
-    free(t);
     /* the load: lifted from the feed point to the end of the loaded region,
      * and brought to belt speed where it lands */
     if (mL > 0.0) {
@@ -87,15 +79,22 @@ double bd_torture_law_force(const bd_sim *sim, const bd_model_def *def, double v
                 break;
         }
         F += mL * g * (y_end - y_feed);
-        if (def->material.feeding)
+        sum_abs += fabs(mL * g * (y_end - y_feed));
+        if (def->material.feeding) {
             F += mL * v * v;
+            sum_abs += mL * v * v;
+        }
     }
     /* bearings of the pulleys the belt turns: b·ω = R·ΔT */
     for (int i = 0; i < def->pulley_count; i++) {
         const bd_pulley_def *p = &def->pulleys[i];
-        if (!p->has_drive)
+        if (!p->has_drive) {
             F += p->bearing_damping * v / (p->radius * p->radius);
+            sum_abs += p->bearing_damping * v / (p->radius * p->radius);
+        }
     }
+    if (scale)
+        *scale = sum_abs;
     return F;
 }
 
@@ -122,7 +121,7 @@ static double motor_speed(const bd_sim *sim, const bd_model_def *def)
         double s = 0.5 * (lo + hi);
         v = (1.0 - s) * w_sync / m->gear_ratio * d->radius;
         double T = m->gear_ratio * 2.0 * Tb * s * sb / (s * s + sb * sb);
-        double need = (bd_torture_law_force(sim, def, v) / drives) * d->radius
+        double need = (bd_torture_law_force(sim, def, v, NULL) / drives) * d->radius
                     + d->bearing_damping * v / d->radius;
         if (T < need)
             lo = s;
@@ -184,8 +183,8 @@ void bd_torture_run(const char *yaml, const char *label, const bd_torture_option
             for (int k = 0; k < nd; k++) {
                 bd_pulley_state ps;
                 bd_sim_pulley(sim, drives[k], &ps);
-                F += (ps.drive_torque_Nm - def.pulleys[drives[k]].bearing_damping * ps.omega_rad_s)
-                   / ps.radius_m;
+                double b = def.pulleys[drives[k]].bearing_damping;
+                F += (ps.drive_torque_Nm - b * ps.omega_rad_s) / ps.radius_m;
             }
             f_sum += F;
             f_count++;
@@ -222,7 +221,7 @@ void bd_torture_run(const char *yaml, const char *label, const bd_torture_option
     res->force = f_count ? f_sum / (double)f_count : 0.0;
     res->speed = v_count ? v_sum / (double)v_count : 0.0;
     res->speed_target = opt->target_speed > 0.0 ? opt->target_speed : motor_speed(sim, &def);
-    res->force_law = bd_torture_law_force(sim, &def, res->speed);
+    res->force_law = bd_torture_law_force(sim, &def, res->speed, &res->force_scale);
     goto done;
 failed:
     snprintf(res->message, sizeof res->message, "%s", err);

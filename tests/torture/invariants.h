@@ -15,6 +15,7 @@ typedef struct bd_torture_result {
     double dissipation_drop;   /* largest fall of E_d between checks / scale */
     double speed, speed_target;/* m/s, mean over the last window */
     double force, force_law;   /* N, mean drive force over the last window, the law */
+    double force_scale;        /* N, the law's terms summed in magnitude */
     double wall_s;
     int nodes;
 } bd_torture_result;
@@ -31,7 +32,9 @@ void bd_torture_run(const char *yaml, const char *label, const bd_torture_option
 /* the steady running force of the model's own resistance law at belt
  * speed v, N: idler rolling resistance × the weight the idlers carry,
  * the lift of the load, the load's acceleration at the feed, the bearing
- * damping of the pulleys that do not drive */
-double bd_torture_law_force(const bd_sim *sim, const bd_model_def *def, double v);
+ * damping of the pulleys that do not drive; *scale (may be NULL) gets
+ * those terms summed in magnitude, the measure of the force error when
+ * they cancel (a loaded decline) */
+double bd_torture_law_force(const bd_sim *sim, const bd_model_def *def, double v, double *scale);
 
 #endif
