@@ -101,6 +101,14 @@ static int create(const bd_model_def *def, bd_sim *volatile *out, bd_diag *diag)
     sim->pulleys = bd_xcalloc((size_t)def->pulley_count, sizeof *sim->pulleys);
     for (int i = 0; i < def->pulley_count; i++) {
         bd_pulley_model_init(sim->own, &sim->own->pulleys[i], &def->pulleys[i]);
+        /* a drive on a bare shaft: when the belt slips, only the floored
+         * inertia (and the implicit speed loop) holds the pulley's speed */
+        if (def->pulleys[i].has_drive
+            && def->pulleys[i].inertia + def->pulleys[i].drive.inertia <= 0.0)
+            bd_sim_warn(sim, "drive pulley '%s' has no inertia (mass, inertia and drive "
+                        "inertia all 0): it is given %.3g kg·m², 1%% of the belt wrapped on it; "
+                        "give the motor's and gearbox's inertia (drive.inertia) for a "
+                        "physical slip", def->pulleys[i].name, sim->own->pulleys[i].inertia);
         sim->pulleys[i].m = &sim->own->pulleys[i];
         sim->pulleys[i].cx = sim->own->pulleys[i].x0;
         sim->pulleys[i].cy = sim->own->pulleys[i].y0;

@@ -270,6 +270,27 @@ int bd_lumped_build(bd_sim *sim, bd_diag *diag)
     LM->k_bend = sim->model->EI / sim->model->l0;
     /* contacts: stiff and linearly implicit (pulley_contact.c, idler_contact.c) */
     LM->k_contact = 100.0 * LM->k_axial;
+    /* chordal action: a chord of angle θ = l0/R on a wrap makes the belt run
+     * over the pulley as a polygon, with a speed ripple 1 − cos(θ/2) and
+     * losses at the wrap the model does not declare (issue 10: 2.6 % of
+     * the belt tension at 28°, 0.7 % at 14°, 0.06 % at 7° on a 5 m/s
+     * frictionless loop) */
+    int coarse = 0, worst = 0;
+    for (int i = 0; i < def->pulley_count; i++) {
+        if (sim->model->l0 / def->pulleys[i].radius > BD_CHORD_WARN_DEG * BD_DEG)
+            coarse++;
+        if (def->pulleys[i].radius < def->pulleys[worst].radius)
+            worst = i;
+    }
+    if (coarse > 0) {
+        double R = def->pulleys[worst].radius;
+        bd_sim_warn(sim, "a belt element spans %.0f° of the wrap on pulley '%s' (element length "
+                    "%.3g m, radius %.3g m; %d pulley%s above %.0f°): the chordal action adds "
+                    "speed ripple and drive force the model does not declare; "
+                    "belt.element_length %.3g m gives %.0f°", sim->model->l0 / R / BD_DEG,
+                    def->pulleys[worst].name, sim->model->l0, R, coarse, coarse > 1 ? "s" : "",
+                    BD_CHORD_WARN_DEG, BD_CHORD_WARN_DEG * BD_DEG * R, BD_CHORD_WARN_DEG);
+    }
 
     bd_node_arrays_alloc(sim);
     size_t n = (size_t)sim->model->n;

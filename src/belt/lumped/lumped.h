@@ -15,6 +15,9 @@ typedef struct bd_lumped_model {
     double k_contact;      /* N/m penalty stiffness of a node on a shell or idler */
 } bd_lumped_model;
 
+/* the wrap chord angle above which the build warns (build.c) */
+#define BD_CHORD_WARN_DEG 15.0
+
 /* the contact of the belt with one pulley's shell (pulley_contact.c) */
 typedef struct bd_wrap_contact {
     /* build: the wrap's sector with its margin (pulley_contact.c) */
