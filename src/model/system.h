@@ -168,6 +168,9 @@ typedef struct bd_model {
     double dt, dt_limit;              /* s */
     double inv_dt;                    /* 1/s */
     bd_time_step_limit limit_kind;
+    /* physical bounds of the parts' state, checked every step (sim/bounds.c) */
+    double speed_bound;               /* m/s, pulley surface and carriage speed */
+    double travel_bound;              /* m, takeup carriage travel */
     /* the state at t = 0 every run on this model starts from (a compiled
      * model's; NULL while a simulation owns its model) */
     struct bd_sim *initial;
