@@ -72,7 +72,8 @@ void bd_bounds_prepare(bd_model *m)
 static int out_of_bounds(bd_sim *sim, const bd_pulley_body *p, const char *what, double value,
                          const char *unit, double bound, const char *why)
 {
-    const double t = sim->t + sim->model->dt;
+    /* the state's time: the end of this step (held at 0 while stabilizing) */
+    const double t = sim->stabilizing ? sim->t : sim->t + sim->model->dt;
     const char *name = p->m->def->name;
     if (!isfinite(value))
         snprintf(sim->fail_msg, sizeof sim->fail_msg,

@@ -8,6 +8,9 @@
 
 /* step.c */
 int bd_step_once(bd_sim *sim);
+/* the forces phase alone (belt, part torques, wrap coupling, supports) at
+ * the state now; 0, or 1 when it diverged (message in sim->fail_msg) */
+int bd_step_forces(bd_sim *sim);
 /* v(−Δt/2) for a start from rest */
 void bd_sim_start_at_rest(bd_sim *sim);
 

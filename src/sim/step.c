@@ -72,7 +72,7 @@ static int check_elements(bd_sim *sim)
 
 /* every force at t: the belt's own, the parts' torques, the belt–pulley
  * coupling at each pulley (what the pulley feels), the supports */
-static int compute_forces(bd_sim *sim)
+int bd_step_forces(bd_sim *sim)
 {
     const bd_belt_ops *belt = sim->model->belt;
     belt->forces(sim);
@@ -94,7 +94,7 @@ static int compute_forces(bd_sim *sim)
 void bd_sim_start_at_rest(bd_sim *sim)
 {
     double h = 0.5 * sim->model->dt;
-    if (compute_forces(sim))
+    if (bd_step_forces(sim))
         return;
     for (int i = 0; i < sim->model->n; i++) {
         sim->vx[i] = -sim->fx[i] / sim->mass[i] * h;
@@ -116,7 +116,7 @@ int bd_step_once(bd_sim *sim)
     if (sim->want_energy || sim->energy_every_step)
         en->potential = bd_energy_potential(sim);
     /* forces → part torques → wrap coupling → supports */
-    if (compute_forces(sim))
+    if (bd_step_forces(sim))
         return 1;
 
     /* integrate: belt nodes, then the parts (pulleys, transmissions,
@@ -139,8 +139,10 @@ int bd_step_once(bd_sim *sim)
     if (sim->model->material_mpl > 0.0)
         belt->material(sim);
 
-    /* time, then the sensors at the new time */
-    sim->t += sim->model->dt;
+    /* time, then the sensors at the new time; held at 0 while stabilizing
+     * (seed 001 §6.2: time is there an iteration parameter, stabilize.c) */
+    if (!sim->stabilizing)
+        sim->t += sim->model->dt;
     bd_sensors_update(sim);
     sim->steps++;
     return 0;
