@@ -19,11 +19,21 @@ static void on_sigint(int sig)
     interrupted = 1;
 }
 
+/* 1 while a progress line is on the terminal without its newline */
+static int progress_open = 0;
+
 /* the progress line on a terminal (cli.md): simulated time, percent, wall
- * time, estimated remaining, real-time factor */
+ * time, estimated remaining, real-time factor; while stabilizing, the
+ * relaxation's steps and wall time */
 static void show_progress(const bd_run_progress *p, void *ctx)
 {
     (void)ctx;
+    progress_open = !p->done;
+    if (p->stabilize_steps > 0) {
+        fprintf(stderr, "\r  stabilizing (t = 0): %9ld steps  wall %7.1f s ", p->stabilize_steps,
+                p->wall_s);
+        return;
+    }
     double frac = p->duration_s > 0.0 ? p->t_s / p->duration_s : 1.0;
     double remaining = frac > 0.0 ? p->wall_s * (1.0 - frac) / frac : 0.0;
     fprintf(stderr, "\r  t = %8.3f s  %5.1f%%  wall %7.1f s  remaining %7.1f s  %6.2fx real time ",
@@ -33,11 +43,25 @@ static void show_progress(const bd_run_progress *p, void *ctx)
         fputc('\n', stderr);
 }
 
-/* a study's model diagnostics and failed cases */
+/* a line below the progress line, not on it */
+static void say(const char *prefix, const char *line)
+{
+    fprintf(stderr, "%s%s%s\n", progress_open ? "\n" : "", prefix, line);
+    progress_open = 0;
+}
+
+/* a study's model diagnostics, its cases' warnings and failures */
 static void show_message(const char *line, void *ctx)
 {
     (void)ctx;
-    fprintf(stderr, "%s\n", line);
+    say("", line);
+}
+
+/* a run's warning as it arises (a stabilization that did not reach rest) */
+static void show_warning(const char *line, void *ctx)
+{
+    (void)ctx;
+    say("beltdyn: warning: ", line);
 }
 
 static int usage(FILE *f)
@@ -177,6 +201,7 @@ static int cmd_run(int argc, char **argv)
     opt.progress = !quiet && isatty(STDERR_FILENO) ? show_progress : NULL;
     opt.interrupted = &interrupted;
     opt.hdf5 = hdf5;
+    opt.message = show_warning;
     char err[1024] = "";
     rc = bd_sim_run(sim, &opt, err, sizeof err);
     if (rc != BD_RUN_OK)

@@ -31,6 +31,8 @@ typedef struct bd_run_progress {
     double duration_s;   /* simulated time asked for */
     double wall_s;       /* wall time so far */
     int done;            /* 1: the last call of the run */
+    long stabilize_steps; /* > 0: still relaxing before t = 0 (stabilize),
+                             this many steps so far; t_s is then 0 */
 } bd_run_progress;
 
 typedef void (*bd_progress_fn)(const bd_run_progress *p, void *ctx);
@@ -41,6 +43,12 @@ typedef struct bd_run_options {
     volatile sig_atomic_t *interrupted;   /* set nonzero to stop (SIGINT) */
     int hdf5;                             /* 1: also DIR/tension.h5 */
     void *progress_ctx;                   /* passed to progress */
+    /* a warning said when it arises, one line (a stabilization that did
+     * not reach rest; the run goes on); it is in summary.json's warnings
+     * too. NULL: only there */
+    void (*message)(const char *line, void *ctx);
+    void *message_ctx;                    /* passed to message */
+    long stabilize_max_steps;             /* 0: 2 000 000 (bd_sim_stabilize) */
 } bd_run_options;
 
 /* derive the discrete model (path, elements, idlers, time step, initial
@@ -63,8 +71,23 @@ void bd_model_free(bd_model *model);
  * what limits it, idlers per span, masses */
 void bd_sim_describe(const bd_sim *sim, FILE *f);
 
-/* relax to static equilibrium if the model asks for it (called by run) */
-int bd_sim_stabilize(bd_sim *sim, FILE *log);
+/* relax to static equilibrium by kinetic-energy damping (seed 001 §6.2;
+ * bd_sim_run calls it first when the model has simulation.stabilize): the
+ * clock stays at t = 0 (every table is read there), drives are off and
+ * their pulleys held as a holdback would hold them, friction is on, no
+ * material is fed; all velocities are zeroed at each kinetic-energy peak
+ * until the peaks fall below 1e-7 of the belt's elastic energy. Then the
+ * drive pulleys are let go and the run's clock, travel and statistics
+ * start from zero. opt may be NULL; its interrupted flag stops it, its
+ * progress is called about 4 times a second (stabilize_steps > 0), its
+ * stabilize_max_steps bounds the steps; its out_dir, hdf5 and message are
+ * not used. Returns
+ *   BD_RUN_OK: at rest (err empty), or not at rest after the step limit:
+ *     err then holds the warning (also in the warnings), the state is
+ *     the one reached and a run may go on from it;
+ *   BD_RUN_FAILED: it diverged; err says when, where and why;
+ *   BD_RUN_INTERRUPTED: *opt->interrupted became nonzero. */
+int bd_sim_stabilize(bd_sim *sim, const bd_run_options *opt, char *err, size_t errlen);
 
 /* advance n steps; returns 0, or 1 when the run failed (message in err) */
 int bd_sim_step(bd_sim *sim, long n, char *err, size_t errlen);

@@ -304,7 +304,9 @@ static int write_summary(bd_outputs *o, const bd_sim *sim, double wall, const ch
     bd_json_add_number(en, "balance_error_rel", sim->energy.balance_error_rel);
     if (def->simulation.stabilize) {
         cJSON *st = cJSON_AddObjectToObject(root, "stabilize");
-        bd_json_add_number(st, "steps", sim->stabilize_iterations);
+        bd_json_add_number(st, "steps", (double)sim->stabilize_iterations);
+        bd_json_add_number(st, "resets", sim->stabilize_resets);
+        cJSON_AddBoolToObject(st, "converged", sim->stabilize_converged);
         bd_json_add_number(st, "kinetic_final_J", sim->stabilize_final_kinetic);
     }
     cJSON *w = cJSON_AddArrayToObject(root, "warnings");

@@ -8,19 +8,13 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include <time.h>
 
-static double wall_seconds(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
+#include "base/clock.h"
 
 static void progress(const bd_run_options *opt, const bd_sim *sim, double duration, double wall,
                      int done)
 {
-    bd_run_progress p = {sim->t, duration, wall, done};
+    bd_run_progress p = {sim->t, duration, wall, done, 0};
     opt->progress(&p, opt->progress_ctx);
 }
 
@@ -50,23 +44,35 @@ void bd_sim_report_events(bd_sim *sim)
 
 int bd_sim_run(bd_sim *sim, const bd_run_options *opt, char *err, size_t errlen)
 {
-    double wall0 = wall_seconds();
-    if (sim->model->def->simulation.stabilize && bd_sim_stabilize(sim, NULL)) {
-        snprintf(err, errlen, "%s", sim->fail_msg);
-        return BD_RUN_FAILED;
-    }
+    double wall0 = bd_wall_seconds();
     bd_outputs out;
     if (bd_outputs_open(&out, sim, opt->out_dir, opt->hdf5, err, errlen))
         return BD_RUN_BAD_INPUT;
-    energy_start(sim);
     const double duration = sim->model->def->simulation.duration;
     const double interval = sim->model->def->simulation.output_interval;
     const double dt = sim->model->dt;
-    bd_outputs_row(&out, sim, sim->t);
     double next_out = interval;
     double last_progress = 0.0;
-    int status = BD_RUN_OK;
-    while (sim->t < duration - 0.5 * dt) {
+    int status = BD_RUN_OK, stabilize_ended = 0;
+    /* relax first when asked. Not at rest: said now (opt->message) and in
+     * the warnings, and the run goes on; a failure or an interruption
+     * there ends the run with its outputs (no row: nothing simulated) and
+     * its message in err */
+    if (sim->model->def->simulation.stabilize) {
+        status = bd_sim_stabilize(sim, opt, err, errlen);
+        stabilize_ended = status != BD_RUN_OK;
+        if (stabilize_ended)
+            bd_sim_warn(sim, "%s", err);
+        else if (err[0] && opt->message)
+            opt->message(err, opt->message_ctx);
+        if (!stabilize_ended)
+            err[0] = '\0';
+    }
+    if (status == BD_RUN_OK) {
+        energy_start(sim);
+        bd_outputs_row(&out, sim, sim->t);
+    }
+    while (status == BD_RUN_OK && sim->t < duration - 0.5 * dt) {
         double t_step = sim->t;
         sim->want_energy = t_step >= next_out - 0.5 * dt;
         if (bd_step_once(sim)) {
@@ -84,7 +90,7 @@ int bd_sim_run(bd_sim *sim, const bd_run_options *opt, char *err, size_t errlen)
                 break;
             }
             if (opt->progress) {
-                double w = wall_seconds() - wall0;
+                double w = bd_wall_seconds() - wall0;
                 if (w - last_progress > 0.25) {
                     progress(opt, sim, duration, w, 0);
                     last_progress = w;
@@ -99,19 +105,19 @@ int bd_sim_run(bd_sim *sim, const bd_run_options *opt, char *err, size_t errlen)
         bd_outputs_row(&out, sim, sim->t);
     }
     if (opt->progress)
-        progress(opt, sim, duration, wall_seconds() - wall0, 1);
-    if (status == BD_RUN_FAILED)
+        progress(opt, sim, duration, bd_wall_seconds() - wall0, 1);
+    if (status == BD_RUN_FAILED && !stabilize_ended)
         snprintf(err, errlen, "%s", sim->fail_msg);
-    else if (status == BD_RUN_INTERRUPTED)
+    else if (status == BD_RUN_INTERRUPTED && !stabilize_ended)
         snprintf(err, errlen, "interrupted at t = %.4f s; outputs written up to that time", sim->t);
     bd_sim_report_events(sim);
-    if (sim->tension_min < 0.0)
+    if (sim->tension_min < 0.0 && !stabilize_ended)
         bd_sim_warn(sim, "the belt is in compression (lowest tension %.0f N at t = %.3f s, "
                     "s = %.2f m): raise the takeup force", sim->tension_min, sim->tension_min_t,
                     sim->tension_min_s);
     const char *word = status == BD_RUN_OK ? "completed"
                      : status == BD_RUN_FAILED ? "failed" : "interrupted";
-    if (bd_outputs_close(&out, sim, wall_seconds() - wall0, word) && status == BD_RUN_OK) {
+    if (bd_outputs_close(&out, sim, bd_wall_seconds() - wall0, word) && status == BD_RUN_OK) {
         snprintf(err, errlen, "could not write the outputs in '%s'", opt->out_dir);
         return BD_RUN_FAILED;
     }

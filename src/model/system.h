@@ -94,6 +94,9 @@ typedef struct bd_pulley_body {
     double f_axis;          /* N belt force on the pulley along its axis */
     double fnc_axis;        /* N its non-conservative part */
     double torque_friction; /* N·m belt friction torque on the pulley */
+    /* run control: held still, as a holdback or brake holds it (a drive
+     * pulley while stabilizing); its wrap coupling then takes α = 0 */
+    int held;
     /* step, parts advance */
     double omega;           /* rad/s, positive drives the belt forward */
     double q, qdot;         /* m, m/s carriage travel along axis */
@@ -174,6 +177,9 @@ typedef struct bd_model {
     double dt, dt_limit;              /* s */
     double inv_dt;                    /* 1/s */
     bd_time_step_limit limit_kind;
+    /* physical bounds of the parts' state, checked every step (sim/bounds.c) */
+    double speed_bound;               /* m/s, pulley surface and carriage speed */
+    double travel_bound;              /* m, takeup carriage travel */
     /* the state at t = 0 every run on this model starts from (a compiled
      * model's; NULL while a simulation owns its model) */
     struct bd_sim *initial;
@@ -223,10 +229,13 @@ struct bd_sim {
     bd_energy energy;
     double tension_max, tension_max_t, tension_max_s;
     double tension_min, tension_min_t, tension_min_s;
-    int stabilize_iterations;
+    long stabilize_iterations;
+    int stabilize_resets;
+    int stabilize_converged;
     double stabilize_final_kinetic;
     /* run control */
-    int friction_off;      /* during stabilization: no friction, no drives */
+    int stabilizing;       /* relaxing before t = 0 (stabilize.c): clock held at
+                              0, drives off, drive pulleys held, no feed */
     int want_energy;       /* book the potential energy in the next step */
     int energy_every_step; /* ... and in every step (bd_sim_book_energy_every_step) */
     char fail_msg[512];

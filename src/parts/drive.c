@@ -149,3 +149,15 @@ double bd_drive_torque(const bd_sim *sim, bd_drive *dr, const bd_pulley_body *p,
         *slope = K;
     return Tc;
 }
+
+/* Stabilization held the pulley still (a holdback); the speed loop takes
+ * the holding torque over without a jolt, as a drive proves its torque
+ * before its brake lets go: the integral that gives that torque at zero
+ * speed error (ω_ref(0) = 0). Torque and motor drives give at t = 0 what
+ * their table or motor gives. */
+void bd_drive_take_over(bd_drive *dr, double torque)
+{
+    double k = dr->ctrl_inertia * dr->ctrl_bandwidth * dr->ctrl_bandwidth;
+    if (dr->def->control == BD_CONTROL_SPEED && k > 0.0)
+        dr->integral = clip(torque, dr->def->max_torque) / k;
+}

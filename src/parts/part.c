@@ -99,15 +99,15 @@ bd_drive *bd_part_drive(bd_part *part)
 
 /* part torques phase: what the part puts on its pulley's shaft at the
  * pulley's present speed, and (*slope) how fast that falls with the speed.
- * A drive is off while stabilizing; a transmission then still carries its
- * belt. */
+ * A drive is off while stabilizing (its pulley is held); a transmission
+ * then still carries its belt. */
 double bd_part_torque(bd_sim *sim, bd_part *part, double *slope)
 {
     bd_pulley_body *p = &sim->pulleys[part->pulley];
     *slope = 0.0;
     switch (part->type) {
     case BD_PART_DRIVE:
-        return sim->friction_off ? 0.0 : bd_drive_torque(sim, &part->u.drive, p, p->omega, slope);
+        return sim->stabilizing ? 0.0 : bd_drive_torque(sim, &part->u.drive, p, p->omega, slope);
     case BD_PART_TRANSMISSION: return bd_transmission_torque(sim, part);
     case BD_PART_TAKEUP: break;
     }
@@ -166,6 +166,17 @@ void bd_part_reset(bd_part *part)
     case BD_PART_DRIVE: part->u.drive.integral = 0.0; break;
     case BD_PART_TRANSMISSION: part->u.transmission.drive.integral = 0.0; break;
     case BD_PART_TAKEUP: part->u.takeup.limit_hits = 0; break;
+    }
+}
+
+void bd_part_release(bd_part *part, double holding_torque)
+{
+    switch (part->type) {
+    case BD_PART_DRIVE: bd_drive_take_over(&part->u.drive, holding_torque); break;
+    /* its motor side ran free while the pulley was held: it starts from
+     * its own torque */
+    case BD_PART_TRANSMISSION:
+    case BD_PART_TAKEUP: break;
     }
 }
 

@@ -70,6 +70,9 @@ double bd_part_potential(const bd_sim *sim, const bd_part *part);
 double bd_parts_stored_energy(const bd_sim *sim);
 /* run statistics back to zero (after stabilization) */
 void bd_part_reset(bd_part *part);
+/* after stabilization, the pulley's holdback lets go: a drive takes over
+ * the torque it held (N·m on the pulley) */
+void bd_part_release(bd_part *part, double holding_torque);
 /* events the step recorded, said after the run */
 void bd_part_report_events(bd_sim *sim, const bd_part *part);
 
@@ -97,6 +100,9 @@ void bd_drive_prepare(bd_sim *sim, bd_drive *d, const bd_pulley_body *p,
  * takes implicitly (bd_pulley_body.torque_damping) */
 double bd_drive_torque(const bd_sim *sim, bd_drive *d, const bd_pulley_body *p, double omega,
                        double *slope);
+/* a speed loop takes over torque (N·m) from the holdback that held its
+ * pulley (after stabilization) */
+void bd_drive_take_over(bd_drive *d, double torque);
 
 /* takeup.c */
 double bd_takeup_force(const bd_takeup *tk, double t);

@@ -68,5 +68,10 @@ void bd_pulleys_advance(bd_sim *sim, double *ke, double *w_nc)
         p->omega += p->alpha * dt;
         for (int k = p->m->first_part; k < p->m->first_part + p->m->part_count; k++)
             bd_part_advance(sim, &sim->parts[k], w_old, w_mid, ke, w_nc);
+        /* held (a drive pulley while stabilizing, as its holdback holds it):
+         * its wrap coupling took α = 0; what a transmission adds goes into
+         * the hold */
+        if (p->held)
+            p->omega = 0.0;
     }
 }

@@ -205,7 +205,7 @@ double bd_transmission_torque(bd_sim *sim, bd_part *part)
 {
     bd_transmission *tr = part->u.transmission.belt;
     tr->Q_m = 0.0;
-    if (!sim->friction_off)
+    if (!sim->stabilizing)
         tr->Q_m = bd_drive_torque(sim, &part->u.transmission.drive, &sim->pulleys[part->pulley],
                                   tr->w_m / tr->i, NULL) / tr->i;
     return tr->torque_p;
@@ -226,7 +226,8 @@ void bd_transmission_advance(bd_sim *sim, bd_part *part, double omega_old, doubl
         double dx = tr->x_m - tr->x_p;
         double Qb = -b * tr->w_m;
         span_solve ss = {tr, h, tr->Q_m + Qb, w_p, dx, p->m->inertia, 0.0, 0.0, 0.0, 0.0};
-        span_solve_run(&ss, !sim->friction_off);
+        /* while stabilizing, its pulley is held: the transmission runs free */
+        span_solve_run(&ss, !sim->stabilizing);
         double w_new = tr->w_m + h * (ss.Q - tr->r_m * ss.F_m) / J;
         double vm = 0.5 * (tr->v_m + ss.v_m), vp = 0.5 * (tr->v_p + ss.v_p);
         double wm = 0.5 * (tr->w_m + w_new);

@@ -120,6 +120,7 @@ static int create(const bd_model_def *def, bd_sim *volatile *out, bd_diag *diag)
             bd_monitor_init(sim, &sim->pulleys[i]);
     if (bd_time_step_choose(sim, diag))
         return 1;
+    bd_bounds_prepare(sim->own);
     bd_parts_create(sim);
     prepare_drives(sim);
     for (int i = 0; i < sim->model->n; i++)

@@ -8,8 +8,17 @@
 
 /* step.c */
 int bd_step_once(bd_sim *sim);
+/* the forces phase alone (belt, part torques, wrap coupling, supports) at
+ * the state now; 0, or 1 when it diverged (message in sim->fail_msg) */
+int bd_step_forces(bd_sim *sim);
 /* v(−Δt/2) for a start from rest */
 void bd_sim_start_at_rest(bd_sim *sim);
+
+/* bounds.c: the parts' physical bounds (build: bd_bounds_prepare sets
+ * model->speed_bound and travel_bound; step: 0, or 1 with the message in
+ * sim->fail_msg) */
+void bd_bounds_prepare(bd_model *model);
+int bd_bounds_check(bd_sim *sim);
 
 /* energy.c */
 double bd_energy_potential(const bd_sim *sim);

@@ -1,22 +1,45 @@
-/* Stabilization by kinetic-energy damping (seed 001 §6.2): run the model
- * without contact friction and without drives; each time the kinetic energy
- * passes a maximum, set every velocity to zero. The energy left after each
- * reset shrinks until the system rests in static equilibrium. Time here is
- * an iteration parameter: the clock is set back to 0 afterwards. */
+/* Stabilization by kinetic-energy damping (seed 001 §6.2): "When the
+ * kinetic energy of the system attains a maximum, the kinetic energy of the
+ * system is set to zero ... by setting the velocities of all the objects to
+ * zero", until the total energy is constant; "time is a non-physical
+ * iteration (or relaxation) parameter during the stabilization process".
+ *
+ * So the clock is held at t = 0 (sim->stabilizing; step.c does not advance
+ * it): every table — a takeup's force, a drive's torque — is read at t = 0,
+ * and the state reached is the equilibrium the run starts from at t = 0.
+ *
+ * The conveyor is at rest as it stands before a start: drives off, each
+ * drive pulley held still as its holdback or brake holds it (p->held: its
+ * wrap coupling takes α = 0 and the belt sticks to it by friction, up to
+ * the capstan limit), no material fed. Friction stays on everywhere: at
+ * rest it holds what a real belt's friction holds, and on the held drive
+ * pulley it is what keeps a loaded incline from running back. (With
+ * friction and drives off, as before, nothing held the belt: on a loaded
+ * incline the belt ran back downhill through the whole step limit.)
+ *
+ * Converged when the kinetic energy at a peak is below STABILIZE_TOL of the
+ * belt's elastic energy (or of 1 J) for three peaks in a row. Then the
+ * drive pulleys are let go and the clock, travel and bookkeeping restart
+ * from zero; the run's first step finds its drive at t = 0. */
 #include "sim/engine.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
+#include "base/clock.h"
 #include "parts/parts.h"
 #include "sensors/sensors.h"
 
+/* steps at most, unless the caller's options say (bd_run_options) */
 #define STABILIZE_MAX_STEPS 2000000L
-/* converged when the kinetic energy at a peak is below this fraction of the
- * belt's elastic energy (or of 1 J) for three peaks in a row; 1e-9 took 35×
- * the steps on head_drive and moved its tensions by 0.03% (physics.md §7) */
+/* 1e-9 took 35× the steps on head_drive and moved its tensions by 0.03%
+ * (physics.md §7) */
 #define STABILIZE_TOL 1e-7
+/* belt nodes whose displacement the messages quote (sampled evenly) */
+#define SAMPLED_NODES 64
+/* progress: the wall clock is read every this many steps */
+#define PROGRESS_EVERY 1024
 
 static void zero_velocities(bd_sim *sim)
 {
@@ -30,46 +53,53 @@ static void zero_velocities(bd_sim *sim)
         sim->idlers[i].omega = 0.0;
 }
 
-int bd_sim_stabilize(bd_sim *sim, FILE *log)
+/* the drive pulleys held (1) or let go (0); the clock, drives and feed
+ * with them */
+static void hold(bd_sim *sim, int on, int feeding)
 {
-    sim->friction_off = 1;
-    int feeding = sim->has_feed;
-    sim->has_feed = 0;
-    double prev = 0.0, scale = sim->model->belt->elastic_energy(sim);
-    if (scale < 1.0)
-        scale = 1.0;
-    int quiet_peaks = 0, resets = 0;
-    long k;
-    for (k = 0; k < STABILIZE_MAX_STEPS; k++) {
-        if (bd_step_once(sim)) {
-            sim->friction_off = 0;
-            sim->has_feed = feeding;
-            return 1;
-        }
-        double ke = sim->energy.kinetic;
-        if (ke < prev) {
-            /* a peak: take the energy out */
-            zero_velocities(sim);
-            resets++;
-            quiet_peaks = prev < STABILIZE_TOL * scale ? quiet_peaks + 1 : 0;
-            if (quiet_peaks >= 3)
-                break;
-            prev = 0.0;
-        } else {
-            prev = ke;
-        }
+    sim->stabilizing = on;
+    sim->has_feed = on ? 0 : feeding;
+    for (int i = 0; i < sim->model->pulley_count; i++)
+        sim->pulleys[i].held = on && sim->pulleys[i].m->def->has_drive;
+}
+
+/* where a sample of the belt's nodes is (before), and how far the farthest
+ * of them has moved since (after): the messages' "the belt moved" */
+typedef struct node_sample {
+    int count, node[SAMPLED_NODES];
+    double x[SAMPLED_NODES], y[SAMPLED_NODES];
+} node_sample;
+
+static void sample_nodes(const bd_sim *sim, node_sample *s)
+{
+    int n = sim->model->n;
+    s->count = n < SAMPLED_NODES ? n : SAMPLED_NODES;
+    for (int k = 0; k < s->count; k++) {
+        s->node[k] = (int)((long)k * n / s->count);
+        s->x[k] = sim->x[s->node[k]];
+        s->y[k] = sim->y[s->node[k]];
     }
-    sim->stabilize_iterations = (int)(k < STABILIZE_MAX_STEPS ? k + 1 : k);
-    sim->stabilize_final_kinetic = prev;
-    if (k >= STABILIZE_MAX_STEPS)
-        bd_sim_warn(sim, "stabilization stopped after %ld steps without reaching rest "
-                    "(kinetic energy %.3g J)", k, prev);
-    if (log)
-        fprintf(log, "stabilized in %d steps (%d resets), final kinetic energy %.3g J\n",
-                sim->stabilize_iterations, resets, prev);
-    /* the run starts from here: clock, travel and bookkeeping back to zero */
-    sim->friction_off = 0;
-    sim->has_feed = feeding;
+}
+
+static double sample_moved(const bd_sim *sim, const node_sample *s)
+{
+    double d = 0.0;
+    for (int k = 0; k < s->count; k++)
+        d = fmax(d, hypot(sim->x[s->node[k]] - s->x[k], sim->y[s->node[k]] - s->y[k]));
+    return d;
+}
+
+static void report_progress(const bd_run_options *opt, long steps, double wall)
+{
+    bd_run_progress p = {0};
+    p.wall_s = wall;
+    p.stabilize_steps = steps;
+    opt->progress(&p, opt->progress_ctx);
+}
+
+/* the run starts from here: clock, travel and bookkeeping back to zero */
+static void restart_clock(bd_sim *sim)
+{
     sim->t = 0.0;
     sim->steps = 0;
     for (int i = 0; i < sim->model->pulley_count; i++) {
@@ -77,8 +107,12 @@ int bd_sim_stabilize(bd_sim *sim, FILE *log)
         p->q = 0.0;
         p->travel_min = p->travel_max = 0.0;
         p->torque_max_abs = 0.0;
-        for (int m = p->m->first_part; m < p->m->first_part + p->m->part_count; m++)
+        /* what the held pulley's holdback carried: the belt's friction
+         * torque on it, reversed */
+        for (int m = p->m->first_part; m < p->m->first_part + p->m->part_count; m++) {
             bd_part_reset(&sim->parts[m]);
+            bd_part_release(&sim->parts[m], -p->torque_friction);
+        }
         if (p->m->def->has_drive)
             bd_monitor_reset(sim, p);
     }
@@ -86,5 +120,88 @@ int bd_sim_stabilize(bd_sim *sim, FILE *log)
     sim->tension_min = INFINITY;
     memset(&sim->energy, 0, sizeof sim->energy);
     bd_sim_start_at_rest(sim);
-    return 0;
+}
+
+int bd_sim_stabilize(bd_sim *sim, const bd_run_options *opt, char *err, size_t errlen)
+{
+    const double wall0 = bd_wall_seconds();
+    double last_progress = 0.0;
+    int feeding = sim->has_feed;
+    node_sample laid;
+    sample_nodes(sim, &laid);
+    hold(sim, 1, feeding);
+    zero_velocities(sim);
+    double prev = 0.0, peak = 0.0, scale = sim->model->belt->elastic_energy(sim);
+    if (scale < 1.0)
+        scale = 1.0;
+    int quiet_peaks = 0, resets = 0, status = BD_RUN_OK, converged = 0;
+    long k, max_steps = opt && opt->stabilize_max_steps > 0 ? opt->stabilize_max_steps
+                                                            : STABILIZE_MAX_STEPS;
+    err[0] = '\0';
+    for (k = 0; k < max_steps && !converged; k++) {
+        if (opt && opt->interrupted && *opt->interrupted) {
+            status = BD_RUN_INTERRUPTED;
+            break;
+        }
+        if (bd_step_once(sim)) {
+            status = BD_RUN_FAILED;
+            break;
+        }
+        double ke = sim->energy.kinetic;
+        if (ke < prev) {
+            /* a peak: take the energy out */
+            zero_velocities(sim);
+            resets++;
+            peak = prev;
+            quiet_peaks = peak < STABILIZE_TOL * scale ? quiet_peaks + 1 : 0;
+            converged = quiet_peaks >= 3;
+            prev = 0.0;
+        } else {
+            prev = ke;
+        }
+        if (opt && opt->progress && k % PROGRESS_EVERY == 0) {
+            double w = bd_wall_seconds() - wall0;
+            if (w - last_progress > 0.25) {
+                report_progress(opt, k + 1, w);
+                last_progress = w;
+            }
+        }
+    }
+    /* at rest and still held: what each holdback carries now is the belt's
+     * static friction torque on its pulley (the speed drives take it over) */
+    if (status == BD_RUN_OK) {
+        zero_velocities(sim);
+        if (bd_step_forces(sim))
+            status = BD_RUN_FAILED;
+    }
+    hold(sim, 0, feeding);
+    sim->stabilize_iterations = k;
+    sim->stabilize_resets = resets;
+    sim->stabilize_converged = converged;
+    sim->stabilize_final_kinetic = peak;
+    double moved = sample_moved(sim, &laid);
+    if (status == BD_RUN_FAILED) {
+        snprintf(err, errlen, "stabilization failed in its step %ld (relaxing to rest before "
+                 "t = 0; the belt had moved up to %.3g m from where it was laid): %s", k + 1,
+                 moved, sim->fail_msg);
+        return status;
+    }
+    if (status == BD_RUN_INTERRUPTED) {
+        snprintf(err, errlen, "interrupted while stabilizing, after %ld steps (before t = 0; "
+                 "nothing simulated)", k);
+        return status;
+    }
+    if (!converged) {
+        snprintf(err, errlen, "stabilization did not reach rest in %ld steps: the kinetic "
+                 "energy still peaks at %.3g J (%.2g of the belt's elastic energy; rest is "
+                 "below %.0e for three peaks); the belt moved up to %.3g m from where it was "
+                 "laid%s. The run starts from that state, not in equilibrium",
+                 k, peak, peak / scale, STABILIZE_TOL, moved,
+                 moved > sim->model->l0 ? ", more than an element: it creeps (slips on a held "
+                                          "drive pulley, or a pulley with no drive lets it run)"
+                                        : "");
+        bd_sim_warn(sim, "%s", err);
+    }
+    restart_clock(sim);
+    return BD_RUN_OK;
 }

@@ -41,12 +41,20 @@ static int check_elements(bd_sim *sim)
               : hi > DIVERGED_STRAIN * sim->model->EA ? bd_tension_element(sim, hi)
                                                       : bd_tension_element(sim, lo);
         double strain = belt->element_strain(sim, e);
+        char what[96];
+        if (nan_at >= 0)
+            /* the strain may be finite: a node's velocity is not (the
+             * tension's dashpot term c·dl/dt carries it) */
+            snprintf(what, sizeof what, "tension NaN (strain %.3g)", strain);
+        else
+            snprintf(what, sizeof what, "strain %.3g%s", strain,
+                     strain < 0.0 ? " (element reversed)" : "");
         snprintf(sim->fail_msg, sizeof sim->fail_msg,
                  "the simulation diverged at t = %.6f s (step %ld): %s belt element %d at "
-                 "s = %.3f m (x = %.3f, y = %.3f) has strain %.3g%s; the time step %.3g s "
+                 "s = %.3f m (x = %.3f, y = %.3f) has %s; the time step %.3g s "
                  "is too large for the forces acting, or the model is unstable",
                  sim->t, sim->steps, belt->name, e, belt->element_s(sim, e), sim->x[e],
-                 sim->y[e], strain, strain < 0.0 ? " (element reversed)" : "", sim->model->dt);
+                 sim->y[e], what, sim->model->dt);
         return 1;
     }
     if (hi > sim->tension_max) {
@@ -64,7 +72,7 @@ static int check_elements(bd_sim *sim)
 
 /* every force at t: the belt's own, the parts' torques, the belt–pulley
  * coupling at each pulley (what the pulley feels), the supports */
-static int compute_forces(bd_sim *sim)
+int bd_step_forces(bd_sim *sim)
 {
     const bd_belt_ops *belt = sim->model->belt;
     belt->forces(sim);
@@ -86,7 +94,7 @@ static int compute_forces(bd_sim *sim)
 void bd_sim_start_at_rest(bd_sim *sim)
 {
     double h = 0.5 * sim->model->dt;
-    if (compute_forces(sim))
+    if (bd_step_forces(sim))
         return;
     for (int i = 0; i < sim->model->n; i++) {
         sim->vx[i] = -sim->fx[i] / sim->mass[i] * h;
@@ -108,7 +116,7 @@ int bd_step_once(bd_sim *sim)
     if (sim->want_energy || sim->energy_every_step)
         en->potential = bd_energy_potential(sim);
     /* forces → part torques → wrap coupling → supports */
-    if (compute_forces(sim))
+    if (bd_step_forces(sim))
         return 1;
 
     /* integrate: belt nodes, then the parts (pulleys, transmissions,
@@ -119,6 +127,9 @@ int bd_step_once(bd_sim *sim)
     bd_idlers_advance(sim, &ke, &w_nc);
     if (belt->after_parts)
         belt->after_parts(sim);
+    /* the parts' physical bounds: a runaway pulley or carriage (bounds.c) */
+    if (bd_bounds_check(sim))
+        return 1;
     en->dissipated -= w_nc;
     en->kinetic = ke;
     if (ke > en->max_kinetic)
@@ -128,8 +139,10 @@ int bd_step_once(bd_sim *sim)
     if (sim->model->material_mpl > 0.0)
         belt->material(sim);
 
-    /* time, then the sensors at the new time */
-    sim->t += sim->model->dt;
+    /* time, then the sensors at the new time; held at 0 while stabilizing
+     * (seed 001 §6.2: time is there an iteration parameter, stabilize.c) */
+    if (!sim->stabilizing)
+        sim->t += sim->model->dt;
     bd_sensors_update(sim);
     sim->steps++;
     return 0;

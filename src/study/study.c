@@ -265,6 +265,20 @@ static void say_diag(const bd_study_options *opt, const bd_diag *diag)
         opt->message(diag->lines[i], opt->message_ctx);
 }
 
+/* a run's warning said as it arises (bd_run_options.message), with its case */
+typedef struct case_message {
+    const bd_study_options *opt;
+    const char *name;
+} case_message;
+
+static void say_case_warning(const char *line, void *ctx)
+{
+    const case_message *cm = ctx;
+    char buf[1400];
+    snprintf(buf, sizeof buf, "case %s: warning: %s", cm->name, line);
+    cm->opt->message(buf, cm->opt->message_ctx);
+}
+
 static int run_case(bd_model_def *def, study_case *c, const bd_study_options *opt, char *err,
                     size_t errlen)
 {
@@ -285,6 +299,11 @@ static int run_case(bd_model_def *def, study_case *c, const bd_study_options *op
         ro.progress = opt->progress;
         ro.progress_ctx = opt->progress_ctx;
         ro.interrupted = opt->interrupted;
+        case_message cm = {opt, c->name};
+        if (opt->message) {
+            ro.message = say_case_warning;
+            ro.message_ctx = &cm;
+        }
         char msg[1024] = "";
         status = bd_sim_run(sim, &ro, msg, sizeof msg);
         if (status != BD_RUN_OK)

@@ -9,46 +9,15 @@ set -u
 : "${BELTDYN:?BELTDYN must name the built beltdyn}"
 DATA="${TEST_DATA:-$(cd "$(dirname "$0")/../data" && pwd)}"
 tmp=$(mktemp -d)
-pid=""
-watchdog=""
-cleanup() {
-    [ -n "$watchdog" ] && kill "$watchdog" 2>/dev/null
-    [ -n "$pid" ] && kill -9 "$pid" 2>/dev/null
-    rm -rf "$tmp"
-}
-trap cleanup EXIT
+. "$(dirname "$0")/lib/sigint_run.sh"
+trap 'sigint_cleanup; rm -rf "$tmp"' EXIT
 passed=0
 failed=0
 ok() { echo "ok   $1"; passed=$((passed + 1)); }
 bad() { echo "FAIL $1: $2"; failed=$((failed + 1)); }
 
 out="$tmp/out"
-"$BELTDYN" run "$DATA/long_run.yaml" -o "$out" >"$tmp/run.out" 2>"$tmp/run.err" &
-pid=$!
-# safety net: never let the run outlive 20 s (polls, so it ends with the run
-# and leaves no sleeping child behind)
-(
-    for _ in $(seq 200); do
-        sleep 0.1
-        kill -0 "$pid" 2>/dev/null || exit 0
-    done
-    kill -9 "$pid" 2>/dev/null
-) &
-watchdog=$!
-
-sleep 1
-if kill -0 "$pid" 2>/dev/null; then
-    ok "run still going after 1 s"
-    kill -INT "$pid"
-else
-    bad "run" "finished before the signal (the model is not long enough)"
-fi
-wait "$pid"
-rc=$?
-pid=""
-kill "$watchdog" 2>/dev/null
-wait "$watchdog" 2>/dev/null
-watchdog=""
+sigint_run "$tmp/run.out" "$tmp/run.err" "$BELTDYN" run "$DATA/long_run.yaml" -o "$out"
 
 if [ $rc -eq 130 ]; then ok "exit code 130"
 elif [ $rc -eq 137 ]; then bad "exit code" "killed by the 20 s watchdog: SIGINT did not stop the run"

@@ -18,6 +18,7 @@ typedef struct bd_torture_result {
     double force_scale;        /* N, the law's terms summed in magnitude */
     double wall_s;
     int nodes;
+    int not_at_rest;           /* stabilization stopped short of rest */
 } bd_torture_result;
 
 typedef struct bd_torture_options {

@@ -125,9 +125,10 @@ int main(int argc, char **argv)
         int ok = why[0] == '\0';
         failures += !ok;
         printf("%s seed %lu [%s] %s: %d nodes, %.1f s wall, balance %.2g, force %.0f/%.0f N, "
-               "speed %.3f/%.3f%s%s\n",
+               "speed %.3f/%.3f%s%s%s\n",
                ok ? "ok  " : "FAIL", seed, gen.formulation, info.summary, r.nodes, r.wall_s,
-               r.balance, r.force, r.force_law, r.speed, r.speed_target, ok ? "" : " —", why);
+               r.balance, r.force, r.force_law, r.speed, r.speed_target, r.not_at_rest ? " (stabilization short of rest)" : "",
+               ok ? "" : " —", why);
         fflush(stdout);
     }
     printf("torture [%s]: %d of %d conveyors pass; worst balance %.3g, worst force error "

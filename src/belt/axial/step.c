@@ -90,19 +90,19 @@ void bd_axial_wrap(bd_sim *sim, bd_pulley_body *p, double Q)
     const double dt = sim->model->dt, R = p->m->radius;
     int e_in = i == 0 ? n - 1 : i - 1;
     double T_in = sim->tension[e_in], T_out = sim->tension[i];
-    double F = 0.0, I = bd_pulley_solve_inertia(sim, p);
-    if (!sim->friction_off) {
-        double m = sim->mass[i];
-        double v_free = sim->vx[i] + dt * sim->fx[i] / m - R * (p->omega + dt * Q / I);
-        double kappa = dt * (1.0 / m + R * R / I);
-        F = bd_bpl_solve(&ap->law, T_in, T_out, sim->vx[i], v_free, kappa);
-    }
+    /* a held pulley (p->held: stabilization's holdback) does not turn: an
+     * infinite inertia; a drive's implicit gain adds to a turning one's */
+    double m = sim->mass[i], I = bd_pulley_solve_inertia(sim, p);
+    double w_free = p->held ? p->omega : p->omega + dt * Q / I;
+    double v_free = sim->vx[i] + dt * sim->fx[i] / m - R * w_free;
+    double kappa = dt * (1.0 / m + (p->held ? 0.0 : R * R / I));
+    double F = bd_bpl_solve(&ap->law, T_in, T_out, sim->vx[i], v_free, kappa);
     sim->fx[i] += F;
     sim->fnx[i] += F;
     p->torque_friction = -R * F;
-    p->alpha = (Q - R * F) / I;
+    p->alpha = p->held ? 0.0 : (Q - R * F) / I;
     /* recorded here, said after the run (bd_axial_report_events) */
-    if ((T_in <= 0.0 || T_out <= 0.0) && !as->slack_warned && !sim->friction_off) {
+    if ((T_in <= 0.0 || T_out <= 0.0) && !as->slack_warned && !sim->stabilizing) {
         as->slack_warned = 1;
         as->slack_t = sim->t;
         as->slack_arriving = T_in <= 0.0;

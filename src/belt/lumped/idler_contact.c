@@ -92,8 +92,6 @@ static void idler_contact(bd_sim *sim, bd_idler *id)
     sim->fny[e] += h * Fy;
     sim->fnx[j] += g * Fx;
     sim->fny[j] += g * Fy;
-    if (sim->friction_off)
-        return;
     double R = im->radius;
     double vr = vt - id->omega * R;
     double num = vr * sim->model->inv_dt + he * (tx * sim->fx[e] + ty * sim->fy[e])

@@ -213,7 +213,8 @@ static void friction_forces(bd_sim *sim, bd_pulley_body *p, double T_p)
             A += sim->mass[k] * vr / dt + W->c_tx[c] * sim->fx[k] + W->c_ty[c] * sim->fy[k];
             M += sim->mass[k];
         }
-        alpha = (R * A + R * Fk + T_p) / (bd_pulley_solve_inertia(sim, p) + R * R * M);
+        /* a held pulley (p->held: stabilization's holdback) does not turn */
+        alpha = p->held ? 0.0 : (R * A + R * Fk + T_p) / (bd_pulley_solve_inertia(sim, p) + R * R * M);
         int changed = 0;
         for (int c = 0; c < nc; c++) {
             if (W->c_slip[c])
@@ -256,8 +257,8 @@ void bd_lumped_wrap(bd_sim *sim, bd_pulley_body *p, double external_torque)
     normal_forces(sim, p);
     const bd_wrap_contact *W = wrap_of(sim, p);
     p->torque_friction = 0.0;
-    if (sim->friction_off || W->contact_count == 0) {
-        p->alpha = external_torque / bd_pulley_solve_inertia(sim, p);
+    if (W->contact_count == 0) {
+        p->alpha = p->held ? 0.0 : external_torque / bd_pulley_solve_inertia(sim, p);
         return;
     }
     friction_forces(sim, p, external_torque);
