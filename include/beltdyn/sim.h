@@ -29,7 +29,8 @@ enum {
 typedef struct bd_run_progress {
     double t_s;          /* simulated time reached */
     double duration_s;   /* simulated time asked for */
-    double wall_s;       /* wall time so far */
+    double wall_s;       /* wall time so far (of the stabilization while it
+                            runs, then of the simulated time) */
     int done;            /* 1: the last call of the run */
     long stabilize_steps; /* > 0: still relaxing before t = 0 (stabilize),
                              this many steps so far; t_s is then 0 */

@@ -31,6 +31,17 @@ typedef struct bd_belt_sample {
     double speed;     /* m/s along the direction of travel */
 } bd_belt_sample;
 
+/* what the formulation would build from a model, estimated before anything
+ * is allocated (sim/estimate.c): cheap, from the definition and the path */
+typedef struct bd_belt_estimate {
+    double element_length;   /* m, the length its build aims at */
+    double nodes, idlers;    /* how many (idlers as bodies; 0 when spread) */
+    double node_bytes;       /* bytes per node at the build's peak */
+    double idler_bytes;      /* bytes per idler body */
+    double stable_step;      /* s, of elements element_length long */
+    double rate;             /* (node + idler)-steps per second, measured */
+} bd_belt_estimate;
+
 typedef struct bd_belt_ops {
     const char *name;          /* as model-format.md `belt.formulation` */
     const char *description;   /* for `beltdyn check` */
@@ -50,6 +61,8 @@ typedef struct bd_belt_ops {
     void (*clone)(bd_sim *dst, const bd_sim *src);
     /* largest stable time step, and what limits it */
     double (*stable_step)(const bd_sim *sim, bd_time_step_limit *limit);
+    /* what build would make of def on path (before it allocates) */
+    void (*estimate)(const bd_model_def *def, const bd_path *path, bd_belt_estimate *out);
 
     /* the step's phases (see above) */
     void (*forces)(bd_sim *sim);

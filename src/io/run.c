@@ -61,17 +61,22 @@ int bd_sim_run(bd_sim *sim, const bd_run_options *opt, char *err, size_t errlen)
     if (sim->model->def->simulation.stabilize) {
         status = bd_sim_stabilize(sim, opt, err, errlen);
         stabilize_ended = status != BD_RUN_OK;
-        if (stabilize_ended)
+        if (stabilize_ended) {
             bd_sim_warn(sim, "%s", err);
-        else if (err[0] && opt->message)
-            opt->message(err, opt->message_ctx);
-        if (!stabilize_ended)
+        } else {
+            if (err[0] && opt->message)
+                opt->message(err, opt->message_ctx);
             err[0] = '\0';
+        }
     }
     if (status == BD_RUN_OK) {
         energy_start(sim);
         bd_outputs_row(&out, sim, sim->t);
     }
+    /* the progress of the simulated time counts its own wall time (the
+     * stabilization reported its own), so that the remaining time and the
+     * real-time factor are the run's */
+    const double wall_run0 = bd_wall_seconds();
     while (status == BD_RUN_OK && sim->t < duration - 0.5 * dt) {
         double t_step = sim->t;
         sim->want_energy = t_step >= next_out - 0.5 * dt;
@@ -90,7 +95,7 @@ int bd_sim_run(bd_sim *sim, const bd_run_options *opt, char *err, size_t errlen)
                 break;
             }
             if (opt->progress) {
-                double w = bd_wall_seconds() - wall0;
+                double w = bd_wall_seconds() - wall_run0;
                 if (w - last_progress > 0.25) {
                     progress(opt, sim, duration, w, 0);
                     last_progress = w;
@@ -105,7 +110,7 @@ int bd_sim_run(bd_sim *sim, const bd_run_options *opt, char *err, size_t errlen)
         bd_outputs_row(&out, sim, sim->t);
     }
     if (opt->progress)
-        progress(opt, sim, duration, bd_wall_seconds() - wall0, 1);
+        progress(opt, sim, duration, bd_wall_seconds() - wall_run0, 1);
     if (status == BD_RUN_FAILED && !stabilize_ended)
         snprintf(err, errlen, "%s", sim->fail_msg);
     else if (status == BD_RUN_INTERRUPTED && !stabilize_ended)

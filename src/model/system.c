@@ -44,6 +44,11 @@ void bd_node_arrays_alloc(bd_sim *sim)
     bd_doubles_alloc(sim, NODE_ARRAYS, NODE_ARRAY_COUNT, (size_t)sim->model->n);
 }
 
+size_t bd_node_arrays_bytes(void)
+{
+    return (size_t)NODE_ARRAY_COUNT * sizeof(double);
+}
+
 void bd_node_arrays_dup(bd_sim *dst, const bd_sim *src)
 {
     bd_doubles_dup(dst, src, NODE_ARRAYS, NODE_ARRAY_COUNT, (size_t)src->model->n);

@@ -141,6 +141,22 @@ typedef enum bd_time_step_limit {
     BD_LIMIT_AXIAL = 0, BD_LIMIT_BENDING, BD_LIMIT_USER
 } bd_time_step_limit;
 
+/* What a run costs, estimated before the build and updated after it with
+ * the nodes and time step actually made (sim/estimate.c) */
+typedef struct bd_cost {
+    double element_length;    /* m, aimed at */
+    double nodes, idlers;
+    double bytes;             /* peak memory of the build and the run */
+    double dt;                /* s, time step */
+    double steps;             /* for simulation.duration */
+    double seconds;           /* wall time of those steps (stabilization not counted) */
+    double rate;              /* (node + idler)-steps per second it assumes */
+    double node_bytes, idler_bytes;
+    double available;         /* bytes this process may use */
+    double physical;          /* bytes of physical memory */
+    const char *available_is; /* what sets `available` */
+} bd_cost;
+
 typedef struct bd_energy {
     double kinetic, potential, dissipated, input;   /* J */
     double initial;        /* E_kin + E_pot at t = 0 */
@@ -177,6 +193,8 @@ typedef struct bd_model {
     double dt, dt_limit;              /* s */
     double inv_dt;                    /* 1/s */
     bd_time_step_limit limit_kind;
+    /* what the run costs (sim/estimate.c) */
+    bd_cost cost;
     /* physical bounds of the parts' state, checked every step (sim/bounds.c) */
     double speed_bound;               /* m/s, pulley surface and carriage speed */
     double travel_bound;              /* m, takeup carriage travel */
@@ -257,8 +275,9 @@ static inline void bd_node_mass_changed(bd_sim *sim, int i)
 }
 
 /* the state's node and element arrays [n], allocated (zeroed), copied
- * and freed together (system.c) */
+ * and freed together (system.c); their bytes per node */
 void bd_node_arrays_alloc(bd_sim *sim);
+size_t bd_node_arrays_bytes(void);
 void bd_node_arrays_dup(bd_sim *dst, const bd_sim *src);
 void bd_node_arrays_free(bd_sim *sim);
 

@@ -92,6 +92,9 @@ static int create(const bd_model_def *def, bd_sim *volatile *out, bd_diag *diag)
                       (int)def->belt.formulation);
         return 1;
     }
+    /* what it will cost, before anything large is allocated */
+    if (bd_cost_estimate(sim, diag))
+        return 1;
     sim->own->gravity = def->gravity;
     sim->own->EA = def->belt.axial_stiffness;
     sim->own->EI = def->belt.bending_stiffness;
@@ -121,6 +124,7 @@ static int create(const bd_model_def *def, bd_sim *volatile *out, bd_diag *diag)
     if (bd_time_step_choose(sim, diag))
         return 1;
     bd_bounds_prepare(sim->own);
+    bd_cost_update(sim);
     bd_parts_create(sim);
     prepare_drives(sim);
     for (int i = 0; i < sim->model->n; i++)

@@ -52,6 +52,15 @@ void bd_sim_describe(const bd_sim *sim, FILE *f)
     }
     fprintf(f, "masses: belt %.1f kg, material %.1f kg, pulleys %.1f kg, takeup carriages "
                "%.1f kg\n", belt_mass, material, pulley_mass, takeup_mass);
+    const bd_cost *c = &sim->model->cost;
+    char mem[32], phys[32], time[32];
+    bd_cost_bytes_text(c->bytes, mem, sizeof mem);
+    bd_cost_bytes_text(c->physical, phys, sizeof phys);
+    bd_cost_time_text(c->seconds, time, sizeof time);
+    fprintf(f, "estimate: %.0f nodes and %.0f idlers, memory about %s (physical memory %s), "
+               "run time about %s for %g s (%.0f steps at %.2g node-steps/s; stabilization "
+               "not counted)\n", c->nodes, c->idlers, mem, phys, time,
+            def->simulation.duration, c->steps, c->rate);
     for (int i = 0; i < sim->warning_count; i++)
         fprintf(f, "warning: %s\n", sim->warnings[i]);
 }

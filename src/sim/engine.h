@@ -20,6 +20,14 @@ void bd_sim_start_at_rest(bd_sim *sim);
 void bd_bounds_prepare(bd_model *model);
 int bd_bounds_check(bd_sim *sim);
 
+/* estimate.c: what a run costs (model->cost). Before the build: 0, or 1
+ * when refused (the error in diag; a long run gets a warning there); after
+ * it, the nodes and the step actually made. Bytes and seconds as text. */
+int bd_cost_estimate(bd_sim *sim, bd_diag *diag);
+void bd_cost_update(bd_sim *sim);
+void bd_cost_bytes_text(double bytes, char *buf, size_t len);
+void bd_cost_time_text(double s, char *buf, size_t len);
+
 /* energy.c */
 double bd_energy_potential(const bd_sim *sim);
 void bd_energy_update_balance(bd_sim *sim);

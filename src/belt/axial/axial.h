@@ -79,6 +79,7 @@ void bd_axial_free(bd_sim *sim);
 void bd_axial_free_model(bd_model *model);
 void bd_axial_clone(bd_sim *dst, const bd_sim *src);
 double bd_axial_stable_step(const bd_sim *sim, bd_time_step_limit *limit);
+void bd_axial_estimate(const bd_model_def *def, const bd_path *path, bd_belt_estimate *out);
 /* node i's material, mass, gravity along the path and rolling resistance
  * for the loaded region (build.c) */
 void bd_axial_node_load(bd_sim *sim, int i);

@@ -365,6 +365,7 @@ const bd_belt_ops bd_axial_ops = {
     .free_model = bd_axial_free_model,
     .clone = bd_axial_clone,
     .stable_step = bd_axial_stable_step,
+    .estimate = bd_axial_estimate,
     .forces = bd_axial_forces,
     .wrap = bd_axial_wrap,
     .supports = NULL,

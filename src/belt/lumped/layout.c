@@ -27,7 +27,7 @@
 
 /* weight potential W(s) sampled on a fine grid of the path */
 typedef struct weight_grid {
-    int m;
+    long m;      /* long: GRID_PER_ELEMENT × a large node count passes INT_MAX */
     double ds;
     double *W;   /* [m + 1] */
 } weight_grid;
@@ -51,13 +51,14 @@ static bd_rest_load rest_load(const bd_model_def *def, const bd_path *path)
 static void weight_grid_build(const bd_model_def *def, const bd_path *path, double target,
                               weight_grid *g)
 {
-    g->m = (int)ceil(path->length / target * GRID_PER_ELEMENT) + 16;
-    g->ds = path->length / g->m;
+    g->m = (long)ceil(path->length / target * GRID_PER_ELEMENT) + 16;
+    g->ds = path->length / (double)g->m;
     g->W = bd_xcalloc((size_t)g->m + 1, sizeof *g->W);
     bd_rest_load load = rest_load(def, path);
     g->W[0] = 0.0;
-    for (int i = 1; i <= g->m; i++)
-        g->W[i] = g->W[i - 1] + bd_rest_weight(path, &load, (i - 1) * g->ds, i * g->ds, 1);
+    for (long i = 1; i <= g->m; i++)
+        g->W[i] = g->W[i - 1] + bd_rest_weight(path, &load, (double)(i - 1) * g->ds,
+                                               (double)i * g->ds, 1);
 }
 
 static double weight_at(const weight_grid *g, double s)
@@ -65,10 +66,10 @@ static double weight_at(const weight_grid *g, double s)
     double u = s / g->ds;
     if (u <= 0.0)
         return g->W[0];
-    int i = (int)u;
+    long i = (long)u;
     if (i >= g->m)
         return g->W[g->m];
-    double f = u - i;
+    double f = u - (double)i;
     return (1.0 - f) * g->W[i] + f * g->W[i + 1];
 }
 
@@ -239,7 +240,7 @@ int bd_layout_belt(const bd_model_def *def, const bd_layout_request *req, bd_lay
         }
         /* unstretched length of the belt under T(s) */
         L_un = 0.0;
-        for (int i = 0; i < g.m; i++)
+        for (long i = 0; i < g.m; i++)
             L_un += g.ds / (1.0 + (Tc + 0.5 * (g.W[i] + g.W[i + 1])) / EA);
     } else if (!rest) {
         L_un = L / (1.0 + def->belt.initial_tension / EA);

@@ -69,6 +69,7 @@ void bd_lumped_free(bd_sim *sim);
 void bd_lumped_free_model(bd_model *model);
 void bd_lumped_clone(bd_sim *dst, const bd_sim *src);
 double bd_lumped_stable_step(const bd_sim *sim, bd_time_step_limit *limit);
+void bd_lumped_estimate(const bd_model_def *def, const bd_path *path, bd_belt_estimate *out);
 double bd_lumped_support_inertia(const bd_sim *sim, double R, double J);
 
 /* forces.c: elastic, damping, bending, gravity forces on nodes; energy */

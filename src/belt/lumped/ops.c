@@ -13,6 +13,7 @@ const bd_belt_ops bd_lumped_ops = {
     .free_model = bd_lumped_free_model,
     .clone = bd_lumped_clone,
     .stable_step = bd_lumped_stable_step,
+    .estimate = bd_lumped_estimate,
     .forces = bd_lumped_forces,
     .wrap = bd_lumped_wrap,
     .supports = bd_lumped_idlers,
