@@ -100,6 +100,8 @@ case_bad bad_overlap.yaml              '8|14' "pulleys.*overlap|overlap.*pulley"
 case_bad bad_overlap_nested.yaml       '8|14' "pulleys.*overlap|overlap.*pulley"
 case_bad bad_wrap.yaml                 18     "wrap"
 case_bad bad_time_step.yaml            21     "time_step"
+# found by the fuzzer: a layout that cannot close is an error, not a crash
+case_bad bad_layout_soft_belt.yaml     4      "belt"
 
 # usage errors: exit 2
 usage_case() { # label args...

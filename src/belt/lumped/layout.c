@@ -65,9 +65,11 @@ static double weight_at(const weight_grid *g, double s)
     double u = s / g->ds;
     if (u <= 0.0)
         return g->W[0];
-    int i = (int)u;
-    if (i >= g->m)
+    /* compared before the cast: a layout that does not close marches far
+     * past the path's end (or to NaN), beyond what an int holds */
+    if (!(u < g->m))
         return g->W[g->m];
+    int i = (int)u;
     double f = u - i;
     return (1.0 - f) * g->W[i] + f * g->W[i + 1];
 }
