@@ -100,6 +100,10 @@ case_bad bad_overlap.yaml              '8|14' "pulleys.*overlap|overlap.*pulley"
 case_bad bad_overlap_nested.yaml       '8|14' "pulleys.*overlap|overlap.*pulley"
 case_bad bad_wrap.yaml                 18     "wrap"
 case_bad bad_time_step.yaml            21     "time_step"
+# found by the fuzzer: a belt that its weight or its takeup would compress
+# at rest is an error (at once), not a crash or minutes of layout
+case_bad bad_layout_soft_belt.yaml     5      "belt"
+case_bad bad_layout_compressed.yaml    5      "belt"
 
 # usage errors: exit 2
 usage_case() { # label args...

@@ -66,9 +66,11 @@ static double weight_at(const weight_grid *g, double s)
     double u = s / g->ds;
     if (u <= 0.0)
         return g->W[0];
-    long i = (long)u;
-    if (i >= g->m)
+    /* compared before the cast: a layout that does not close marches far
+     * past the path's end (or to NaN), beyond what an integer holds */
+    if (!(u < (double)g->m))
         return g->W[g->m];
+    long i = (long)u;
     double f = u - (double)i;
     return (1.0 - f) * g->W[i] + f * g->W[i + 1];
 }
@@ -212,6 +214,30 @@ static double shift_misfit(double q, void *vctx)
     return march(&c->path, c->g, c->EA, c->l0, c->Tc, c->n, NULL) - c->path.length;
 }
 
+/* the least stretch 1 + T/EA a belt is laid with: below it the at-rest
+ * tension T(s) = Tc + W(s) (a takeup too weak, or an installed tension too
+ * low, for the belt's weight) would crush the belt to under half its length,
+ * which no belt does, and the layout would need 1/(1 + T/EA) times its
+ * elements (a 185 m loop at 3 % took 80,000 and seconds to refuse) */
+#define MIN_STRETCH 0.5
+
+static int compressed(const weight_grid *g, double Tc, double EA, char *err, size_t errlen)
+{
+    int at = 0;
+    for (int i = 1; i <= g->m; i++)
+        if (g->W[i] < g->W[at])
+            at = i;
+    double T = Tc + g->W[at];
+    if (1.0 + T / EA >= MIN_STRETCH)
+        return 0;
+    snprintf(err, errlen, "could not lay the belt on its path: at rest its tension would be "
+             "%.4g N at s = %.4g m, a strain of %.0f %% with axial stiffness %.4g N (a belt "
+             "is not laid compressed by %.0f %% or more); the takeup or initial tension is "
+             "too low for the belt's weight",
+             T, at * g->ds, 100.0 * T / EA, EA, 100.0 * (1.0 - MIN_STRETCH));
+    return 1;
+}
+
 int bd_layout_belt(const bd_model_def *def, const bd_layout_request *req, bd_layout *out,
                    char *err, size_t errlen)
 {
@@ -248,6 +274,10 @@ int bd_layout_belt(const bd_model_def *def, const bd_layout_request *req, bd_lay
     } else {
         L_un = L;
         EA = INFINITY;   /* unstretched: chords are l0 */
+    }
+    if (!rest && compressed(&g, Tc, EA, err, errlen)) {
+        free(g.W);
+        return 1;
     }
     int n = (int)lround(L_un / req->target_length);
     if (n < 8)
