@@ -92,11 +92,15 @@ void bd_axial_wrap(bd_sim *sim, bd_pulley_body *p, double Q)
     double T_in = sim->tension[e_in], T_out = sim->tension[i];
     /* a held pulley (p->held: stabilization's holdback) does not turn: an
      * infinite inertia; a drive's implicit gain adds to a turning one's */
-    double m = sim->mass[i], I = bd_pulley_solve_inertia(sim, p);
-    double w_free = p->held ? p->omega : p->omega + dt * Q / I;
-    double v_free = sim->vx[i] + dt * sim->fx[i] / m - R * w_free;
-    double kappa = dt * (1.0 / m + (p->held ? 0.0 : R * R / I));
-    double F = bd_bpl_solve(&ap->law, T_in, T_out, sim->vx[i], v_free, kappa);
+    double m = sim->mass[i], I, F;
+    /* solved again, once, when a drive would pass its max_torque */
+    do {
+        I = bd_pulley_solve_inertia(sim, p);
+        double w_free = p->held ? p->omega : p->omega + dt * Q / I;
+        double v_free = sim->vx[i] + dt * sim->fx[i] / m - R * w_free;
+        double kappa = dt * (1.0 / m + (p->held ? 0.0 : R * R / I));
+        F = bd_bpl_solve(&ap->law, T_in, T_out, sim->vx[i], v_free, kappa);
+    } while (!p->held && bd_pulley_drive_clip(sim, p, (Q - R * F) / I, &Q));
     sim->fx[i] += F;
     sim->fnx[i] += F;
     p->torque_friction = -R * F;

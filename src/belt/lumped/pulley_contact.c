@@ -215,6 +215,12 @@ static void friction_forces(bd_sim *sim, bd_pulley_body *p, double T_p)
         }
         /* a held pulley (p->held: stabilization's holdback) does not turn */
         alpha = p->held ? 0.0 : (R * A + R * Fk + T_p) / (bd_pulley_solve_inertia(sim, p) + R * R * M);
+        /* a drive that would pass its max_torque: at the limit, solve again
+         * (once: it is explicit then) */
+        if (bd_pulley_drive_clip(sim, p, alpha, &T_p)) {
+            pass--;
+            continue;
+        }
         int changed = 0;
         for (int c = 0; c < nc; c++) {
             if (W->c_slip[c])
@@ -259,6 +265,8 @@ void bd_lumped_wrap(bd_sim *sim, bd_pulley_body *p, double external_torque)
     p->torque_friction = 0.0;
     if (W->contact_count == 0) {
         p->alpha = p->held ? 0.0 : external_torque / bd_pulley_solve_inertia(sim, p);
+        if (!p->held && bd_pulley_drive_clip(sim, p, p->alpha, &external_torque))
+            p->alpha = external_torque / bd_pulley_solve_inertia(sim, p);
         return;
     }
     friction_forces(sim, p, external_torque);
