@@ -268,26 +268,6 @@ static inline double bd_pulley_solve_inertia(const bd_sim *sim, const bd_pulley_
     return p->m->inertia + p->torque_damping * sim->model->dt;
 }
 
-/* the drive's implicit torque against its max_torque: when the torque it
- * applies at the end-of-step speed, drive_torque − torque_damping·Δt·α,
- * passes ±max_torque, the drive is saturated this step: its torque is the
- * limit, now explicit (torque_damping 0), and *external (drive + bearing)
- * follows. Returns 1: the wrap coupling solves the pulley again. */
-static inline int bd_pulley_drive_clip(const bd_sim *sim, bd_pulley_body *p, double alpha,
-                                       double *external)
-{
-    if (p->torque_damping <= 0.0)
-        return 0;
-    double applied = p->drive_torque - p->torque_damping * sim->model->dt * alpha;
-    double limit = p->m->def->drive.max_torque;
-    if (applied <= limit && applied >= -limit)
-        return 0;
-    p->drive_torque = applied > 0.0 ? limit : -limit;
-    p->torque_damping = 0.0;
-    *external = p->drive_torque + p->bearing_torque;
-    return 1;
-}
-
 /* node i's mass changed: keep what is derived from it */
 static inline void bd_node_mass_changed(bd_sim *sim, int i)
 {

@@ -8,7 +8,10 @@
  * the integral stops winding up while the torque is at max_torque.
  * Its bandwidth ω_c is 2 Hz, lowered so that the proportional gain
  * K_p = 2ω_c·J does not exceed the wave impedance the belt presents at
- * the pulley, R²·(Z_in + Z_out) with Z = √(EA·m′): above that the loop is
+ * the pulley, R²·(Z_in + Z_out) with Z = √(EA·m′) (the characteristic
+ * impedance of the belt's longitudinal wave equation m′·ü = EA·u″, force
+ * per unit of speed; seed 001 §6.4, figs. 6.10–6.11, checks its wave speed
+ * √(EA/m′) on the discrete belt): above that the loop is
  * stiffer than the belt and turns every speed ripple of the mesh (node
  * passage over the pulley, idler impacts) into torque, where a drive tuned
  * to the belt's impedance absorbs a wave arriving at the pulley instead of

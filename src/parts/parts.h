@@ -83,6 +83,8 @@ void bd_pulley_model_init(bd_model *model, bd_pulley_model *pm, const bd_pulley_
 /* part torques phase: the drive's (or transmission's) and the bearing's
  * torque on pulley p this step */
 double bd_pulley_external_torque(bd_sim *sim, bd_pulley_body *p);
+/* the drive's implicit torque held to max_torque (the wrap couplings) */
+int bd_pulley_drive_clip(const bd_sim *sim, bd_pulley_body *p, double alpha, double *external);
 /* parts advance phase: pulley rotations, transmissions and takeup
  * carriages to the next step; adds their kinetic energy to *ke and their
  * non-conservative work to *w_nc */

@@ -49,6 +49,25 @@ double bd_pulley_external_torque(bd_sim *sim, bd_pulley_body *p)
     return T_drive + p->bearing_torque;
 }
 
+/* the drive's implicit torque against its max_torque: when the torque it
+ * applies at the end-of-step speed, drive_torque − torque_damping·Δt·α,
+ * passes ±max_torque, the drive is saturated this step: its torque is the
+ * limit, now explicit (torque_damping 0), and *external (drive + bearing)
+ * follows. Returns 1: the wrap coupling solves the pulley again. */
+int bd_pulley_drive_clip(const bd_sim *sim, bd_pulley_body *p, double alpha, double *external)
+{
+    if (p->torque_damping <= 0.0)
+        return 0;
+    double applied = p->drive_torque - p->torque_damping * sim->model->dt * alpha;
+    double limit = p->m->def->drive.max_torque;
+    if (fabs(applied) <= limit)
+        return 0;
+    p->drive_torque = applied > 0.0 ? limit : -limit;
+    p->torque_damping = 0.0;
+    *external = p->drive_torque + p->bearing_torque;
+    return 1;
+}
+
 /* rotation with the mid-step speed booked (central differences, as the
  * belt nodes), then its parts: the drive's work, the transmission, the
  * takeup carriage */

@@ -108,7 +108,7 @@ size_t bd_gen_conveyor(unsigned long seed, const bd_gen_options *opt, char *buf,
              + drive_inertia / (Rh * Rh) + 600.0;
     double a_max = 2.0 * v / ramp;
     double F_start = fabs(F_run) + M * a_max;
-    double rated_T = 0.0, gear = 0.0, t_acc = 0.0;
+    double rated_T = 0.0, t_acc = 0.0;
     if (motor) {
         /* Kloss with breakdown 2.2 and rated slip s_r starts with
          * T(1)/T_rated = 2·2.2·s_b/(1 + s_b²), s_b = s_r·(2.2 + √(2.2² − 1)):
@@ -165,7 +165,7 @@ size_t bd_gen_conveyor(unsigned long seed, const bd_gen_options *opt, char *buf,
     out d = {drive_yaml, sizeof drive_yaml, 0};
     if (motor) {
         double w_sync = 1500.0 * 2.0 * PI / 60.0;
-        gear = w_sync * Rh / (v * 1.01);
+        double gear = w_sync * Rh / (v * 1.01);
         double rpm_rated = 1500.0 * (1.0 - 0.02);
         put(&d, "    drive:\n      control: motor\n      inertia: %.6g\n      motor: "
                 "{rated_power: %.6g, rated_speed_rpm: %.6g, synchronous_speed_rpm: 1500, "
@@ -182,7 +182,8 @@ size_t bd_gen_conveyor(unsigned long seed, const bd_gen_options *opt, char *buf,
     double mt = uniform(&r, 200.0, 800.0) * (Rt / 0.5) * (Rt / 0.5);
     double yret_slope = (H - Rh + Rt) / L;
     double drop = uniform(&r, 3.0, 8.0);
-    double T_takeup = takeup == TAIL_TAKEUP ? 2.0 * T0 : 2.0 * T0;
+    /* both strands at T0 pull the takeup pulley (180° wrap) */
+    double T_takeup = 2.0 * T0;
     int constant_force = chance(&r, 0.3);
     double carriage = uniform(&r, 50.0, 500.0);
 

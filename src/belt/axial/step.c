@@ -17,6 +17,8 @@
 
 #include <math.h>
 
+#include "parts/parts.h"
+
 /* elements 0 .. count−1 of the node arrays u, v (element e from node e
  * to e + 1): tension and its dashpot part; no node written */
 static void elements(int count, const double *restrict u, const double *restrict v,

@@ -25,7 +25,7 @@ static double default_element_length(const bd_model_def *def)
     return 2.0 * r * sin(BD_PI / 12.0);
 }
 
-/* the lumped state's arrays of doubles: [n] of the belt, [win_max] of a
+/* the lumped state's arrays of doubles: [n] of the belt, [node_max] of a
  * shell contact (ints apart) */
 static const size_t BELT_DOUBLES[] = {offsetof(bd_lumped, ux), offsetof(bd_lumped, uy),
                                       offsetof(bd_lumped, len), offsetof(bd_lumped, td),
@@ -40,6 +40,8 @@ static void setup_pulleys(bd_sim *sim, const bd_layout *lay)
 {
     const bd_model_def *def = sim->model->def;
     bd_lumped *L = bd_lumped_of(sim);
+    bd_lumped_model *LM = sim->own->belt_model;
+    LM->sectors = bd_xcalloc((size_t)def->pulley_count, sizeof *LM->sectors);
     L->wraps = bd_xcalloc((size_t)def->pulley_count, sizeof *L->wraps);
     for (int i = 0; i < def->pulley_count; i++) {
         bd_pulley_body *p = &sim->pulleys[i];
@@ -54,10 +56,11 @@ static void setup_pulleys(bd_sim *sim, const bd_layout *lay)
         }
         /* contact: stiff and linearly implicit, every node of the wrap's
          * sector tested every step (pulley_contact.c) */
-        bd_lumped_sector_init(sim, i, W);
-        bd_doubles_alloc(W, WRAP_DOUBLES, COUNT(WRAP_DOUBLES), (size_t)W->win_max);
-        W->c_node = bd_xcalloc((size_t)W->win_max, sizeof *W->c_node);
-        W->c_slip = bd_xcalloc((size_t)W->win_max, sizeof *W->c_slip);
+        bd_wrap_sector *S = &LM->sectors[i];
+        bd_lumped_sector_init(sim, i, S);
+        bd_doubles_alloc(W, WRAP_DOUBLES, COUNT(WRAP_DOUBLES), (size_t)S->node_max);
+        W->c_node = bd_xcalloc((size_t)S->node_max, sizeof *W->c_node);
+        W->c_slip = bd_xcalloc((size_t)S->node_max, sizeof *W->c_slip);
     }
 }
 
@@ -332,6 +335,9 @@ void bd_lumped_free(bd_sim *sim)
 
 void bd_lumped_free_model(bd_model *model)
 {
+    bd_lumped_model *LM = model->belt_model;
+    if (LM)
+        free(LM->sectors);
     free(model->belt_model);
     model->belt_model = NULL;
 }
@@ -352,16 +358,11 @@ void bd_lumped_clone(bd_sim *dst, const bd_sim *src)
     for (size_t i = 0; i < np; i++) {
         const bd_wrap_contact *from = &S->wraps[i];
         bd_wrap_contact *W = &L->wraps[i];
-        size_t w = (size_t)from->win_max;
+        size_t w = (size_t)bd_lumped_model_of(src)->sectors[i].node_max;
         /* the scalars; each array is owned as it is copied */
-        W->mid[0] = from->mid[0];
-        W->mid[1] = from->mid[1];
-        W->cos_limit = from->cos_limit;
-        W->reach = from->reach;
         W->anchor = from->anchor;
         W->win_first = from->win_first;
         W->win_count = from->win_count;
-        W->win_max = from->win_max;
         W->contact_count = from->contact_count;
         bd_doubles_dup(W, from, WRAP_DOUBLES, COUNT(WRAP_DOUBLES), w);
         W->c_node = bd_xdup(from->c_node, w, sizeof *W->c_node);

@@ -7,12 +7,21 @@
 
 #include "belt/belt.h"
 
+/* a wrap's sector, the nodes its contact tests (pulley_contact.c) */
+typedef struct bd_wrap_sector {
+    double mid[2];          /* unit vector from the centre to the arc's middle */
+    double cos_limit;       /* a node is in the sector when cos(angle to mid) ≥ this */
+    double reach;           /* m, and nearer the centre than this */
+    int node_max;           /* the most nodes the sector can hold */
+} bd_wrap_sector;
+
 /* the lumped belt's compiled data (in the model, behind model->belt_model) */
 typedef struct bd_lumped_model {
     double k_axial;        /* N/m = EA/l0 */
     double c_axial;        /* N·s/m dashpot of one element */
     double k_bend;         /* N·m/rad = EI/l0 */
     double k_contact;      /* N/m penalty stiffness of a node on a shell or idler */
+    bd_wrap_sector *sectors;   /* [pulley_count] */
 } bd_lumped_model;
 
 /* the wrap chord angle above which the build warns (build.c) */
@@ -20,17 +29,11 @@ typedef struct bd_lumped_model {
 
 /* the contact of the belt with one pulley's shell (pulley_contact.c) */
 typedef struct bd_wrap_contact {
-    /* build: the wrap's sector with its margin (pulley_contact.c) */
-    double mid[2];          /* unit vector from the centre to the arc's middle */
-    double cos_limit;       /* a node is in the sector when cos(angle to mid) ≥ this */
-    double reach;           /* m, and nearer the centre than this */
     /* step: the node nearest the arc's middle, and the sector's nodes
      * first .. first+count-1 (mod n) tested this step */
     int anchor;
     int win_first, win_count;
-    int win_max;            /* build: capacity of the scratch arrays below,
-                               the most nodes a sector can hold */
-    /* step scratch of the stick-force solve [win_max] */
+    /* step scratch of the stick-force solve [its sector's node_max] */
     int *c_node;
     double *c_normal;       /* N, normal force */
     double *c_tx, *c_ty;    /* unit tangent (positive in the wrap sense) */
@@ -79,7 +82,7 @@ double bd_lumped_elastic_energy(const bd_sim *sim);
 double bd_lumped_potential(const bd_sim *sim);
 
 /* pulley_contact.c / idler_contact.c */
-void bd_lumped_sector_init(bd_sim *sim, int pulley, bd_wrap_contact *W);
+void bd_lumped_sector_init(bd_sim *sim, int pulley, bd_wrap_sector *S);
 void bd_lumped_sector_anchor(bd_sim *sim, int pulley, bd_wrap_contact *W);
 void bd_lumped_wrap(bd_sim *sim, bd_pulley_body *p, double external_torque);
 double bd_lumped_wrap_energy(const bd_sim *sim, const bd_pulley_body *p);

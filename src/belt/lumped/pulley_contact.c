@@ -33,6 +33,8 @@
 
 #include <math.h>
 
+#include "parts/parts.h"
+
 #include "base/constants.h"
 
 /* Which nodes are tested: every node of the wrap's sector, every step.
@@ -58,25 +60,31 @@ static bd_wrap_contact *wrap_of(const bd_sim *sim, const bd_pulley_body *p)
     return &bd_lumped_of(sim)->wraps[p - sim->pulleys];
 }
 
-void bd_lumped_sector_init(bd_sim *sim, int pulley, bd_wrap_contact *W)
+static const bd_wrap_sector *sector_of(const bd_sim *sim, const bd_pulley_body *p)
+{
+    return &bd_lumped_model_of(sim)->sectors[p - sim->pulleys];
+}
+
+void bd_lumped_sector_init(bd_sim *sim, int pulley, bd_wrap_sector *S)
 {
     const bd_path_segment *arc = bd_path_arc(&sim->model->path, pulley);
     const double R = arc->radius, l0 = sim->model->l0;
     double mid = arc->angle0 + 0.5 * arc->sweep;
-    W->mid[0] = cos(mid);
-    W->mid[1] = sin(mid);
+    S->mid[0] = cos(mid);
+    S->mid[1] = sin(mid);
     double half = 0.5 * fabs(arc->sweep) + SECTOR_MARGIN_DEG * BD_DEG + 2.0 * l0 / R;
-    W->cos_limit = half >= BD_PI ? -2.0 : cos(half);
-    W->reach = R + SECTOR_REACH_ELEMENTS * l0;
-    W->win_max = (int)ceil(2.0 * half * W->reach / l0) + 8;
+    S->cos_limit = half >= BD_PI ? -2.0 : cos(half);
+    S->reach = R + SECTOR_REACH_ELEMENTS * l0;
+    S->node_max = (int)ceil(2.0 * half * S->reach / l0) + 8;
 }
 
 /* the node nearest the arc's middle, once by a full search (the belt laid) */
 void bd_lumped_sector_anchor(bd_sim *sim, int pulley, bd_wrap_contact *W)
 {
     const bd_pulley_body *p = &sim->pulleys[pulley];   /* a takeup's centre as laid */
+    const bd_wrap_sector *S = sector_of(sim, p);
     const double R = p->m->radius;
-    double mx = p->cx + R * W->mid[0], my = p->cy + R * W->mid[1];
+    double mx = p->cx + R * S->mid[0], my = p->cy + R * S->mid[1];
     double best = INFINITY;
     for (int k = 0; k < sim->model->n; k++) {
         double d = hypot(sim->x[k] - mx, sim->y[k] - my);
@@ -89,25 +97,26 @@ void bd_lumped_sector_anchor(bd_sim *sim, int pulley, bd_wrap_contact *W)
     W->win_count = 0;
 }
 
-static int in_sector(const bd_sim *sim, const bd_pulley_body *p, const bd_wrap_contact *W, int k)
+static int in_sector(const bd_sim *sim, const bd_pulley_body *p, const bd_wrap_sector *S, int k)
 {
     double rx = sim->x[k] - p->cx, ry = sim->y[k] - p->cy;
     double a2 = rx * rx + ry * ry;
-    if (a2 >= W->reach * W->reach)
+    if (a2 >= S->reach * S->reach)
         return 0;
-    double c = rx * W->mid[0] + ry * W->mid[1];   /* a·cos(angle to mid) */
-    if (W->cos_limit >= 0.0)
-        return c >= 0.0 && c * c >= W->cos_limit * W->cos_limit * a2;
-    return c >= W->cos_limit * sqrt(a2);
+    double c = rx * S->mid[0] + ry * S->mid[1];   /* a·cos(angle to mid) */
+    if (S->cos_limit >= 0.0)
+        return c >= 0.0 && c * c >= S->cos_limit * S->cos_limit * a2;
+    return c >= S->cos_limit * sqrt(a2);
 }
 
 /* the node nearest the arc's middle, from the last one; then the run of
- * sector nodes through it: *first and *count (count ≤ win_max) */
+ * sector nodes through it: *first and *count (count ≤ node_max) */
 static int find_sector(const bd_sim *sim, const bd_pulley_body *p, const bd_wrap_contact *W,
                        int *first, int *count)
 {
     const int n = sim->model->n;
-    double mx = p->cx + p->m->radius * W->mid[0], my = p->cy + p->m->radius * W->mid[1];
+    const bd_wrap_sector *S = sector_of(sim, p);
+    double mx = p->cx + p->m->radius * S->mid[0], my = p->cy + p->m->radius * S->mid[1];
     int a = W->anchor;
     double da = hypot(sim->x[a] - mx, sim->y[a] - my);
     for (int it = 0; it < n; it++) {
@@ -125,15 +134,15 @@ static int find_sector(const bd_sim *sim, const bd_pulley_body *p, const bd_wrap
         }
     }
     int lo = a, c = 1;
-    while (c < W->win_max) {
+    while (c < S->node_max) {
         int b = lo == 0 ? n - 1 : lo - 1;
-        if (!in_sector(sim, p, W, b))
+        if (!in_sector(sim, p, S, b))
             break;
         lo = b;
         c++;
     }
-    for (int k = a + 1 == n ? 0 : a + 1; c < W->win_max; k = k + 1 == n ? 0 : k + 1) {
-        if (!in_sector(sim, p, W, k))
+    for (int k = a + 1 == n ? 0 : a + 1; c < S->node_max; k = k + 1 == n ? 0 : k + 1) {
+        if (!in_sector(sim, p, S, k))
             break;
         c++;
     }
