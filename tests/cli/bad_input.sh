@@ -9,11 +9,7 @@ set -u
 DATA="${TEST_DATA:-$(cd "$(dirname "$0")/../data" && pwd)}"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-passed=0
-failed=0
-
-ok() { echo "ok   $1"; passed=$((passed + 1)); }
-bad() { echo "FAIL $1: $2"; failed=$((failed + 1)); }
+. "$(dirname "$0")/lib/tally.sh"
 
 # does stderr text $1 hold a line "$2:LINE:COL: error: ...KEY..." with LINE
 # matching the extended regex $3 and the message matching the regex $4?
@@ -138,5 +134,4 @@ for cmd in check run; do
     fi
 done
 
-echo "$passed passed, $failed failed"
-[ $failed -eq 0 ]
+tally

@@ -18,10 +18,7 @@ set -u
 EXAMPLES="${EXAMPLES:-$(cd "$(dirname "$0")/../../examples" && pwd)}"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-passed=0
-failed=0
-ok() { echo "ok   $1"; passed=$((passed + 1)); }
-bad() { echo "FAIL $1: $2"; failed=$((failed + 1)); }
+. "$(dirname "$0")/lib/tally.sh"
 model() { # element length
     sed "s/element_length: 0.07/element_length: $1/" "$EXAMPLES/head_drive.yaml" >"$tmp/m_$1.yaml"
     grep -q "element_length: $1\$" "$tmp/m_$1.yaml" || { echo "FAIL could not set element_length $1"; exit 1; }
@@ -75,5 +72,4 @@ else
     bad "long-run warning" "$(cat "$tmp/err")"
 fi
 
-echo "$passed passed, $failed failed"
-[ $failed -eq 0 ]
+tally

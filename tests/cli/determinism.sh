@@ -7,10 +7,7 @@ set -u
 EXAMPLES="${EXAMPLES:-$(cd "$(dirname "$0")/../../examples" && pwd)}"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-passed=0
-failed=0
-ok() { echo "ok   $1"; passed=$((passed + 1)); }
-bad() { echo "FAIL $1: $2"; failed=$((failed + 1)); }
+. "$(dirname "$0")/lib/tally.sh"
 
 model="$EXAMPLES/flat_belt_drive.yaml"
 for k in 1 2; do
@@ -44,5 +41,4 @@ else
     bad "summary.json" "differs beyond wall_time_s: $(head -5 "$tmp/summary.diff")"
 fi
 
-echo "$passed passed, $failed failed"
-[ $failed -eq 0 ]
+tally

@@ -11,10 +11,7 @@ DATA="${TEST_DATA:-$(cd "$(dirname "$0")/../data" && pwd)}"
 tmp=$(mktemp -d)
 . "$(dirname "$0")/lib/sigint_run.sh"
 trap 'sigint_cleanup; rm -rf "$tmp"' EXIT
-passed=0
-failed=0
-ok() { echo "ok   $1"; passed=$((passed + 1)); }
-bad() { echo "FAIL $1: $2"; failed=$((failed + 1)); }
+. "$(dirname "$0")/lib/tally.sh"
 
 out="$tmp/out"
 sigint_run "$tmp/run.out" "$tmp/run.err" "$BELTDYN" run "$DATA/long_run.yaml" -o "$out"
@@ -61,5 +58,4 @@ left=$(find "$out" -mindepth 1 \( -name '*.part*' -o -name '.*' \) 2>/dev/null |
 if [ -z "$left" ]; then ok "no temporary files left"
 else bad "temporary files" "$left"; fi
 
-echo "$passed passed, $failed failed"
-[ $failed -eq 0 ]
+tally

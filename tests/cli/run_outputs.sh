@@ -14,10 +14,7 @@ case "$BELTDYN" in */*) BELTDYN="$(cd "$(dirname "$BELTDYN")" && pwd)/$(basename
 EXAMPLES="${EXAMPLES:-$(cd "$(dirname "$0")/../../examples" && pwd)}"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-passed=0
-failed=0
-ok() { echo "ok   $1"; passed=$((passed + 1)); }
-bad() { echo "FAIL $1: $2"; failed=$((failed + 1)); }
+. "$(dirname "$0")/lib/tally.sh"
 
 # the python checker: argv = DIR, then the expectations as JSON; prints one
 # "ok ..." or "FAIL ..." line per check
@@ -305,5 +302,4 @@ else
     bad "default DIR" "exit $rc; $(ls "$tmp/cwd" 2>&1)"
 fi
 
-echo "$passed passed, $failed failed"
-[ $failed -eq 0 ]
+tally

@@ -25,10 +25,7 @@ simulation: {duration: 2}
 YAML
 "$BELTDYN" run "$tmp/runaway.yaml" -o "$tmp/out" --quiet >"$tmp/stdout" 2>"$tmp/stderr"
 rc=$?
-passed=0
-failed=0
-ok() { echo "ok   $1"; passed=$((passed + 1)); }
-bad() { echo "FAIL $1: $2"; failed=$((failed + 1)); }
+. "$(dirname "$0")/lib/tally.sh"
 [ $rc -eq 1 ] && ok "exit code 1" || bad "exit code" "$rc, want 1"
 msg=$(cat "$tmp/stderr")
 if echo "$msg" | grep -q "at t = [0-9.]* s" && echo "$msg" | grep -q "pulley 'head' at (x = 10.000, y = 0.000)" \
@@ -40,5 +37,4 @@ fi
 if python3 -c 'import json,sys; s=json.load(open(sys.argv[1])); assert s["status"] == "failed" and s["duration_s"] < 0.2' \
     "$tmp/out/summary.json" 2>/dev/null; then ok "summary.json: failed, early"
 else bad "summary.json" "missing, or not failed early"; fi
-echo "$passed passed, $failed failed"
-[ $failed -eq 0 ]
+tally

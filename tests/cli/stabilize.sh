@@ -16,10 +16,7 @@ EXAMPLES="${EXAMPLES:-$(cd "$(dirname "$0")/../../examples" && pwd)}"
 tmp=$(mktemp -d)
 . "$(dirname "$0")/lib/sigint_run.sh"
 trap 'sigint_cleanup; rm -rf "$tmp"' EXIT
-passed=0
-failed=0
-ok() { echo "ok   $1"; passed=$((passed + 1)); }
-bad() { echo "FAIL $1: $2"; failed=$((failed + 1)); }
+. "$(dirname "$0")/lib/tally.sh"
 
 # 1. interrupt
 sed 's/element_length: 0.07/element_length: 0.02/' "$EXAMPLES/head_drive.yaml" >"$tmp/fine.yaml"
@@ -73,5 +70,4 @@ if python3 -c 'import json,sys; s=json.load(open(sys.argv[1])); assert s["status
     "$tmp/out2/summary.json" 2>/dev/null; then ok "summary.json: failed, with the message in warnings"
 else bad "summary.json" "missing, not failed, or without the message"; fi
 
-echo "$passed passed, $failed failed"
-[ $failed -eq 0 ]
+tally
