@@ -85,6 +85,11 @@ void bd_pulley_model_init(bd_model *model, bd_pulley_model *pm, const bd_pulley_
 double bd_pulley_external_torque(bd_sim *sim, bd_pulley_body *p);
 /* the drive's implicit torque held to max_torque (the wrap couplings) */
 int bd_pulley_drive_clip(const bd_sim *sim, bd_pulley_body *p, double alpha, double *external);
+/* the carriage of pulley p for the wrap coupling, which solves it with the
+ * belt (its acceleration is one of the coupling's unknowns): its outside
+ * pull (N along the axis), and in *mass its mass; *mass is 0 when it does
+ * not move this step (no takeup, a fixed one, or resting at a travel limit) */
+double bd_pulley_carriage(const bd_sim *sim, const bd_pulley_body *p, double *mass);
 /* parts advance phase: pulley rotations, transmissions and takeup
  * carriages to the next step; adds their kinetic energy to *ke and their
  * non-conservative work to *w_nc */
@@ -108,6 +113,9 @@ void bd_drive_take_over(bd_drive *d, double torque);
 
 /* takeup.c */
 double bd_takeup_force(const bd_takeup *tk, double t);
+/* the carriage's outside pull along its axis now (N): the takeup force and
+ * the pulley's weight */
+double bd_takeup_pull(const bd_sim *sim, const bd_takeup *tk, const bd_pulley_body *p);
 /* advance pulley p's carriage one step; returns the non-conservative work
  * done on it this step (J) and adds the set-point work to *input */
 double bd_takeup_advance(bd_sim *sim, bd_takeup *tk, bd_pulley_body *p, double *input);

@@ -68,6 +68,21 @@ int bd_pulley_drive_clip(const bd_sim *sim, bd_pulley_body *p, double alpha, dou
     return 1;
 }
 
+double bd_pulley_carriage(const bd_sim *sim, const bd_pulley_body *p, double *mass)
+{
+    *mass = 0.0;
+    if (!p->m->movable)
+        return 0.0;
+    for (int k = p->m->first_part; k < p->m->first_part + p->m->part_count; k++) {
+        const bd_part *part = &sim->parts[k];
+        if (part->type != BD_PART_TAKEUP || part->u.takeup.at_limit)
+            continue;
+        *mass = p->m->carriage_mass;
+        return bd_takeup_pull(sim, &part->u.takeup, p);
+    }
+    return 0.0;
+}
+
 /* rotation with the mid-step speed booked (central differences, as the
  * belt nodes), then its parts: the drive's work, the transmission, the
  * takeup carriage */

@@ -13,6 +13,13 @@ double bd_takeup_force(const bd_takeup *tk, double t)
     return bd_table_eval(&tk->def->force, t);
 }
 
+/* the carriage's outside pull along its axis at the present time: the
+ * takeup force and the pulley's weight (the belt's force apart) */
+double bd_takeup_pull(const bd_sim *sim, const bd_takeup *tk, const bd_pulley_body *p)
+{
+    return bd_takeup_force(tk, sim->t) - p->m->def->mass * sim->model->gravity * p->m->axis[1];
+}
+
 /* advance the carriage one step; returns the non-conservative work done on
  * it this step (J) and adds the set-point work to *input */
 double bd_takeup_advance(bd_sim *sim, bd_takeup *tk, bd_pulley_body *p, double *input)
@@ -23,7 +30,7 @@ double bd_takeup_advance(bd_sim *sim, bd_takeup *tk, bd_pulley_body *p, double *
      * −∫q·dF, with q at the middle of the interval the force changed over */
     *input += -(F - tk->force_prev) * (p->q - 0.5 * p->qdot * sim->model->dt);
     tk->force_prev = F;
-    double pull = F - p->m->def->mass * sim->model->gravity * p->m->axis[1] + p->f_axis;
+    double pull = bd_takeup_pull(sim, tk, p) + p->f_axis;
     double q_old = p->qdot;
     p->qddot = pull / p->m->carriage_mass;
     p->qdot += p->qddot * sim->model->dt;

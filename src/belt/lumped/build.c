@@ -30,7 +30,10 @@ static double default_element_length(const bd_model_def *def)
 static const size_t BELT_DOUBLES[] = {offsetof(bd_lumped, ux), offsetof(bd_lumped, uy),
                                       offsetof(bd_lumped, len), offsetof(bd_lumped, td),
                                       offsetof(bd_lumped, pw), offsetof(bd_lumped, ek)};
-static const size_t WRAP_DOUBLES[] = {offsetof(bd_wrap_contact, c_normal),
+static const size_t WRAP_DOUBLES[] = {offsetof(bd_wrap_contact, c_fn0),
+                                      offsetof(bd_wrap_contact, c_g),
+                                      offsetof(bd_wrap_contact, c_spring),
+                                      offsetof(bd_wrap_contact, c_normal),
                                       offsetof(bd_wrap_contact, c_tx),
                                       offsetof(bd_wrap_contact, c_ty),
                                       offsetof(bd_wrap_contact, c_f)};
@@ -60,7 +63,7 @@ static void setup_pulleys(bd_sim *sim, const bd_layout *lay)
         bd_lumped_sector_init(sim, i, S);
         bd_doubles_alloc(W, WRAP_DOUBLES, COUNT(WRAP_DOUBLES), (size_t)S->node_max);
         W->c_node = bd_xcalloc((size_t)S->node_max, sizeof *W->c_node);
-        W->c_slip = bd_xcalloc((size_t)S->node_max, sizeof *W->c_slip);
+        W->c_state = bd_xcalloc((size_t)S->node_max, sizeof *W->c_state);
     }
 }
 
@@ -326,7 +329,7 @@ void bd_lumped_free(bd_sim *sim)
         bd_wrap_contact *W = &L->wraps[i];
         bd_doubles_free(W, WRAP_DOUBLES, COUNT(WRAP_DOUBLES));
         free(W->c_node);
-        free(W->c_slip);
+        free(W->c_state);
     }
     free(L->wraps);
     free(L);
@@ -366,7 +369,7 @@ void bd_lumped_clone(bd_sim *dst, const bd_sim *src)
         W->contact_count = from->contact_count;
         bd_doubles_dup(W, from, WRAP_DOUBLES, COUNT(WRAP_DOUBLES), w);
         W->c_node = bd_xdup(from->c_node, w, sizeof *W->c_node);
-        W->c_slip = bd_xdup(from->c_slip, w, sizeof *W->c_slip);
+        W->c_state = bd_xdup(from->c_state, w, sizeof *W->c_state);
     }
 }
 

@@ -33,12 +33,16 @@ typedef struct bd_wrap_contact {
      * first .. first+count-1 (mod n) tested this step */
     int anchor;
     int win_first, win_count;
-    /* step scratch of the stick-force solve [its sector's node_max] */
+    /* step scratch of the contact solve [its sector's node_max]: the
+     * candidate nodes, after the solve the nodes in contact */
     int *c_node;
+    double *c_fn0;          /* N, normal force were the carriage not to accelerate */
+    double *c_g;            /* kg, its growth with the carriage's acceleration */
+    double *c_spring;       /* N, the contact spring's own force k_c·δ */
     double *c_normal;       /* N, normal force */
     double *c_tx, *c_ty;    /* unit tangent (positive in the wrap sense) */
     double *c_f;            /* N, friction (+ = retards the belt) */
-    int *c_slip;
+    int *c_state;           /* sticking, slipping forward or back, off */
     int contact_count;
 } bd_wrap_contact;
 

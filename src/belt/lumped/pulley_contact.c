@@ -151,22 +151,39 @@ static int find_sector(const bd_sim *sim, const bd_pulley_body *p, const bd_wrap
     return a;
 }
 
-static void normal_forces(bd_sim *sim, bd_pulley_body *p)
+/* a candidate's state in the solve (c_state) */
+#define STICKING 0
+#define SLIPPING_FORWARD 1     /* slips, friction +μ_d·f_n */
+#define SLIPPING_BACK (-1)     /* slips, friction −μ_d·f_n */
+#define OFF 2                  /* no normal force */
+/* passes of the carriage's contact set (moving takeups only): the set is
+ * the one its acceleration A gives; one pass more when A changes it */
+#define CARRIAGE_PASSES 4
+
+/* The candidates: every node of the sector within the predictive gap of
+ * the shell, with the normal force it gets as a function of the
+ * carriage's acceleration A this step (0 for a pulley that does not
+ * move): the shell then ends the step at a velocity larger by Δt·A along
+ * the axis a, so the node's end-of-step gap closes by Δt²·A·(n̂·a) more,
+ *   f_n = f_n0 + g·A,   g = k_c·Δt²·(n̂·a)/(1 + k_c·Δt²/m).
+ * Until issue 10 the shell's end-of-step velocity was taken with the last
+ * step's acceleration and the carriage got the reaction explicitly: a lag
+ * that feeds the belt's mass on the wrap back against the carriage's, a
+ * negative damping of the takeup mode (a 10 kg carriage gained 88 kW). */
+static void gather(bd_sim *sim, bd_pulley_body *p, int moving)
 {
     bd_wrap_contact *W = wrap_of(sim, p);
     const double l0 = sim->model->l0, k_c = bd_lumped_model_of(sim)->k_contact;
+    const double dt = sim->model->dt;
     const int n = sim->model->n;
-    double R = p->m->radius;
+    const double R = p->m->radius, ax = p->m->axis[0], ay = p->m->axis[1];
     /* predictive contact: a node within this gap of the shell may reach it
      * during the step; the implicit force says whether it does */
     double Rc = R + CONTACT_GAP * l0;
-    /* the shell's velocity at the end of the step, with the carriage's
-     * acceleration of the last step (a moving takeup pulley) */
-    double vp_end = p->qdot + sim->model->dt * p->qddot;
-    double vpx = vp_end * p->m->axis[0], vpy = vp_end * p->m->axis[1];
+    /* the shell's velocity at the start of the step (central differences:
+     * the carriage's, as the nodes', at t − Δt/2) */
+    double vpx = p->qdot * ax, vpy = p->qdot * ay;
     W->contact_count = 0;
-    p->f_axis = 0.0;
-    p->fnc_axis = 0.0;
     W->anchor = find_sector(sim, p, W, &W->win_first, &W->win_count);
     for (int w = 0, k = W->win_first; w < W->win_count; w++, k = k + 1 == n ? 0 : k + 1) {
         double rx = sim->x[k] - p->cx, ry = sim->y[k] - p->cy;
@@ -179,106 +196,182 @@ static void normal_forces(bd_sim *sim, bd_pulley_body *p)
         double m = sim->mass[k];
         double Fo = nx * sim->fx[k] + ny * sim->fy[k];
         double delta = R - a;
-        double dt = sim->model->dt;
-        double fn = k_c * (delta - dt * vn - dt * dt * Fo / m)
-                  / (1.0 + k_c * dt * dt / m);
-        if (fn <= 0.0)
+        double den = 1.0 + k_c * dt * dt / m;
+        double fn0 = k_c * (delta - dt * vn - dt * dt * Fo / m) / den;
+        double g = moving ? k_c * dt * dt * (nx * ax + ny * ay) / den : 0.0;
+        if (!moving && fn0 <= 0.0)
             continue;
-        double fd = fn - (delta > 0.0 ? k_c * delta : 0.0);
-        sim->fx[k] += fn * nx;
-        sim->fy[k] += fn * ny;
-        sim->fnx[k] += fd * nx;
-        sim->fny[k] += fd * ny;
-        p->f_axis -= fn * (nx * p->m->axis[0] + ny * p->m->axis[1]);
-        p->fnc_axis -= fd * (nx * p->m->axis[0] + ny * p->m->axis[1]);
         int c = W->contact_count++;
         W->c_node[c] = k;
-        W->c_normal[c] = fn;
+        W->c_fn0[c] = fn0;
+        W->c_g[c] = g;
+        W->c_spring[c] = delta > 0.0 ? k_c * delta : 0.0;
         W->c_tx[c] = -p->m->wrap * ny;
         W->c_ty[c] = p->m->wrap * nx;
     }
 }
 
-static void friction_forces(bd_sim *sim, bd_pulley_body *p, double T_p)
+/* The wrap's stick–slip solve, the carriage with it. Unknowns: the
+ * pulley's α and the carriage's A. A sticking node's friction is the one
+ * that makes its slip speed zero at the end of the step, the shell's
+ * surface there moving at t̂·a·(q̇ + Δt·A) + R·(ω + Δt·α):
+ *   f_i = b_i − m_i·R·α − m_i·d_i·A,   b_i = m_i·v_r,i/Δt + t̂·F_i,  d_i = t̂·a;
+ * a slipping one's is σ_i·μ_d·(f_n0 + g_i·A). The pulley and the carriage:
+ *   I_s·α = T_p + R·Σ f_i,
+ *   M_c·A = P + Σ (f_i·d_i − f_n,i·(n̂·a)),
+ * two linear equations, solved exactly (Cramer). A node whose |f_i| passes
+ * μ_s·f_n slips and the set is solved again; on a moving carriage the
+ * contact set is the one A gives, solved again when A changes it. */
+static void solve(bd_sim *sim, bd_pulley_body *p, double T_p)
 {
     bd_wrap_contact *W = wrap_of(sim, p);
     const double dt = sim->model->dt, R = p->m->radius;
-    const double vpx = p->qdot * p->m->axis[0], vpy = p->qdot * p->m->axis[1];
+    const double ax = p->m->axis[0], ay = p->m->axis[1];
+    const double vpx = p->qdot * ax, vpy = p->qdot * ay;
     const int nc = W->contact_count;
-    double alpha = 0.0;
-    for (int c = 0; c < nc; c++)
-        W->c_slip[c] = 0;
-    /* solve the sticking set, move violators to slip, repeat */
-    for (int pass = 0; pass <= nc; pass++) {
-        double A = 0.0, M = 0.0, Fk = 0.0;
+    double Mc;
+    const double P = bd_pulley_carriage(sim, p, &Mc);
+    const int moving = Mc > 0.0;
+    double alpha = 0.0, A = moving ? p->qddot : 0.0;
+    for (int outer = 0; outer < CARRIAGE_PASSES; outer++) {
         for (int c = 0; c < nc; c++) {
-            if (W->c_slip[c]) {
-                Fk += W->c_f[c];
+            double fn = W->c_fn0[c] + W->c_g[c] * A;
+            W->c_state[c] = fn > 0.0 ? STICKING : OFF;
+        }
+        for (int pass = 0; pass <= nc; pass++) {
+            /* [a11 a12; a21 a22]·(α, A) = (r1, r2), r1 without T_p */
+            double Asum = 0.0, M = 0.0, Fk = 0.0;
+            double a12 = 0.0, a21 = 0.0, a22 = Mc, r2 = P;
+            for (int c = 0; c < nc; c++) {
+                int st = W->c_state[c];
+                if (st == OFF)
+                    continue;
+                int k = W->c_node[c];
+                double d = W->c_tx[c] * ax + W->c_ty[c] * ay;
+                /* n̂·a, with n̂ = wrap·(t_y, −t_x) */
+                double cn = p->m->wrap * (W->c_ty[c] * ax - W->c_tx[c] * ay);
+                r2 -= W->c_fn0[c] * cn;
+                a22 += W->c_g[c] * cn;
+                if (st == STICKING) {
+                    double vr = W->c_tx[c] * (sim->vx[k] - vpx) + W->c_ty[c] * (sim->vy[k] - vpy)
+                              - R * p->omega;
+                    double b = sim->mass[k] * vr / dt + W->c_tx[c] * sim->fx[k]
+                             + W->c_ty[c] * sim->fy[k];
+                    Asum += b;
+                    M += sim->mass[k];
+                    a12 += R * sim->mass[k] * d;
+                    a21 += R * sim->mass[k] * d;
+                    a22 += sim->mass[k] * d * d;
+                    r2 += d * b;
+                } else {
+                    double s = st * p->m->mu_d;
+                    Fk += s * W->c_fn0[c];
+                    a12 -= R * s * W->c_g[c];
+                    a22 -= d * s * W->c_g[c];
+                    r2 += d * s * W->c_fn0[c];
+                }
+            }
+            double a11 = bd_pulley_solve_inertia(sim, p) + R * R * M;
+            double r1 = R * Asum + R * Fk + T_p;
+            if (p->held) {
+                /* a held pulley (stabilization's holdback) does not turn */
+                alpha = 0.0;
+                A = moving ? r2 / a22 : 0.0;
+            } else if (!moving) {
+                alpha = r1 / a11;
+                A = 0.0;
+            } else {
+                double det = a11 * a22 - a12 * a21;
+                alpha = (r1 * a22 - a12 * r2) / det;
+                A = (a11 * r2 - a21 * r1) / det;
+            }
+            /* a drive that would pass its max_torque: at the limit, solve
+             * again (once: it is explicit then) */
+            if (!p->held && bd_pulley_drive_clip(sim, p, alpha, &T_p)) {
+                pass--;
                 continue;
             }
-            int k = W->c_node[c];
-            double vr = W->c_tx[c] * (sim->vx[k] - vpx) + W->c_ty[c] * (sim->vy[k] - vpy)
-                      - R * p->omega;
-            A += sim->mass[k] * vr / dt + W->c_tx[c] * sim->fx[k] + W->c_ty[c] * sim->fy[k];
-            M += sim->mass[k];
-        }
-        /* a held pulley (p->held: stabilization's holdback) does not turn */
-        alpha = p->held ? 0.0 : (R * A + R * Fk + T_p) / (bd_pulley_solve_inertia(sim, p) + R * R * M);
-        /* a drive that would pass its max_torque: at the limit, solve again
-         * (once: it is explicit then) */
-        if (bd_pulley_drive_clip(sim, p, alpha, &T_p)) {
-            pass--;
-            continue;
-        }
-        int changed = 0;
-        for (int c = 0; c < nc; c++) {
-            if (W->c_slip[c])
-                continue;
-            int k = W->c_node[c];
-            double vr = W->c_tx[c] * (sim->vx[k] - vpx) + W->c_ty[c] * (sim->vy[k] - vpy)
-                      - R * p->omega;
-            double f = sim->mass[k] * (vr / dt - R * alpha)
-                     + W->c_tx[c] * sim->fx[k] + W->c_ty[c] * sim->fy[k];
-            W->c_f[c] = f;
-            if (fabs(f) > p->m->mu_s * W->c_normal[c]) {
-                W->c_slip[c] = 1;
-                W->c_f[c] = copysign(p->m->mu_d * W->c_normal[c], f);
-                changed = 1;
+            int changed = 0;
+            for (int c = 0; c < nc; c++) {
+                if (W->c_state[c] != STICKING)
+                    continue;
+                int k = W->c_node[c];
+                double d = W->c_tx[c] * ax + W->c_ty[c] * ay;
+                double vr = W->c_tx[c] * (sim->vx[k] - vpx) + W->c_ty[c] * (sim->vy[k] - vpy)
+                          - R * p->omega;
+                double f = sim->mass[k] * (vr / dt - R * alpha - d * A)
+                         + W->c_tx[c] * sim->fx[k] + W->c_ty[c] * sim->fy[k];
+                W->c_f[c] = f;
+                double fn = W->c_fn0[c] + W->c_g[c] * A;
+                if (fabs(f) > p->m->mu_s * fn) {
+                    W->c_state[c] = f > 0.0 ? SLIPPING_FORWARD : SLIPPING_BACK;
+                    changed = 1;
+                }
             }
+            if (!changed)
+                break;
         }
-        if (!changed)
+        if (!moving)
+            break;
+        /* the contact set A gives: the same as solved, or once more */
+        int same = 1;
+        for (int c = 0; c < nc && same; c++)
+            same = (W->c_fn0[c] + W->c_g[c] * A > 0.0) == (W->c_state[c] != OFF);
+        if (same)
             break;
     }
-    /* apply */
+    /* apply, and keep only the nodes in contact (c_node, the material's
+     * discharge reads them) */
     double sum = 0.0;
+    int kept = 0;
+    p->f_axis = 0.0;
+    p->fnc_axis = 0.0;
     for (int c = 0; c < nc; c++) {
+        int st = W->c_state[c];
+        double fn = W->c_fn0[c] + W->c_g[c] * A;
+        if (st == OFF || fn <= 0.0)
+            continue;
         int k = W->c_node[c];
-        double f = W->c_f[c];
-        sim->fx[k] -= f * W->c_tx[c];
-        sim->fy[k] -= f * W->c_ty[c];
-        sim->fnx[k] -= f * W->c_tx[c];
-        sim->fny[k] -= f * W->c_ty[c];
-        double fa = f * (W->c_tx[c] * p->m->axis[0] + W->c_ty[c] * p->m->axis[1]);
-        p->f_axis += fa;
-        p->fnc_axis += fa;
+        double tx = W->c_tx[c], ty = W->c_ty[c];
+        double nx = p->m->wrap * ty, ny = -p->m->wrap * tx;
+        double f = st == STICKING ? W->c_f[c] : st * p->m->mu_d * fn;
+        double fd = fn - W->c_spring[c];
+        sim->fx[k] += fn * nx - f * tx;
+        sim->fy[k] += fn * ny - f * ty;
+        sim->fnx[k] += fd * nx - f * tx;
+        sim->fny[k] += fd * ny - f * ty;
+        double cn = nx * ax + ny * ay, d = tx * ax + ty * ay;
+        p->f_axis += f * d - fn * cn;
+        p->fnc_axis += f * d - fd * cn;
         sum += f;
+        W->c_node[kept] = k;
+        W->c_normal[kept] = fn;
+        W->c_tx[kept] = tx;
+        W->c_ty[kept] = ty;
+        W->c_f[kept] = f;
+        kept++;
     }
+    W->contact_count = kept;
     p->torque_friction = R * sum;
     p->alpha = alpha;
 }
 
 void bd_lumped_wrap(bd_sim *sim, bd_pulley_body *p, double external_torque)
 {
-    normal_forces(sim, p);
+    double Mc;
+    bd_pulley_carriage(sim, p, &Mc);
+    gather(sim, p, Mc > 0.0);
     const bd_wrap_contact *W = wrap_of(sim, p);
     p->torque_friction = 0.0;
     if (W->contact_count == 0) {
+        p->f_axis = 0.0;
+        p->fnc_axis = 0.0;
         p->alpha = p->held ? 0.0 : external_torque / bd_pulley_solve_inertia(sim, p);
         if (!p->held && bd_pulley_drive_clip(sim, p, p->alpha, &external_torque))
             p->alpha = external_torque / bd_pulley_solve_inertia(sim, p);
         return;
     }
-    friction_forces(sim, p, external_torque);
+    solve(sim, p, external_torque);
 }
 
 /* elastic energy of the contact springs: ½k_c·δ² of every node inside the
