@@ -201,6 +201,7 @@ int bd_sim_probe(const bd_sim *sim, int i, bd_probe_state *out);
 typedef struct bd_energy_state {
     double kinetic_J, potential_J, dissipated_J, input_J, initial_J;
     double balance_error_rel;      /* largest so far */
+    double dissipation_fall_rel;   /* largest fall of dissipated between checks, same scale */
 } bd_energy_state;
 void bd_sim_energy(const bd_sim *sim, bd_energy_state *out);
 /* book the potential energy in every step from now on (slower) */

@@ -302,6 +302,7 @@ static int write_summary(bd_outputs *o, const bd_sim *sim, double wall, const ch
     cJSON *en = cJSON_AddObjectToObject(root, "energy");
     bd_json_add_number(en, "kinetic_final_J", sim->energy.kinetic);
     bd_json_add_number(en, "balance_error_rel", sim->energy.balance_error_rel);
+    bd_json_add_number(en, "dissipation_fall_rel", sim->energy.dissipation_fall_rel);
     if (def->simulation.stabilize) {
         cJSON *st = cJSON_AddObjectToObject(root, "stabilize");
         bd_json_add_number(st, "steps", (double)sim->stabilize_iterations);

@@ -28,6 +28,9 @@ static void energy_start(bd_sim *sim)
     en->input = 0.0;
     en->max_kinetic = 0.0;
     en->balance_error_rel = 0.0;
+    en->dissipated_checked = 0.0;
+    en->dissipation_fall_rel = 0.0;
+    en->dissipation_fall_t = 0.0;
     en->initial = en->potential;
 }
 
@@ -116,6 +119,12 @@ int bd_sim_run(bd_sim *sim, const bd_run_options *opt, char *err, size_t errlen)
     else if (status == BD_RUN_INTERRUPTED && !stabilize_ended)
         snprintf(err, errlen, "interrupted at t = %.4f s; outputs written up to that time", sim->t);
     bd_sim_report_events(sim);
+    if (sim->energy.dissipation_fall_rel > BD_DISSIPATION_FALL_WARN && !stabilize_ended)
+        bd_sim_warn(sim, "the energy account booked negative dissipation: the dissipated "
+                    "energy fell by %.2g %% of the energy in play in the output interval "
+                    "ending at t = %.3f s (a force taken as dissipative put energy into "
+                    "the belt; results near that time are suspect)",
+                    100.0 * sim->energy.dissipation_fall_rel, sim->energy.dissipation_fall_t);
     if (sim->tension_min < 0.0 && !stabilize_ended)
         bd_sim_warn(sim, "the belt is in compression (lowest tension %.0f N at t = %.3f s, "
                     "s = %.2f m): raise the takeup force", sim->tension_min, sim->tension_min_t,

@@ -162,6 +162,11 @@ typedef struct bd_energy {
     double initial;        /* E_kin + E_pot at t = 0 */
     double max_kinetic;
     double balance_error_rel; /* largest so far */
+    /* negative dissipation: the largest fall of `dissipated` between two
+     * balance checks, over the energy scale, and when it ended */
+    double dissipated_checked;   /* J, at the last check */
+    double dissipation_fall_rel;
+    double dissipation_fall_t;
 } bd_energy;
 
 /* The compiled model: what bd_sim_create derives from the model

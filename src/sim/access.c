@@ -155,6 +155,7 @@ void bd_sim_energy(const bd_sim *sim, bd_energy_state *out)
     out->input_J = en->input;
     out->initial_J = en->initial;
     out->balance_error_rel = en->balance_error_rel;
+    out->dissipation_fall_rel = en->dissipation_fall_rel;
 }
 
 void bd_sim_book_energy_every_step(bd_sim *sim, int on) { sim->energy_every_step = on != 0; }

@@ -27,7 +27,11 @@ double bd_energy_potential(const bd_sim *sim)
 }
 
 /* the largest |E_k + E_p + E_d − E_in − E_0| / max(|E_0|, E_in, max E_k, 1 J)
- * so far (cli.md `balance_error_rel`) */
+ * so far (cli.md `balance_error_rel`), and the largest fall of the
+ * dissipated energy between two checks on the same scale: every force the
+ * account books as dissipative (dashpots, friction, rolling resistance,
+ * the implicit part of the contacts, bearings) must take energy out over
+ * an output interval; one that puts energy in is reported (run.c) */
 void bd_energy_update_balance(bd_sim *sim)
 {
     bd_energy *en = &sim->energy;
@@ -41,6 +45,12 @@ void bd_energy_update_balance(bd_sim *sim)
         scale = 1.0;
     if (err / scale > en->balance_error_rel)
         en->balance_error_rel = err / scale;
+    double fall = (en->dissipated_checked - en->dissipated) / scale;
+    if (fall > en->dissipation_fall_rel) {
+        en->dissipation_fall_rel = fall;
+        en->dissipation_fall_t = sim->t;
+    }
+    en->dissipated_checked = en->dissipated;
 }
 
 double bd_element_s(const bd_sim *sim, int e)

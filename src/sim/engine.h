@@ -30,6 +30,9 @@ void bd_cost_time_text(double s, char *buf, size_t len);
 
 /* energy.c */
 double bd_energy_potential(const bd_sim *sim);
+/* the fall of the dissipated energy between two output times, over the
+ * energy scale, that a run reports as negative dissipation */
+#define BD_DISSIPATION_FALL_WARN 1e-3
 void bd_energy_update_balance(bd_sim *sim);
 
 /* the tension field, for the writers: element e's midpoint path
