@@ -22,13 +22,15 @@
  * (on the node −f_i·t̂, on the pulley +f_i·R as torque) is the one that makes
  * every sticking node's v_r zero at the end of the step, given the other
  * forces F_i on the nodes and the external torque T_p on the pulley
- * (eqs 4.84–4.92, with the pulley's translation neglected as in 4.84):
+ * (eqs 4.84–4.92); on a pulley whose axle stays put:
  *   α = (R·A + R·F_k + T_p)/(I + R²·M),   A = Σ_S (m_i·v_r,i/Δt + t̂·F_i),
  *   f_i = m_i·(v_r,i/Δt − R·α) + t̂·F_i   for sticking nodes S,
  * with M = Σ_S m_i and F_k = Σ of the dynamic forces of slipping nodes.
  * A node whose |f_i| exceeds μ_s·f_n slips with f_i = ±μ_d·f_n (4.93–4.94)
  * and the sticking set is solved again. α is the pulley's angular
- * acceleration (I·α = R·Σf + T_p); it is exact for I → 0 too. */
+ * acceleration (I·α = R·Σf + T_p); it is exact for I → 0 too. A takeup
+ * pulley's carriage is a second unknown, solved with α (solve() below;
+ * 4.84 neglects the pulley's translation). */
 #include "belt/lumped/lumped.h"
 
 #include <math.h>
@@ -169,7 +171,8 @@ static int find_sector(const bd_sim *sim, const bd_pulley_body *p, const bd_wrap
  * Until issue 10 the shell's end-of-step velocity was taken with the last
  * step's acceleration and the carriage got the reaction explicitly: a lag
  * that feeds the belt's mass on the wrap back against the carriage's, a
- * negative damping of the takeup mode (a 10 kg carriage gained 88 kW). */
+ * negative damping of the takeup mode (a 10 kg carriage's run booked
+ * 88 kW of phantom dissipation; test_takeup_step). */
 static void gather(bd_sim *sim, bd_pulley_body *p, int moving)
 {
     bd_wrap_contact *W = wrap_of(sim, p);
