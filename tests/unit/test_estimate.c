@@ -58,11 +58,8 @@ static void against_the_build(const char *name)
 {
     bd_model_def def;
     CHECK(load(name, &def) == 0);
-    bd_diag diag;
-    bd_diag_init(&diag);
     bd_sim *sim = NULL;
-    CHECK(bd_sim_create(&def, &sim, &diag) == 0);
-    bd_diag_free(&diag);
+    CHECK(bd_test_create(&def, &sim) == 0);
     if (!sim)
         return;
     bd_belt_estimate be;
@@ -141,11 +138,8 @@ static void allocation_fails(void)
     bd_model_def def;
     CHECK(load("head_drive", &def) == 0);
     def.belt.element_length = 5e-4;
-    bd_diag diag;
-    bd_diag_init(&diag);
     bd_model *model = NULL;
-    CHECK(bd_model_compile(&def, &model, &diag) == 0);
-    bd_diag_free(&diag);
+    CHECK(bd_test_compile(&def, &model) == 0);
     if (!model)
         return;
     struct rlimit old, low;

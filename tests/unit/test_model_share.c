@@ -92,13 +92,10 @@ static void sequential(const char *name, double duration, const char *root)
     bd_model_def def;
     if (load(name, duration, &def))
         return;
-    bd_diag diag;
-    bd_diag_init(&diag);
     bd_model *model = NULL;
-    CHECK(bd_model_compile(&def, &model, &diag) == 0);
+    CHECK(bd_test_compile(&def, &model) == 0);
     bd_sim *c = NULL;
-    CHECK(bd_sim_create(&def, &c, &diag) == 0);
-    bd_diag_free(&diag);
+    CHECK(bd_test_create(&def, &c) == 0);
     if (!model || !c)
         return;
     char dir[600];
@@ -154,11 +151,8 @@ static void threads(const char *name, long steps)
     bd_model_def def;
     if (load(name, 1.0, &def))
         return;
-    bd_diag diag;
-    bd_diag_init(&diag);
     bd_model *model = NULL;
-    CHECK(bd_model_compile(&def, &model, &diag) == 0);
-    bd_diag_free(&diag);
+    CHECK(bd_test_compile(&def, &model) == 0);
     if (!model)
         return;
     stepper s[3] = {{NULL, steps, 0}, {NULL, steps, 0}, {NULL, steps, 0}};

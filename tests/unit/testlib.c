@@ -15,21 +15,46 @@ int bd_test_finish(const char *name)
 #include "beltdyn/model.h"
 #include "beltdyn/sim.h"
 
+static void print_diag(const bd_diag *d)
+{
+    for (int i = 0; i < d->count + d->warning_count; i++)
+        fprintf(stderr, "%s\n", d->lines[i]);
+}
+
 int bd_test_make_sim(const char *yaml, bd_model_def *def, bd_sim **sim)
 {
     bd_diag d;
     bd_diag_init(&d);
     int bad = bd_model_load_string(yaml, strlen(yaml), "test.yaml", def, &d);
-    if (!bad)
-        bad = bd_sim_create(def, sim, &d);
-    for (int i = 0; i < d.count + d.warning_count; i++)
-        fprintf(stderr, "%s\n", d.lines[i]);
+    print_diag(&d);
     bd_diag_free(&d);
+    if (!bad)
+        bad = bd_test_create(def, sim);
     if (bad) {
         fprintf(stderr, "test model did not load\n");
         exit(2);
     }
     return 0;
+}
+
+int bd_test_compile(const bd_model_def *def, bd_model **model)
+{
+    bd_diag d;
+    bd_diag_init(&d);
+    int rc = bd_model_compile(def, model, &d);
+    print_diag(&d);
+    bd_diag_free(&d);
+    return rc;
+}
+
+int bd_test_create(const bd_model_def *def, bd_sim **sim)
+{
+    bd_diag d;
+    bd_diag_init(&d);
+    int rc = bd_sim_create(def, sim, &d);
+    print_diag(&d);
+    bd_diag_free(&d);
+    return rc;
 }
 
 int bd_test_run_to(bd_sim *sim, double t)

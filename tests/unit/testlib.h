@@ -37,5 +37,10 @@ void bd_test_remove_run(const char *dir);
 struct bd_model_def;
 struct bd_sim;
 int bd_test_make_sim(const char *yaml, struct bd_model_def *def, struct bd_sim **sim);
+/* compile a model, or create a simulation, from a definition; the
+ * diagnostics printed; returns the library's code (0: built) */
+struct bd_model;
+int bd_test_compile(const struct bd_model_def *def, struct bd_model **model);
+int bd_test_create(const struct bd_model_def *def, struct bd_sim **sim);
 /* advance to time t (s); returns 0, or 1 if the run failed */
 int bd_test_run_to(struct bd_sim *sim, double t);

@@ -531,12 +531,9 @@ void bd_axial_clone(bd_sim *dst, const bd_sim *src)
     size_t n = (size_t)src->model->n, np = (size_t)src->model->pulley_count;
     bd_axial *ax = bd_xcalloc(1, sizeof *ax);
     dst->belt_data = ax;
-    ax->d_tail = S->d_tail;
-    ax->d_head = S->d_head;
-    ax->tail_free = S->tail_free;
-    ax->head_free = S->head_free;
-    ax->e_tail = S->e_tail;
-    ax->e_head = S->e_head;
+    /* the scalars by copy, the arrays not the source's until each is copied */
+    *ax = *S;
+    ax->pulleys = NULL;
     bd_doubles_dup(ax, S, STATE_DOUBLES, COUNT(STATE_DOUBLES), n);
     ax->pulleys = bd_xdup(S->pulleys, np, sizeof *ax->pulleys);
 }

@@ -33,7 +33,6 @@ static const size_t BELT_DOUBLES[] = {offsetof(bd_lumped, ux), offsetof(bd_lumpe
 static const size_t WRAP_DOUBLES[] = {offsetof(bd_wrap_contact, c_fn0),
                                       offsetof(bd_wrap_contact, c_g),
                                       offsetof(bd_wrap_contact, c_spring),
-                                      offsetof(bd_wrap_contact, c_normal),
                                       offsetof(bd_wrap_contact, c_tx),
                                       offsetof(bd_wrap_contact, c_ty),
                                       offsetof(bd_wrap_contact, c_f)};
@@ -362,11 +361,11 @@ void bd_lumped_clone(bd_sim *dst, const bd_sim *src)
         const bd_wrap_contact *from = &S->wraps[i];
         bd_wrap_contact *W = &L->wraps[i];
         size_t w = (size_t)bd_lumped_model_of(src)->sectors[i].node_max;
-        /* the scalars; each array is owned as it is copied */
-        W->anchor = from->anchor;
-        W->win_first = from->win_first;
-        W->win_count = from->win_count;
-        W->contact_count = from->contact_count;
+        /* the scalars by copy, the arrays not the source's until each is
+         * copied */
+        *W = *from;
+        W->c_node = NULL;
+        W->c_state = NULL;
         bd_doubles_dup(W, from, WRAP_DOUBLES, COUNT(WRAP_DOUBLES), w);
         W->c_node = bd_xdup(from->c_node, w, sizeof *W->c_node);
         W->c_state = bd_xdup(from->c_state, w, sizeof *W->c_state);

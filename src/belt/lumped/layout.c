@@ -223,8 +223,8 @@ static double shift_misfit(double q, void *vctx)
 
 static int compressed(const weight_grid *g, double Tc, double EA, char *err, size_t errlen)
 {
-    int at = 0;
-    for (int i = 1; i <= g->m; i++)
+    long at = 0;
+    for (long i = 1; i <= g->m; i++)
         if (g->W[i] < g->W[at])
             at = i;
     double T = Tc + g->W[at];
@@ -234,7 +234,7 @@ static int compressed(const weight_grid *g, double Tc, double EA, char *err, siz
              "%.4g N at s = %.4g m, a strain of %.0f %% with axial stiffness %.4g N (a belt "
              "is not laid compressed by %.0f %% or more); the takeup or initial tension is "
              "too low for the belt's weight",
-             T, at * g->ds, 100.0 * T / EA, EA, 100.0 * (1.0 - MIN_STRETCH));
+             T, (double)at * g->ds, 100.0 * T / EA, EA, 100.0 * (1.0 - MIN_STRETCH));
     return 1;
 }
 

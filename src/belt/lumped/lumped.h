@@ -29,17 +29,15 @@ typedef struct bd_lumped_model {
 
 /* the contact of the belt with one pulley's shell (pulley_contact.c) */
 typedef struct bd_wrap_contact {
-    /* step: the node nearest the arc's middle, and the sector's nodes
-     * first .. first+count-1 (mod n) tested this step */
+    /* step: the node nearest the arc's middle, where the next step's
+     * search for the sector's nodes starts */
     int anchor;
-    int win_first, win_count;
     /* step scratch of the contact solve [its sector's node_max]: the
      * candidate nodes, after the solve the nodes in contact */
     int *c_node;
     double *c_fn0;          /* N, normal force were the carriage not to accelerate */
     double *c_g;            /* kg, its growth with the carriage's acceleration */
     double *c_spring;       /* N, the contact spring's own force k_c·δ */
-    double *c_normal;       /* N, normal force */
     double *c_tx, *c_ty;    /* unit tangent (positive in the wrap sense) */
     double *c_f;            /* N, friction (+ = retards the belt) */
     int *c_state;           /* sticking, slipping forward or back, off */

@@ -95,8 +95,6 @@ void bd_lumped_sector_anchor(bd_sim *sim, int pulley, bd_wrap_contact *W)
             W->anchor = k;
         }
     }
-    W->win_first = W->anchor;
-    W->win_count = 0;
 }
 
 static int in_sector(const bd_sim *sim, const bd_pulley_body *p, const bd_wrap_sector *S, int k)
@@ -187,8 +185,9 @@ static void gather(bd_sim *sim, bd_pulley_body *p, int moving)
      * the carriage's, as the nodes', at t − Δt/2) */
     double vpx = p->qdot * ax, vpy = p->qdot * ay;
     W->contact_count = 0;
-    W->anchor = find_sector(sim, p, W, &W->win_first, &W->win_count);
-    for (int w = 0, k = W->win_first; w < W->win_count; w++, k = k + 1 == n ? 0 : k + 1) {
+    int first, count;
+    W->anchor = find_sector(sim, p, W, &first, &count);
+    for (int w = 0, k = first; w < count; w++, k = k + 1 == n ? 0 : k + 1) {
         double rx = sim->x[k] - p->cx, ry = sim->y[k] - p->cy;
         double a2 = rx * rx + ry * ry;
         if (a2 >= Rc * Rc)
@@ -225,15 +224,13 @@ static void gather(bd_sim *sim, bd_pulley_body *p, int moving)
  * two linear equations, solved exactly (Cramer). A node whose |f_i| passes
  * μ_s·f_n slips and the set is solved again; on a moving carriage the
  * contact set is the one A gives, solved again when A changes it. */
-static void solve(bd_sim *sim, bd_pulley_body *p, double T_p)
+static void solve(bd_sim *sim, bd_pulley_body *p, double T_p, double P, double Mc)
 {
     bd_wrap_contact *W = wrap_of(sim, p);
     const double dt = sim->model->dt, R = p->m->radius;
     const double ax = p->m->axis[0], ay = p->m->axis[1];
     const double vpx = p->qdot * ax, vpy = p->qdot * ay;
     const int nc = W->contact_count;
-    double Mc;
-    const double P = bd_pulley_carriage(sim, p, &Mc);
     const int moving = Mc > 0.0;
     double alpha = 0.0, A = moving ? p->qddot : 0.0;
     for (int outer = 0; outer < CARRIAGE_PASSES; outer++) {
@@ -347,12 +344,7 @@ static void solve(bd_sim *sim, bd_pulley_body *p, double T_p)
         p->f_axis += f * d - fn * cn;
         p->fnc_axis += f * d - fd * cn;
         sum += f;
-        W->c_node[kept] = k;
-        W->c_normal[kept] = fn;
-        W->c_tx[kept] = tx;
-        W->c_ty[kept] = ty;
-        W->c_f[kept] = f;
-        kept++;
+        W->c_node[kept++] = k;
     }
     W->contact_count = kept;
     p->torque_friction = R * sum;
@@ -361,8 +353,9 @@ static void solve(bd_sim *sim, bd_pulley_body *p, double T_p)
 
 void bd_lumped_wrap(bd_sim *sim, bd_pulley_body *p, double external_torque)
 {
+    /* the carriage's pull and mass (0: it does not move this step) */
     double Mc;
-    bd_pulley_carriage(sim, p, &Mc);
+    const double P = bd_pulley_carriage(sim, p, &Mc);
     gather(sim, p, Mc > 0.0);
     const bd_wrap_contact *W = wrap_of(sim, p);
     p->torque_friction = 0.0;
@@ -374,7 +367,7 @@ void bd_lumped_wrap(bd_sim *sim, bd_pulley_body *p, double external_torque)
             p->alpha = external_torque / bd_pulley_solve_inertia(sim, p);
         return;
     }
-    solve(sim, p, external_torque);
+    solve(sim, p, external_torque, P, Mc);
 }
 
 /* elastic energy of the contact springs: ½k_c·δ² of every node inside the
