@@ -1,4 +1,5 @@
-/* beltdyn report on a start-study directory (one made by `beltdyn study`):
+/* beltdyn report on a start-study directory (one made by `beltdyn study`;
+ * a sweep's goes to sweep_report.c):
  * the comparison of the start curves (issue 6) as plots in DIR/plots and
  * one self-contained DIR/report.html with the study table.
  *
@@ -21,6 +22,7 @@
 #include "io/csv_read.h"
 #include "io/html.h"
 #include "io/plot.h"
+#include "io/sweep_report.h"
 
 #define PATH_LEN 4096
 #define MAX_CASES 64
@@ -351,6 +353,10 @@ int bd_study_report_write(const char *dir, char *err, size_t errlen)
     static char title[2][400], subtitle[400];
     int rc = read_study(s, err, errlen);
     if (rc) goto done;
+    if (cJSON_GetObjectItemCaseSensitive(s->json, "sweep")) {
+        rc = bd_sweep_report_write(dir, s->json, err, errlen);
+        goto done;
+    }
     snprintf(s->plots, sizeof s->plots, "%s/plots", dir);
     if (mkdir(s->plots, 0777) != 0 && errno != EEXIST) {
         snprintf(err, errlen, "%s: %s", s->plots, strerror(errno));
