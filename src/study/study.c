@@ -639,6 +639,13 @@ static int finish(study_run *R, int runner_status, char *err, size_t errlen)
     }
     if (bd_study_write_tables(s, err, errlen))
         return BD_RUN_FAILED;
+    if (runner_status == BD_RUN_INTERRUPTED) {
+        int complete = 0;
+        for (int j = 0; j < s->n; j++)
+            complete += s->cases[j].status == BD_RUN_OK || s->cases[j].status == BD_RUN_FAILED;
+        snprintf(err, errlen, "interrupted: %d of %d cases complete, in %s/study.csv; "
+                 "--resume runs the others", complete, s->n, o->out_dir);
+    }
     if (runner_status != BD_RUN_OK)
         return runner_status;
     if (R->write_failed) {
