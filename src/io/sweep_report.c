@@ -374,32 +374,14 @@ static void html_cases(const sweep *s, bd_strbuf *b)
 static int embed(sweep *s, bd_strbuf *b, const char *plot, const char *caption, char *err,
                  size_t errlen)
 {
-    char png[PATH_LEN];
-    if (snprintf(png, sizeof png, "%s/%s.png", s->plots, plot) >= (int)sizeof png) {
-        snprintf(err, errlen, "%s: path too long", s->plots);
-        return BD_REPORT_EOUTPUT;
-    }
-    bd_sb_printf(b, "<figure id=\"%s\"><img alt=\"%s\" src=\"", plot, plot);
-    if (bd_sb_embed_png(b, png)) {
-        snprintf(err, errlen, "%s: cannot read back", png);
-        return BD_REPORT_EOUTPUT;
-    }
-    bd_sb_puts(b, "\"><figcaption>");
-    bd_sb_html(b, caption);
-    bd_sb_printf(b, " (also plots/%s.svg)</figcaption></figure>\n", plot);
-    return 0;
+    return bd_sb_figure(b, s->plots, plot, caption, err, errlen) ? BD_REPORT_EOUTPUT : 0;
 }
 
 static int write_html(sweep *s, char *err, size_t errlen)
 {
     bd_strbuf b = {0};
-    bd_sb_puts(&b, "<!DOCTYPE html>\n<html lang=en><head><meta charset=utf-8>\n<title>");
-    bd_sb_html(&b, s->model);
-    bd_sb_puts(&b, " — beltdyn sweep</title>\n<style>");
-    bd_sb_puts(&b, bd_html_css);
-    bd_sb_puts(&b, "</style></head><body><main>\n<h1>");
-    bd_sb_html(&b, s->model);
-    bd_sb_printf(&b, "</h1>\n<p class=sub>beltdyn sweep (%s) · %d keys · %d completed cases · "
+    bd_sb_page_start(&b, s->model, "sweep");
+    bd_sb_printf(&b, "<p class=sub>beltdyn sweep (%s) · %d keys · %d completed cases · "
                  "each case's own run in its directory</p>\n",
                  s->grid ? "grid" : "Latin hypercube", s->nkeys, s->n);
     bd_sb_puts(&b, "<h2>Which key matters</h2>\n<p>The keys ranked by the magnitude of "

@@ -532,7 +532,7 @@ static void run_case(void *ctx, int job, const bd_job_env *env, bd_job_result *o
     built = bd_sim_create(def, &sim, &diag) == 0;
     if (!built)
         snprintf(out->message, sizeof out->message, "case %s: the model could not be "
-                 "built: %s", c->name, diag.count > 0 ? diag.lines[0] : "");
+                 "built: %.850s", c->name, diag.count > 0 ? diag.lines[0] : "");
     if (!built) {
         out->status = BD_RUN_BAD_INPUT;
     } else {
@@ -550,7 +550,7 @@ static void run_case(void *ctx, int job, const bd_job_env *env, bd_job_result *o
         }
         out->status = bd_sim_run(sim, &ro, msg, sizeof msg);
         if (out->status != BD_RUN_OK)
-            snprintf(out->message, sizeof out->message, "case %s: %s", c->name, msg);
+            snprintf(out->message, sizeof out->message, "case %s: %.900s", c->name, msg);
         bd_sim_result(sim, &out->res);
     }
     out->wall_s = bd_wall_seconds() - w0;
