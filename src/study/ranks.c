@@ -70,11 +70,15 @@ int bd_ranks_recv(int *src, void *buf, int cap, int *len, int timeout_ms)
 {
     const struct timespec pause = {0, 1000000};
     for (int waited = 0;; waited++) {
-        int flag = 0;
-        MPI_Status st;
-        if (MPI_Iprobe(MPI_ANY_SOURCE, 0, MPI_COMM_WORLD, &flag, &st) != MPI_SUCCESS)
-            return -1;
-        if (flag) {
+        /* twice: a probe that finds nothing makes MPI progress, which may
+         * only then bring in a message that has arrived (Open MPI) */
+        for (int look = 0; look < 2; look++) {
+            int flag = 0;
+            MPI_Status st;
+            if (MPI_Iprobe(MPI_ANY_SOURCE, 0, MPI_COMM_WORLD, &flag, &st) != MPI_SUCCESS)
+                return -1;
+            if (!flag)
+                continue;
             int n = 0;
             MPI_Get_count(&st, MPI_BYTE, &n);
             if (n > cap)
