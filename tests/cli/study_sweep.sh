@@ -11,6 +11,7 @@
 #   tension (rho > 0.8), gives the start time a negative rho with the peak
 #   tension and design.f rho 0 and the last rank everywhere;
 # - --best tight_tension_max_N --where slipped=false picks the 3 s start;
+# - a case that cannot be built is reported in the table, the others run;
 # - a Latin hypercube is the same for a seed, another for another seed,
 #   and puts one case in each stratum of each key;
 # - bad keys and ranges exit 2 with a message naming the key, and write
@@ -109,6 +110,19 @@ for k, (lo, hi) in ((0, (1.0, 3.0)), (1, (600.0, 900.0))):
 PY
 then ok "Latin hypercube: same for a seed, one case per stratum"
 else bad "Latin hypercube" "exit $r1 $r2 $r3: $(tail -2 "$work/s1.out")"; fi
+
+# a case that fails (its time step above the stable one: its model loads,
+# its build refuses it) is in the table; the other case completes; exit 1
+"$BELTDYN" study "$DATA/study_small.yaml" -o "$work/f" --vary simulation.time_step=0.0001:0.01:2 \
+    -j 2 >"$work/f.out" 2>"$work/f.err"
+rc=$?
+if [ $rc -eq 1 ] && grep -q "case_002.*time_step" "$work/f.err" \
+    && grep -q "^case_001,0.0001,completed," "$work/f/study.csv" \
+    && grep -q "^case_002,0.01,bad input," "$work/f/study.csv"; then
+    ok "a failed case is in the table, the other completes, exit 1"
+else
+    bad "failed case" "exit $rc: $(cat "$work/f/study.csv" "$work/f.err" 2>&1 | head -c 600)"
+fi
 
 # bad keys: exit 2, a message naming the key, nothing written
 n=0
