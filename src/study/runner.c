@@ -210,7 +210,10 @@ static int worker_loop(worker *w)
         if (f.h.type != F_JOB)
             continue;   /* an INTERRUPT between jobs: nothing runs */
         w->job = f.h.job;
-        w->want_progress = f.h.len >= (int)sizeof(int) && f.body[0] != 0;
+        int want = 0;
+        if (f.h.len >= (int)sizeof want)
+            memcpy(&want, f.body, sizeof want);
+        w->want_progress = want != 0;
         bd_job_env env = {worker_progress, w, worker_message, w, &w->stop};
         bd_job_result res;
         memset(&res, 0, sizeof res);
