@@ -321,6 +321,17 @@ static int coord_send(coord *c, int k, int type, int job, const void *body, size
 
 static int spawn(coord *c, int k);
 
+/* wait for a worker process to end; a signal (SIGINT) does not cut it
+ * short, which would leave a zombie and its status unknown */
+static void reap(pid_t pid, int *status)
+{
+    int st = 0;
+    while (waitpid(pid, &st, 0) < 0 && errno == EINTR)
+        ;
+    if (status)
+        *status = st;
+}
+
 /* a worker process ended: its job failed; another takes its place */
 static void lost_worker(coord *c, int k)
 {
@@ -329,7 +340,7 @@ static void lost_worker(coord *c, int k)
     close(w->task_fd);
     close(w->result_fd);
     w->alive = 0;
-    waitpid(w->pid, &st, 0);
+    reap(w->pid, &st);
     if (w->busy >= 0) {
         bd_job_result res;
         memset(&res, 0, sizeof res);
@@ -460,7 +471,7 @@ static void hand_out(coord *c)
             if (c->mode == MODE_FORK) {
                 close(w->task_fd);
                 close(w->result_fd);
-                waitpid(w->pid, NULL, 0);
+                reap(w->pid, NULL);
             }
         }
     }
