@@ -17,6 +17,9 @@
  * hears INTERRUPT in its run's progress call, so a run stops at its next
  * output row, as on SIGINT, and reports itself interrupted. A worker
  * process that dies fails its job (the others go on) and is replaced. */
+#if defined(__linux__) && !defined(_GNU_SOURCE)
+#define _GNU_SOURCE   /* sched_getaffinity, CPU_COUNT: the cores this process may use */
+#endif
 #include "study/runner.h"
 
 #include <errno.h>
@@ -30,6 +33,7 @@
 #include <time.h>
 #include <unistd.h>
 #ifdef __linux__
+#include <sched.h>
 #include <sys/prctl.h>
 #endif
 
@@ -557,6 +561,12 @@ static int spawn(coord *c, int k)
 
 int bd_runner_cores(void)
 {
+#ifdef __linux__
+    /* taskset, a batch scheduler's cgroup or cpuset: not every online core */
+    cpu_set_t set;
+    if (sched_getaffinity(0, sizeof set, &set) == 0 && CPU_COUNT(&set) > 0)
+        return CPU_COUNT(&set);
+#endif
     long n = sysconf(_SC_NPROCESSORS_ONLN);
     return n > 0 ? (int)n : 1;
 }
