@@ -40,7 +40,8 @@ int bd_sb_figure(bd_strbuf *b, const char *plots_dir, const char *name, const ch
 /* the style sheet of the pages */
 extern const char *const bd_html_css;
 
-/* write b to path through path.tmp and a rename, and free b's text;
+/* write b (a page, or any text file: the study's tables, a case's
+ * case.json) to path through path.tmp and a rename, and free b's text;
  * 0, or -1 with a message in err */
 int bd_html_write(bd_strbuf *b, const char *path, char *err, size_t errlen);
 

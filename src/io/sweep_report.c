@@ -273,34 +273,23 @@ static int plot_sensitivity(sweep *s, char *err, size_t errlen)
 
 static int write_ranking(sweep *s, char *err, size_t errlen)
 {
-    char path[PATH_LEN], part[PATH_LEN + 8];
+    char path[PATH_LEN];
     snprintf(path, sizeof path, "%s/sensitivity.csv", s->dir);
-    snprintf(part, sizeof part, "%s.part", path);
-    FILE *f = fopen(part, "w");
-    if (!f) {
-        snprintf(err, errlen, "%s: %s", part, strerror(errno));
-        return BD_REPORT_EOUTPUT;
-    }
-    fprintf(f, "output,rank,key,spearman_rho\n");
+    bd_strbuf b = {0};
+    bd_sb_puts(&b, "output,rank,key,spearman_rho\n");
     for (int q = 0; q < 3; q++) {
         int order[MAX_KEYS];
         rank_keys(s, q, order);
         for (int i = 0; i < s->nkeys; i++) {
             double r = s->rho[q][order[i]];
-            fprintf(f, "%s,%d,%s,", ranked[q].column, i + 1, s->key[order[i]]);
+            bd_sb_printf(&b, "%s,%d,%s,", ranked[q].column, i + 1, s->key[order[i]]);
             if (isnan(r))
-                fprintf(f, "\n");
+                bd_sb_puts(&b, "\n");
             else
-                fprintf(f, "%.4f\n", r);
+                bd_sb_printf(&b, "%.4f\n", r);
         }
     }
-    int bad = fclose(f) != 0 || rename(part, path) != 0;
-    if (bad) {
-        remove(part);
-        snprintf(err, errlen, "%s: %s", path, strerror(errno));
-        return BD_REPORT_EOUTPUT;
-    }
-    return 0;
+    return bd_html_write(&b, path, err, errlen) ? BD_REPORT_EOUTPUT : 0;
 }
 
 static void html_ranking(const sweep *s, bd_strbuf *b)

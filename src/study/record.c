@@ -16,6 +16,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "io/html.h"
+
 #define PATH_LEN 2048
 
 typedef struct field {
@@ -101,7 +103,7 @@ int bd_study_record_write(const bd_study *s, const bd_study_case *c, const bd_jo
 {
     if (r->status != BD_RUN_OK && r->status != BD_RUN_FAILED)
         return 0;   /* interrupted or not built: it runs again */
-    char def[2048], path[PATH_LEN], part[PATH_LEN + 8];
+    char def[2048], path[PATH_LEN];
     definition(s, c, def, sizeof def);
     cJSON *o = cJSON_CreateObject();
     cJSON_AddStringToObject(o, "case", c->name);
@@ -127,18 +129,13 @@ int bd_study_record_write(const bd_study *s, const bd_study_case *c, const bd_jo
     cJSON_Delete(o);
     if (!text)
         return -1;
-    path_of(s, c, path, sizeof path);
-    snprintf(part, sizeof part, "%s.part", path);
-    FILE *f = fopen(part, "w");
-    int bad = !f || fputs(text, f) < 0 || fputc('\n', f) < 0;
-    if (f && fclose(f) != 0)
-        bad = 1;
-    if (!bad && rename(part, path) != 0)
-        bad = 1;
-    if (bad)
-        remove(part);
+    bd_strbuf b = {0};
+    bd_sb_puts(&b, text);
+    bd_sb_puts(&b, "\n");
     free(text);
-    return bad ? -1 : 0;
+    char err[PATH_LEN + 64];
+    path_of(s, c, path, sizeof path);
+    return bd_html_write(&b, path, err, sizeof err) ? -1 : 0;
 }
 
 int bd_study_record_read(const bd_study *s, bd_study_case *c)

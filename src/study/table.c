@@ -11,7 +11,6 @@
 #include "study/study_case.h"
 
 #include <cjson/cJSON.h>
-#include <errno.h>
 #include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
@@ -167,7 +166,7 @@ static int is_int_column(const char *name)
     return strcmp(name, "slipped") == 0;
 }
 
-static char *csv_text(const bd_study *s)
+static void csv_text(const bd_study *s, bd_strbuf *out)
 {
     bd_strbuf b = {0};
     int nc = column_count(s);
@@ -195,11 +194,7 @@ static char *csv_text(const bd_study *s)
         }
         bd_sb_puts(&b, "\n");
     }
-    if (b.oom) {
-        free(b.p);
-        return NULL;
-    }
-    return b.p;
+    *out = b;
 }
 
 static char *json_text(const bd_study *s)
@@ -275,49 +270,27 @@ static char *json_text(const bd_study *s)
     return text;
 }
 
-/* text to path through path.part and a rename */
-static int write_whole(const char *path, const char *text, char *err, size_t errlen)
-{
-    char part[PATH_LEN + 8];
-    snprintf(part, sizeof part, "%s.part", path);
-    FILE *f = fopen(part, "w");
-    int bad = !f || fputs(text, f) < 0;
-    if (f && fclose(f) != 0)
-        bad = 1;
-    if (!bad && rename(part, path) != 0)
-        bad = 1;
-    if (bad) {
-        snprintf(err, errlen, "cannot write '%s': %s", path, strerror(errno));
-        remove(part);
-    }
-    return bad;
-}
-
 int bd_study_write_tables(const bd_study *s, char *err, size_t errlen)
 {
     char path[PATH_LEN];
-    char *csv = csv_text(s), *json = json_text(s);
-    int bad = !csv || !json;
-    if (bad)
-        snprintf(err, errlen, "out of memory writing the study tables");
-    if (!bad) {
-        snprintf(path, sizeof path, "%s/study.csv", s->opt->out_dir);
-        bad = write_whole(path, csv, err, errlen);
+    bd_strbuf csv = {0}, json = {0};
+    csv_text(s, &csv);
+    char *text = json_text(s);
+    if (text) {
+        bd_sb_puts(&json, text);
+        bd_sb_puts(&json, "\n");
+    } else {
+        json.oom = 1;
     }
-    if (!bad) {
-        snprintf(path, sizeof path, "%s/study.json", s->opt->out_dir);
-        size_t len = strlen(json);
-        char *withnl = realloc(json, len + 2);
-        if (withnl) {
-            json = withnl;
-            json[len] = '\n';
-            json[len + 1] = '\0';
-        }
-        bad = write_whole(path, json, err, errlen);
+    free(text);
+    /* each whole through a temporary name and a rename */
+    snprintf(path, sizeof path, "%s/study.csv", s->opt->out_dir);
+    if (bd_html_write(&csv, path, err, errlen)) {
+        free(json.p);
+        return 1;
     }
-    free(csv);
-    free(json);
-    return bad;
+    snprintf(path, sizeof path, "%s/study.json", s->opt->out_dir);
+    return bd_html_write(&json, path, err, errlen) ? 1 : 0;
 }
 
 /* ---- the rows on the terminal ---- */
