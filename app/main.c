@@ -72,7 +72,12 @@ static int usage(FILE *f)
             "       beltdyn run MODEL.yaml [-o DIR] [--quiet] [--hdf5]\n"
             "       beltdyn report DIR\n"
             "       beltdyn study MODEL.yaml [-o DIR] [--curves LIST] [--times LIST]\n"
-            "                     [--delays LIST] [--after S] [--quiet]\n"
+            "                     [--delays LIST] [--after S] [-j N] [--resume] [--force]\n"
+            "                     [--quiet]\n"
+            "       beltdyn study MODEL.yaml --vary KEY=LO:HI:N [--vary ...] [options]\n"
+            "       beltdyn study MODEL.yaml --sample N --range KEY=LO:HI [--range ...]\n"
+            "                     [--seed S] [options]\n"
+            "                     [--best [max:]COLUMN [--where COLUMN=VALUE ...]]\n"
             "\n"
             "  check   read and validate a model; print what was derived\n"
             "  static  design-standard tensions (DIN 22101, ISO 5048, CEMA)\n"
@@ -80,15 +85,26 @@ static int usage(FILE *f)
             "          tension.csv and envelope.csv into DIR (default ./out);\n"
             "          --hdf5 also writes the tension field to DIR/tension.h5\n"
             "  report  plots and report.html from a finished run's DIR, or the\n"
-            "          start-curve comparison of a study's DIR\n"
-            "  study   start study (docs/starting.md): runs the model once per start\n"
-            "          curve x start time x pre-start delay, overriding every speed\n"
-            "          drive's start; each case in DIR/<case>/ (default ./study),\n"
-            "          the table in DIR/study.csv and study.json and on stdout.\n"
+            "          comparison of a study's DIR (start curves, or a sweep's\n"
+            "          outputs against its keys and their sensitivity ranking)\n"
+            "  study   runs the model once per case, each case in DIR/<case>/ (default\n"
+            "          ./study), the table in DIR/study.csv and study.json and on\n"
+            "          stdout (docs/studies.md, docs/starting.md). Start study: every\n"
+            "          speed drive's start over\n"
             "          --curves linear,harrison,nordell,s-curve (default all four)\n"
             "          --times 10,30 (s)  --delays 0,3 (s; creep speed from the model)\n"
             "          --after S: run each case to delay + time + S seconds\n"
-            "          (default: the model's simulation.duration)\n");
+            "          (default: the model's simulation.duration).\n"
+            "          Sweep: --vary KEY=LO:HI:N, N values from LO to HI (repeatable: every\n"
+            "          combination), or --sample N --range KEY=LO:HI (repeatable) --seed S,\n"
+            "          N cases of a Latin hypercube; KEY a path into the model file, e.g.\n"
+            "          pulleys.takeup.takeup.mass or belt.axial_stiffness.\n"
+            "          -j N: N worker processes (default: one per core); under mpirun one\n"
+            "          per rank. --resume: keep the cases already complete in DIR.\n"
+            "          --force: write into a non-empty DIR that holds no study.\n"
+            "          --best COLUMN: the case with the lowest COLUMN (max:COLUMN the\n"
+            "          highest) among those that meet every --where COLUMN=VALUE\n"
+            "          (also !=, <, <=, >, >=)\n");
     return 2;
 }
 
@@ -259,24 +275,51 @@ static int parse_curves(const char *text, bd_study_options *o)
     return o->ncurves == 0;
 }
 
+/* the study's one progress line (cli.md: on a terminal only) */
+static void show_study_progress(const bd_study_progress *p, void *ctx)
+{
+    (void)ctx;
+    if (p->clear || p->finished) {
+        if (progress_open)
+            fputs("\r\033[K", stderr);
+        progress_open = 0;
+        return;
+    }
+    char rem[32] = "?";
+    if (p->remaining_s >= 0.0)
+        snprintf(rem, sizeof rem, "%.0f s", p->remaining_s);
+    fprintf(stderr, "\r  study: %d/%d cases done", p->done, p->to_run);
+    if (p->failed > 0)
+        fprintf(stderr, " (%d not completed)", p->failed);
+    fprintf(stderr, ", %d running on %d %s, %5.1f%%, wall %.0f s, remaining %s\033[K",
+            p->running, p->workers, p->workers == 1 ? "process" : "processes",
+            100.0 * p->fraction, p->wall_s, rem);
+    fflush(stderr);
+    progress_open = 1;
+}
+
 static int cmd_study(int argc, char **argv)
 {
     bd_study_options o;
     bd_study_options_default(&o);
     o.out_dir = "study";
-    int quiet = 0;
+    int quiet = 0, start_options = 0;
+    char err[1024] = "";
     for (int i = 0; i < argc; i++) {
         const char *a = argv[i];
         int more = i + 1 < argc;
         if (strcmp(a, "-o") == 0 && more)
             o.out_dir = argv[++i];
         else if (strcmp(a, "--curves") == 0 && more) {
+            start_options = 1;
             if (parse_curves(argv[++i], &o))
                 return 2;
         } else if (strcmp(a, "--times") == 0 && more) {
+            start_options = 1;
             if (parse_list(a, argv[++i], o.times, &o.ntimes))
                 return 2;
         } else if (strcmp(a, "--delays") == 0 && more) {
+            start_options = 1;
             if (parse_list(a, argv[++i], o.delays, &o.ndelays))
                 return 2;
         } else if (strcmp(a, "--after") == 0 && more) {
@@ -285,6 +328,69 @@ static int cmd_study(int argc, char **argv)
                 fprintf(stderr, "beltdyn: --after: expected one number of seconds > 0\n");
                 return 2;
             }
+        } else if ((strcmp(a, "-j") == 0 || strcmp(a, "--jobs") == 0) && more) {
+            char *end;
+            long n = strtol(argv[++i], &end, 10);
+            if (*end != '\0' || n < 1 || n > 4096) {
+                fprintf(stderr, "beltdyn: %s: expected a number of worker processes >= 1, "
+                        "got '%s'\n", a, argv[i]);
+                return 2;
+            }
+            o.jobs = (int)n;
+        } else if (strncmp(a, "-j", 2) == 0 && a[2] >= '0' && a[2] <= '9') {
+            char *end;
+            long n = strtol(a + 2, &end, 10);
+            if (*end != '\0' || n < 1 || n > 4096) {
+                fprintf(stderr, "beltdyn: -j: expected a number of worker processes >= 1\n");
+                return 2;
+            }
+            o.jobs = (int)n;
+        } else if (strcmp(a, "--resume") == 0)
+            o.resume = 1;
+        else if (strcmp(a, "--force") == 0)
+            o.force = 1;
+        else if ((strcmp(a, "--vary") == 0 || strcmp(a, "--range") == 0) && more) {
+            int vary = a[2] == 'v';
+            int *n = vary ? &o.nvary : &o.nrange;
+            if (*n >= BD_STUDY_MAX_KEYS) {
+                fprintf(stderr, "beltdyn: %s: at most %d keys\n", a, BD_STUDY_MAX_KEYS);
+                return 2;
+            }
+            bd_study_range *r = vary ? &o.vary[*n] : &o.range[*n];
+            if (bd_study_parse_range(argv[++i], vary, r, err, sizeof err)) {
+                fprintf(stderr, "beltdyn: %s %s\n", a, err);
+                return 2;
+            }
+            (*n)++;
+        } else if (strcmp(a, "--sample") == 0 && more) {
+            char *end;
+            long n = strtol(argv[++i], &end, 10);
+            if (*end != '\0' || n < 1 || n > 100000) {
+                fprintf(stderr, "beltdyn: --sample: expected a number of cases from 1 to "
+                        "100000, got '%s'\n", argv[i]);
+                return 2;
+            }
+            o.samples = (int)n;
+        } else if (strcmp(a, "--seed") == 0 && more) {
+            char *end;
+            o.seed = strtoull(argv[++i], &end, 10);
+            if (*end != '\0' || argv[i][0] == '-' || !argv[i][0]) {
+                fprintf(stderr, "beltdyn: --seed: expected a whole number >= 0, got '%s'\n",
+                        argv[i]);
+                return 2;
+            }
+        } else if (strcmp(a, "--best") == 0 && more)
+            o.best = argv[++i];
+        else if (strcmp(a, "--where") == 0 && more) {
+            if (o.nwhere >= BD_STUDY_MAX_WHERE) {
+                fprintf(stderr, "beltdyn: --where: at most %d\n", BD_STUDY_MAX_WHERE);
+                return 2;
+            }
+            if (bd_study_parse_where(argv[++i], &o.where[o.nwhere], err, sizeof err)) {
+                fprintf(stderr, "beltdyn: --where %s\n", err);
+                return 2;
+            }
+            o.nwhere++;
         } else if (strcmp(a, "--quiet") == 0 || strcmp(a, "-q") == 0)
             quiet = 1;
         else if (!o.model_path && a[0] != '-')
@@ -294,14 +400,22 @@ static int cmd_study(int argc, char **argv)
     }
     if (!o.model_path)
         return usage(stderr);
+    if (start_options && (o.nvary > 0 || o.samples > 0 || o.nrange > 0)) {
+        fprintf(stderr, "beltdyn: --curves, --times and --delays make a start study; a sweep "
+                "varies the start through its keys, e.g. --vary "
+                "pulleys.NAME.drive.start.time=5:20:4\n");
+        return 2;
+    }
+    /* Ctrl-C, or a batch scheduler's SIGTERM at its time limit: the
+     * running cases stop, the table keeps what is complete */
     struct sigaction sa;
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = on_sigint;
     sigaction(SIGINT, &sa, NULL);
-    o.progress = !quiet && isatty(STDERR_FILENO) ? show_progress : NULL;
+    sigaction(SIGTERM, &sa, NULL);
+    o.progress = !quiet && isatty(STDERR_FILENO) ? show_study_progress : NULL;
     o.message = show_message;
     o.interrupted = &interrupted;
-    char err[1024] = "";
     int rc = bd_study_run(&o, stdout, err, sizeof err);
     if (rc != BD_RUN_OK && err[0])
         fprintf(stderr, "beltdyn: %s%s\n", rc == BD_RUN_FAILED ? "error: " : "", err);

@@ -106,6 +106,36 @@ int bd_sb_embed_png(bd_strbuf *b, const char *path)
     return rc;
 }
 
+void bd_sb_page_start(bd_strbuf *b, const char *title, const char *what)
+{
+    bd_sb_puts(b, "<!DOCTYPE html>\n<html lang=en><head><meta charset=utf-8>\n<title>");
+    bd_sb_html(b, title);
+    bd_sb_printf(b, " — beltdyn %s</title>\n<style>", what);
+    bd_sb_puts(b, bd_html_css);
+    bd_sb_puts(b, "</style></head><body><main>\n<h1>");
+    bd_sb_html(b, title);
+    bd_sb_puts(b, "</h1>\n");
+}
+
+int bd_sb_figure(bd_strbuf *b, const char *plots_dir, const char *name, const char *caption,
+                 char *err, size_t errlen)
+{
+    char png[4096];
+    if (snprintf(png, sizeof png, "%s/%s.png", plots_dir, name) >= (int)sizeof png) {
+        snprintf(err, errlen, "%s: path too long", plots_dir);
+        return -1;
+    }
+    bd_sb_printf(b, "<figure id=\"%s\"><img alt=\"%s\" src=\"", name, name);
+    if (bd_sb_embed_png(b, png)) {
+        snprintf(err, errlen, "%s: cannot read back", png);
+        return -1;
+    }
+    bd_sb_puts(b, "\"><figcaption>");
+    bd_sb_html(b, caption);
+    bd_sb_printf(b, " (also plots/%s.svg)</figcaption></figure>\n", name);
+    return 0;
+}
+
 const char *const bd_html_css =
     "body{font-family:'DejaVu Sans',Arial,sans-serif;margin:0;background:#f4f5f7;color:#1a1a1a}"
     "main{max-width:1240px;margin:0 auto;padding:16px 24px 48px}"

@@ -29,10 +29,19 @@ void bd_sb_base64(bd_strbuf *b, const unsigned char *d, size_t n);
 /* "data:image/png;base64,..." of the PNG file at path; 0, or -1 */
 int bd_sb_embed_png(bd_strbuf *b, const char *path);
 
+/* a page's start, up to its <h1>: "TITLE — beltdyn WHAT" in the tab */
+void bd_sb_page_start(bd_strbuf *b, const char *title, const char *what);
+
+/* <figure> of plots_dir/NAME.png embedded, with the caption and a word of
+ * plots/NAME.svg; 0, or -1 with a message in err */
+int bd_sb_figure(bd_strbuf *b, const char *plots_dir, const char *name, const char *caption,
+                 char *err, size_t errlen);
+
 /* the style sheet of the pages */
 extern const char *const bd_html_css;
 
-/* write b to path through path.tmp and a rename, and free b's text;
+/* write b (a page, or any text file: the study's tables, a case's
+ * case.json) to path through path.tmp and a rename, and free b's text;
  * 0, or -1 with a message in err */
 int bd_html_write(bd_strbuf *b, const char *path, char *err, size_t errlen);
 

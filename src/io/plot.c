@@ -253,7 +253,7 @@ static double text_width(cairo_t *cr, const char *s)
 typedef struct legend_item {
     const char *label;
     bd_rgb color;
-    int kind;     /* 0 line, 1 dashed line, 2 filled box */
+    int kind;     /* 0 line, 1 dashed line, 2 filled box, 3 dot, 4 solid box (a bar) */
     double width;
 } legend_item;
 
@@ -265,7 +265,9 @@ static int legend_items(const bd_plot_axes *a, legend_item *items, int max)
     for (int i = 0; i < a->nseries && n < max; i++)
         if (a->series[i].label)
             items[n++] = (legend_item){a->series[i].label, a->series[i].color,
-                                       a->series[i].dashed, a->series[i].width};
+                                       a->series[i].points ? 3
+                                       : a->series[i].width > 8.0 ? 4 : a->series[i].dashed,
+                                       a->series[i].width};
     for (int i = 0; i < a->nhlines && n < max; i++)
         if (a->hlines[i].label)
             items[n++] = (legend_item){a->hlines[i].label, a->hlines[i].color,
@@ -410,6 +412,15 @@ static void draw_line_series(cairo_t *cr, const xform *t, const bd_plot_series *
 {
     if (s->n == 0) return;
     set_rgb(cr, s->color);
+    if (s->points) {
+        for (size_t k = 0; k < s->n; k++) {
+            if (!isfinite(s->x[k]) || !isfinite(s->y[k])) continue;
+            cairo_new_path(cr);
+            cairo_arc(cr, px(t, s->x[k]), py(t, s->y[k]), 3.5, 0.0, 2.0 * BD_PI);
+            cairo_fill(cr);
+        }
+        return;
+    }
     cairo_set_line_width(cr, s->width > 0.0 ? s->width : 2.0);
     cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
     if (s->dashed) {
@@ -627,6 +638,15 @@ static void draw_legend(cairo_t *cr, const layout *L, int p, const bd_plot_axes 
         if (items[i].kind == 2) {
             cairo_set_source_rgba(cr, items[i].color.r, items[i].color.g, items[i].color.b, 0.35);
             cairo_rectangle(cr, x, y - 6.0, LEGEND_SAMPLE, 12.0);
+            cairo_fill(cr);
+        } else if (items[i].kind == 4) {
+            set_rgb(cr, items[i].color);
+            cairo_rectangle(cr, x + 4.0, y - 6.0, LEGEND_SAMPLE - 8.0, 12.0);
+            cairo_fill(cr);
+        } else if (items[i].kind == 3) {
+            set_rgb(cr, items[i].color);
+            cairo_new_path(cr);
+            cairo_arc(cr, x + 0.5 * LEGEND_SAMPLE, y, 3.5, 0.0, 2.0 * BD_PI);
             cairo_fill(cr);
         } else {
             set_rgb(cr, items[i].color);

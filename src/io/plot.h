@@ -1,7 +1,8 @@
 /* a small cairo plotting layer for the report: figures of one to three
  * stacked panels, each with labelled axes (quantity [unit]), ticks at round
  * numbers, line series with a legend strip above the panel, horizontal
- * reference lines, a filled band, point markers with a label, and a colour
+ * reference lines, scatter series of dots, a filled band, point markers
+ * with a label, and a colour
  * map (a raster image with a colour bar). The same drawing goes to a PNG
  * (pixels) and an SVG (points, the colour map embedded as one image). */
 #ifndef BD_IO_PLOT_H
@@ -21,6 +22,7 @@ typedef struct bd_plot_series {
     bd_rgb color;
     double width;       /* line width, px; 0 = 2 */
     int dashed;         /* 1 = dashed */
+    int points;         /* 1 = a dot at each point and no line (a scatter) */
 } bd_plot_series;
 
 /* a horizontal line across the panel at ordinate y */

@@ -1,4 +1,5 @@
-/* beltdyn report on a start-study directory (one made by `beltdyn study`):
+/* beltdyn report on a start-study directory (one made by `beltdyn study`;
+ * a sweep's goes to sweep_report.c):
  * the comparison of the start curves (issue 6) as plots in DIR/plots and
  * one self-contained DIR/report.html with the study table.
  *
@@ -21,6 +22,7 @@
 #include "io/csv_read.h"
 #include "io/html.h"
 #include "io/plot.h"
+#include "io/sweep_report.h"
 
 #define PATH_LEN 4096
 #define MAX_CASES 64
@@ -305,35 +307,18 @@ static int write_html(study *s, const char *const *plots, const char *const *cap
                       int nplots, char *err, size_t errlen)
 {
     bd_strbuf b = {0};
-    bd_sb_puts(&b, "<!DOCTYPE html>\n<html lang=en><head><meta charset=utf-8>\n<title>");
-    bd_sb_html(&b, s->model);
-    bd_sb_puts(&b, " — beltdyn start study</title>\n<style>");
-    bd_sb_puts(&b, bd_html_css);
-    bd_sb_puts(&b, "</style></head><body><main>\n<h1>");
-    bd_sb_html(&b, s->model);
-    bd_sb_printf(&b, "</h1>\n<p class=sub>beltdyn start study · %d cases · each case's own run "
+    bd_sb_page_start(&b, s->model, "start study");
+    bd_sb_printf(&b, "<p class=sub>beltdyn start study · %d cases · each case's own run "
                      "and report in its directory</p>\n<h2>Cases</h2>\n", s->n);
     html_table(&b, cJSON_GetObjectItemCaseSensitive(s->json, "cases"));
     bd_sb_puts(&b, "<p class=sub>Slip: ");
     bd_sb_html(&b, jstr(s->json, "slip_definition"));
     bd_sb_puts(&b, ".</p>\n<h2 id=plots>Start curves compared</h2>\n");
-    for (int i = 0; i < nplots; i++) {
-        char png[PATH_LEN];
-        if (snprintf(png, sizeof png, "%s/%s.png", s->plots, plots[i]) >= (int)sizeof png) {
+    for (int i = 0; i < nplots; i++)
+        if (bd_sb_figure(&b, s->plots, plots[i], captions[i], err, errlen)) {
             free(b.p);
-            snprintf(err, errlen, "%s: path too long", s->plots);
             return BD_REPORT_EOUTPUT;
         }
-        bd_sb_printf(&b, "<figure id=\"%s\"><img alt=\"%s\" src=\"", plots[i], plots[i]);
-        if (bd_sb_embed_png(&b, png)) {
-            free(b.p);
-            snprintf(err, errlen, "%s: cannot read back", png);
-            return BD_REPORT_EOUTPUT;
-        }
-        bd_sb_puts(&b, "\"><figcaption>");
-        bd_sb_html(&b, captions[i]);
-        bd_sb_printf(&b, " (also plots/%s.svg)</figcaption></figure>\n", plots[i]);
-    }
     bd_sb_puts(&b, "</main></body></html>\n");
     char path[PATH_LEN];
     snprintf(path, sizeof path, "%s/report.html", s->dir);
@@ -351,6 +336,10 @@ int bd_study_report_write(const char *dir, char *err, size_t errlen)
     static char title[2][400], subtitle[400];
     int rc = read_study(s, err, errlen);
     if (rc) goto done;
+    if (cJSON_GetObjectItemCaseSensitive(s->json, "sweep")) {
+        rc = bd_sweep_report_write(dir, s->json, err, errlen);
+        goto done;
+    }
     snprintf(s->plots, sizeof s->plots, "%s/plots", dir);
     if (mkdir(s->plots, 0777) != 0 && errno != EEXIST) {
         snprintf(err, errlen, "%s: %s", s->plots, strerror(errno));
