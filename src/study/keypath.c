@@ -158,7 +158,9 @@ static int add_to(const char *text, yaml_document_t *d, yaml_node_t *m, char seg
     char kv[300], after[64];
     if (added_text(seg, n, kv, sizeof kv, after, sizeof after))
         return -1;
-    snprintf(site->adds, sizeof site->adds, "%s", seg[0]);
+    /* a key name too long to add is refused, not cut */
+    if (snprintf(site->adds, sizeof site->adds, "%s", seg[0]) >= (int)sizeof site->adds)
+        return -1;
     snprintf(site->after, sizeof site->after, "%s", after);
     site->len = 0;
     site->value = NAN;
@@ -240,8 +242,11 @@ static int find(const char *text, yaml_document_t *d, const char *key, char seg[
                      key, where);
             return -1;
         }
+        /* the path so far, for the messages; a long one is cut there */
         size_t o = strlen(where);
-        snprintf(where + o, sizeof where - o, "%s%s", o ? "." : "", seg[i]);
+        if (snprintf(where + o, sizeof where - o, "%s%s", o ? "." : "", seg[i])
+            >= (int)(sizeof where - o))
+            where[sizeof where - 1] = '\0';
     }
     double x = 0.0;
     if (scalar_number(n, &x) || (scalar_is(n, "auto")
