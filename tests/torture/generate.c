@@ -160,23 +160,29 @@ size_t bd_gen_conveyor(unsigned long seed, const bd_gen_options *opt, char *buf,
     if (elem > 0.0)
         put(&o, "  element_length: %.6g\n", elem);
 
-    /* drives */
-    char drive_yaml[1024];
-    out d = {drive_yaml, sizeof drive_yaml, 0};
-    if (motor) {
-        double w_sync = 1500.0 * 2.0 * PI / 60.0;
-        double gear = w_sync * Rh / (v * 1.01);
-        double rpm_rated = 1500.0 * (1.0 - 0.02);
-        put(&d, "    drive:\n      control: motor\n      inertia: %.6g\n      motor: "
-                "{rated_power: %.6g, rated_speed_rpm: %.6g, synchronous_speed_rpm: 1500, "
-                "breakdown_torque_ratio: 2.2, gear_ratio: %.6g, start_time: 0.5}\n",
-            drive_inertia, rated_T / gear * rpm_rated * 2.0 * PI / 60.0, rpm_rated, gear);
-    } else {
-        put(&d, "    drive:\n      control: speed\n      speed: %.6g\n      inertia: %.6g\n"
-                "      start: {curve: %s, time: %.6g, delay: %.6g}\n",
-            v, drive_inertia, curve, ramp, delay);
+    /* drives: a motor's gear ratio suits its own pulley, so that dual
+     * drives on pulleys of different radii run the belt at one speed */
+    char drive_head[1024], drive_tail[1024];
+    out d_head = {drive_head, sizeof drive_head, 0}, d_tail = {drive_tail, sizeof drive_tail, 0};
+    for (int which = 0; which < 2; which++) {
+        out *d = which == 0 ? &d_head : &d_tail;
+        double R = which == 0 ? Rh : Rt;
+        if (motor) {
+            double w_sync = 1500.0 * 2.0 * PI / 60.0;
+            double gear = w_sync * R / (v * 1.01);
+            double rpm_rated = 1500.0 * (1.0 - 0.02);
+            put(d, "    drive:\n      control: motor\n      inertia: %.6g\n      motor: "
+                   "{rated_power: %.6g, rated_speed_rpm: %.6g, synchronous_speed_rpm: 1500, "
+                   "breakdown_torque_ratio: 2.2, gear_ratio: %.6g, start_time: 0.5}\n",
+                drive_inertia, rated_T * (R / Rh) / gear * rpm_rated * 2.0 * PI / 60.0,
+                rpm_rated, gear);
+        } else {
+            put(d, "    drive:\n      control: speed\n      speed: %.6g\n      inertia: %.6g\n"
+                   "      start: {curve: %s, time: %.6g, delay: %.6g}\n",
+                v, drive_inertia, curve, ramp, delay);
+        }
+        put(d, "    friction: {static: %.6g, dynamic: %.6g}\n", mu_s, mu_d);
     }
-    put(&d, "    friction: {static: %.6g, dynamic: %.6g}\n", mu_s, mu_d);
 
     double mh = uniform(&r, 200.0, 800.0) * (Rh / 0.5) * (Rh / 0.5);
     double mt = uniform(&r, 200.0, 800.0) * (Rt / 0.5) * (Rt / 0.5);
@@ -190,7 +196,7 @@ size_t bd_gen_conveyor(unsigned long seed, const bd_gen_options *opt, char *buf,
     put(&o, "pulleys:\n");
     put_pulley(&o, "head", L, H, Rh, "cw", mh, 0.0);
     if (drives != DRIVE_TAIL)
-        put(&o, "%s", drive_yaml);
+        put(&o, "%s", drive_head);
     if (takeup != TAIL_TAKEUP) {
         double xc = takeup == LOOP_HEAD ? L - Rh - 2.0 - Rb - Rk : Rt + 3.0 + Rb + Rk;
         double x1 = xc + Rk + Rb, x2 = xc - Rk - Rb;
@@ -209,7 +215,7 @@ size_t bd_gen_conveyor(unsigned long seed, const bd_gen_options *opt, char *buf,
     }
     put_pulley(&o, "tail", 0.0, 0.0, Rt, "cw", mt, drives == DRIVE_HEAD ? bearing : 0.0);
     if (drives != DRIVE_HEAD)
-        put(&o, "%s", drive_yaml);
+        put(&o, "%s", drive_tail);
     if (takeup == TAIL_TAKEUP) {
         /* horizontal along the conveyor: the pull leads away from the head */
         if (constant_force)

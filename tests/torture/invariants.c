@@ -136,6 +136,7 @@ void bd_torture_run(const char *yaml, const char *label, const bd_torture_option
 {
     memset(res, 0, sizeof *res);
     double wall0 = now();
+    double *fs = NULL, *vs = NULL;
     bd_model_def def;
     bd_diag diag;
     bd_diag_init(&diag);
@@ -178,11 +179,57 @@ void bd_torture_run(const char *yaml, const char *label, const bd_torture_option
     bd_sim_energy(sim, &e0);
     double ref = e0.kinetic_J + e0.potential_J + e0.dissipated_J - e0.input_J;
     double scale_e0 = fabs(ref), d_prev = e0.dissipated_J, k_max = 0.0;
-    double f_sum = 0.0, v_sum = 0.0;
-    long f_count = 0, v_count = 0;
-    while (bd_sim_time(sim) < duration - 0.5 * dt) {
+    /* the drive force and belt speed of every step from the window's start
+     * on; a check every window: the means over the later half of what was
+     * sampled (at least one window), so that a decaying transient leaves
+     * the mean while a lasting, undamped swing is averaged over ever more
+     * periods. Running is steady when three successive checks agree. */
+    long cap = (long)ceil((opt->window + opt->max_extension) / dt) + 16, ns = 0;
+    fs = malloc((size_t)cap * sizeof *fs);
+    vs = malloc((size_t)cap * sizeof *vs);
+    double f_prev[2] = {NAN, NAN}, v_prev[2] = {NAN, NAN}, v_probe = 0.0;
+    double window_end = duration, end_limit = duration + opt->max_extension;
+    if (!fs || !vs) {
+        snprintf(err, sizeof err, "out of memory for the samples");
+        goto failed;
+    }
+    for (;;) {
         double t = bd_sim_time(sim);
-        if (t >= window_start) {
+        if (t >= window_end - 0.5 * dt) {
+            long from = ns / 2;
+            long min_len = (long)(opt->window / dt);
+            if (ns - from < min_len)
+                from = ns > min_len ? ns - min_len : 0;
+            double f = 0.0, v = 0.0;
+            for (long i = from; i < ns; i++) {
+                f += fs[i];
+                v += vs[i];
+            }
+            f /= (double)(ns - from > 0 ? ns - from : 1);
+            v /= (double)(ns - from > 0 ? ns - from : 1);
+            res->force = f;
+            res->speed = v;
+            res->averaged_s = (double)(ns - from) * dt;
+            double law_scale = 0.0;
+            bd_torture_law_force(sim, &def, v, &law_scale);
+            /* three checks in a row within the bounds: two could meet by
+             * chance on a slow swing */
+            double ftol = opt->steady_force * fmax(law_scale, 1.0);
+            double vtol = opt->steady_speed * fmax(fabs(v), 0.01);
+            int steady = 1;
+            for (int k = 0; k < 2; k++)
+                steady = steady && fabs(f - f_prev[k]) <= ftol && fabs(v - v_prev[k]) <= vtol;
+            if (steady || window_end + opt->window > end_limit + 0.5 * dt || ns + (long)(opt->window / dt) + 2 > cap) {
+                res->steady = steady;
+                break;
+            }
+            f_prev[1] = f_prev[0];
+            f_prev[0] = f;
+            v_prev[1] = v_prev[0];
+            v_prev[0] = v;
+            window_end += opt->window;
+        }
+        if (t >= window_start - 0.5 * dt) {
             /* every step: the drive torque carries the ripple of the mesh */
             if (bd_sim_step(sim, 1, err, sizeof err))
                 goto failed;
@@ -193,16 +240,17 @@ void bd_torture_run(const char *yaml, const char *label, const bd_torture_option
                 double b = def.pulleys[drives[k]].bearing_damping;
                 F += (ps.drive_torque_Nm - b * ps.omega_rad_s) / ps.radius_m;
             }
-            f_sum += F;
-            f_count++;
             /* the belt's speed through a fixed point (the first probe) */
             bd_probe_state pr;
-            if (bd_sim_probe(sim, 0, &pr) == 0) {
-                v_sum += pr.speed_mps;
-                v_count++;
-            }
+            if (bd_sim_probe(sim, 0, &pr) == 0)
+                v_probe = pr.speed_mps;
+            fs[ns] = F;
+            vs[ns] = v_probe;
+            ns++;
         } else {
-            long steps = (long)ceil(chunk / dt);
+            long steps = (long)ceil(fmin(chunk, window_start - t) / dt);
+            if (steps < 1)
+                steps = 1;
             if (bd_sim_step(sim, steps, err, sizeof err))
                 goto failed;
         }
@@ -225,14 +273,15 @@ void bd_torture_run(const char *yaml, const char *label, const bd_torture_option
         d_prev = e.dissipated_J;
     }
     res->completed = 1;
-    res->force = f_count ? f_sum / (double)f_count : 0.0;
-    res->speed = v_count ? v_sum / (double)v_count : 0.0;
+    res->ran_s = bd_sim_time(sim);
     res->speed_target = opt->target_speed > 0.0 ? opt->target_speed : motor_speed(sim, &def);
     res->force_law = bd_torture_law_force(sim, &def, res->speed, &res->force_scale);
     goto done;
 failed:
     snprintf(res->message, sizeof res->message, "%s", err);
 done:
+    free(fs);
+    free(vs);
     res->wall_s = now() - wall0;
     bd_sim_free(sim);
     bd_model_def_free(&def);

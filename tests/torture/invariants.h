@@ -19,14 +19,22 @@ typedef struct bd_torture_result {
     double wall_s;
     int nodes;
     int not_at_rest;           /* stabilization stopped short of rest */
+    int steady;                /* the last three checks agreed */
+    double ran_s;              /* s simulated, the extension included */
+    double averaged_s;         /* s over which force and speed were averaged */
 } bd_torture_result;
 
 typedef struct bd_torture_options {
     double window;             /* s of steady running averaged at the end */
     double target_speed;       /* m/s of a speed drive; 0: from the motor curve */
+    /* running is steady when the means of three successive checks differ
+     * by no more than these (force: of the law's terms summed in
+     * magnitude; speed: relative); until then the run is extended window
+     * by window, by at most max_extension s past its duration */
+    double steady_force, steady_speed, max_extension;
 } bd_torture_options;
 
-/* run the model text (YAML) to its duration */
+/* run the model text (YAML) to its duration, and on until steady */
 void bd_torture_run(const char *yaml, const char *label, const bd_torture_options *opt,
                     bd_torture_result *res);
 

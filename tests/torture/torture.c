@@ -48,6 +48,7 @@ int main(int argc, char **argv)
 {
     unsigned long first = 1;
     int count = 30, print = 0, force_check = 0;
+    double max_extension = 30.0;
     bd_gen_options gen = {"discrete", 120.0, 6.0};
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--first") && i + 1 < argc)
@@ -60,6 +61,8 @@ int main(int argc, char **argv)
             gen.max_length = atof(argv[++i]);
         else if (!strcmp(argv[i], "--settle") && i + 1 < argc)
             gen.settle = atof(argv[++i]);
+        else if (!strcmp(argv[i], "--max-extension") && i + 1 < argc)
+            max_extension = atof(argv[++i]);
         else if (!strcmp(argv[i], "--force-check"))
             force_check = 1;
         else if (!strcmp(argv[i], "--print") && i + 1 < argc) {
@@ -67,7 +70,8 @@ int main(int argc, char **argv)
             print = 1;
         } else {
             fprintf(stderr, "usage: torture [--first SEED] [--count N] [--formulation F] "
-                            "[--max-length M] [--settle S] [--force-check] [--print SEED]\n");
+                            "[--max-length M] [--settle S] [--max-extension S] [--force-check] "
+                            "[--print SEED]\n");
             return 2;
         }
     }
@@ -91,7 +95,8 @@ int main(int argc, char **argv)
         char label[64];
         snprintf(label, sizeof label, "generated-%lu.yaml", seed);
         /* a motor's swing with the takeup is slow: a longer window */
-        bd_torture_options opt = {info.motor ? 6.0 : 3.0, info.motor ? 0.0 : info.speed};
+        bd_torture_options opt = {info.motor ? 6.0 : 3.0, info.motor ? 0.0 : info.speed,
+                                  0.25 * tol_force, 0.25 * TOL_SPEED, max_extension};
         bd_torture_result r;
         bd_torture_run(yaml, label, &opt, &r);
         wall += r.wall_s;
@@ -107,6 +112,9 @@ int main(int argc, char **argv)
                 worst_force = ferr;
             if (fabs(verr) > fabs(worst_speed))
                 worst_speed = verr;
+            if (!r.steady)
+                snprintf(why + strlen(why), sizeof why - strlen(why),
+                         " not steady after %.0f s (successive means differ);", r.ran_s);
             if (r.balance > TOL_BALANCE)
                 snprintf(why + strlen(why), sizeof why - strlen(why),
                          " energy balance %.3g > %.3g;", r.balance, TOL_BALANCE);
@@ -125,9 +133,9 @@ int main(int argc, char **argv)
         int ok = why[0] == '\0';
         failures += !ok;
         printf("%s seed %lu [%s] %s: %d nodes, %.1f s wall, balance %.2g, force %.0f/%.0f N, "
-               "speed %.3f/%.3f%s%s%s\n",
+               "speed %.3f/%.3f, ran %.0f s%s%s%s\n",
                ok ? "ok  " : "FAIL", seed, gen.formulation, info.summary, r.nodes, r.wall_s,
-               r.balance, r.force, r.force_law, r.speed, r.speed_target, r.not_at_rest ? " (stabilization short of rest)" : "",
+               r.balance, r.force, r.force_law, r.speed, r.speed_target, r.ran_s, r.not_at_rest ? " (stabilization short of rest)" : "",
                ok ? "" : " —", why);
         fflush(stdout);
     }
