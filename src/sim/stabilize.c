@@ -53,6 +53,21 @@ static void zero_velocities(bd_sim *sim)
         sim->idlers[i].omega = 0.0;
 }
 
+/* at rest at the present positions, as the scheme defines rest (step.c,
+ * bd_sim_start_at_rest): the mid-step velocity v(t) = 0, so the half-step
+ * velocities are −a·Δt/2. Setting the half-step velocities to zero instead
+ * leaves v(t) = a·Δt/2 and the leapfrog's conserved energy
+ * ½v(t)² + ½ω²(1 − ω²Δt²/4)x² can grow at a reset: a mode near the
+ * step's limit, reset every few steps in phase with it, was pumped ~15 %
+ * per reset and diverged (an undamped takeup loop held by its drive
+ * pulley, 2 of 500 generated conveyors). At v(t) = 0 every reset takes
+ * ½v(t)² out and nothing else. */
+static int rest_here(bd_sim *sim)
+{
+    zero_velocities(sim);
+    return bd_sim_start_at_rest(sim);
+}
+
 /* the drive pulleys held (1) or let go (0); the clock, drives and feed
  * with them */
 static void hold(bd_sim *sim, int on, int feeding)
@@ -149,8 +164,11 @@ int bd_sim_stabilize(bd_sim *sim, const bd_run_options *opt, char *err, size_t e
         }
         double ke = sim->energy.kinetic;
         if (ke < prev) {
-            /* a peak: take the energy out */
-            zero_velocities(sim);
+            /* a peak: take the energy out, at rest where the belt now is */
+            if (rest_here(sim)) {
+                status = BD_RUN_FAILED;
+                break;
+            }
             resets++;
             peak = prev;
             quiet_peaks = peak < STABILIZE_TOL * scale ? quiet_peaks + 1 : 0;
