@@ -139,7 +139,9 @@ void bd_outputs_row(bd_outputs *o, bd_sim *sim, double t)
         if (def->pulleys[i].has_takeup)
             fprintf(h, ",%.6g", sim->pulleys[i].q);
     const bd_energy *en = &sim->energy;
-    fprintf(h, ",%.9g,%.9g,%.9g,%.9g\n", en->kinetic, en->potential, en->dissipated, en->input);
+    double dissipated, input;
+    bd_energy_at_t(en, &dissipated, &input);
+    fprintf(h, ",%.9g,%.9g,%.9g,%.9g\n", en->kinetic, en->potential, dissipated, input);
 
     /* tension along the belt, and the Eulerian envelope */
     FILE *f = o->tension;

@@ -26,6 +26,9 @@ static void energy_start(bd_sim *sim)
     en->kinetic = 0.0;
     en->dissipated = 0.0;
     en->input = 0.0;
+    en->step_dissipated = 0.0;
+    en->step_input = 0.0;
+    en->step_input_at_t = 0.0;
     en->max_kinetic = 0.0;
     en->balance_error_rel = 0.0;
     en->dissipated_checked = 0.0;

@@ -159,6 +159,15 @@ typedef struct bd_cost {
 
 typedef struct bd_energy {
     double kinetic, potential, dissipated, input;   /* J */
+    /* J, what the last step added to dissipated and input. Its works are
+     * booked with the mid-step velocity v(t) over the whole step, so the
+     * sums run half a step ahead of the kinetic and potential energy at t;
+     * the energy at t takes half of the last step back (bd_energy_at_t) */
+    double step_dissipated, step_input;
+    /* J, input this step that is work up to t already (a takeup's set
+     * force changing: −ΔF·q at the middle of the interval it changed
+     * over), not taken back */
+    double step_input_at_t;
     double initial;        /* E_kin + E_pot at t = 0 */
     double max_kinetic;
     double balance_error_rel; /* largest so far */

@@ -28,7 +28,9 @@ double bd_takeup_advance(bd_sim *sim, bd_takeup *tk, bd_pulley_body *p, double *
     double F = bd_takeup_force(tk, sim->t);
     /* a changing set force changes the potential −F·q: that is work put in,
      * −∫q·dF, with q at the middle of the interval the force changed over */
-    *input += -(F - tk->force_prev) * (p->q - 0.5 * p->qdot * sim->model->dt);
+    double w_set = -(F - tk->force_prev) * (p->q - 0.5 * p->qdot * sim->model->dt);
+    *input += w_set;
+    sim->energy.step_input_at_t += w_set;
     tk->force_prev = F;
     double pull = bd_takeup_pull(sim, tk, p) + p->f_axis;
     double q_old = p->qdot;

@@ -151,8 +151,7 @@ void bd_sim_energy(const bd_sim *sim, bd_energy_state *out)
     const bd_energy *en = &sim->energy;
     out->kinetic_J = en->kinetic;
     out->potential_J = en->potential;
-    out->dissipated_J = en->dissipated;
-    out->input_J = en->input;
+    bd_energy_at_t(en, &out->dissipated_J, &out->input_J);
     out->initial_J = en->initial;
     out->balance_error_rel = en->balance_error_rel;
     out->dissipation_fall_rel = en->dissipation_fall_rel;

