@@ -2,8 +2,10 @@
  * pulley along the return strand, passes a takeup loop (two bends and the
  * takeup pulley hanging below them) near the head or the tail, or none,
  * wraps the tail pulley and comes back on the carry strand, tail to head:
- *   head (cw) [bend1 (ccw), takeup (cw), bend2 (ccw)] tail (cw)
- * The carry strand rises from the tail (0, 0) to the head (L, H). */
+ *   head (cw) [snub (ccw)] [bend1 (ccw), takeup (cw), bend2 (ccw)] tail (cw)
+ * The carry strand rises from the tail (0, 0) to the head (L, H). A snub
+ * (3 in 10) stands just behind the head under the carry strand; the belt
+ * leaving the head rises over it, so the head's wrap is more than 180°. */
 #include "generate.h"
 
 #include <math.h>
@@ -71,6 +73,13 @@ size_t bd_gen_conveyor(unsigned long seed, const bd_gen_options *opt, char *buf,
         buf[0] = '\0';
     int axial = strcmp(opt->formulation, "axial") == 0;
 
+    /* a snub pulley behind the head, from a stream of its own so that the
+     * conveyors of the other seeds stay what they were */
+    rng r_snub = {0xB0BULL + 104729ULL * (unsigned long long)seed};
+    int snub = chance(&r_snub, 0.3);
+    double Rs_draw = uniform(&r_snub, 0.25, 0.45), snub_gap = uniform(&r_snub, 0.1, 0.5);
+    double snub_clearance = uniform(&r_snub, 0.08, 0.25);
+
     /* route */
     double L = uniform(&r, 30.0, opt->max_length);
     double incline = uniform(&r, -8.0, 14.0) * PI / 180.0;
@@ -127,7 +136,11 @@ size_t bd_gen_conveyor(unsigned long seed, const bd_gen_options *opt, char *buf,
     double T0 = (T_slip > T_sag ? T_slip : T_sag) * uniform(&r, 1.1, 1.5);
     double T_max = T0 + F_start + mB * G * fabs(H);
     double EA = T_max / uniform(&r, 0.003, 0.012);
-    double elem_default = 2.0 * fmin(fmin(Rh, Rt), takeup == TAIL_TAKEUP ? 1.0 : fmin(Rb, Rk))
+    /* the snub is no smaller than the others: the default element is the
+     * 30° chord of the smallest pulley, drawn before the snub's turn */
+    double R_min = fmin(fmin(Rh, Rt), takeup == TAIL_TAKEUP ? 1.0 : fmin(Rb, Rk));
+    double Rs = fmax(Rs_draw, R_min);
+    double elem_default = 2.0 * R_min
                         * sin(15.0 * PI / 180.0);
     double elem = axial ? (chance(&r, 0.5) ? 0.0 : uniform(&r, 0.5, 2.0))
                         : (chance(&r, 0.5) ? 0.0 : uniform(&r, 0.5, 1.0) * elem_default);
@@ -147,6 +160,9 @@ size_t bd_gen_conveyor(unsigned long seed, const bd_gen_options *opt, char *buf,
                  incline * 180.0 / PI, mL > 0.0 ? "loaded" : "empty",
                  mL > 0.0 && !preloaded ? " (filling)" : "", v, rest ? "rest" : "static",
                  stabilize ? "+stabilize" : "", zeta, drive_inertia);
+        if (snub)
+            snprintf(info->summary + strlen(info->summary),
+                     sizeof info->summary - strlen(info->summary), ", snub");
         info->speed = v;
         info->ramp_end = ramp_end;
         info->duration = duration;
@@ -197,6 +213,14 @@ size_t bd_gen_conveyor(unsigned long seed, const bd_gen_options *opt, char *buf,
     put_pulley(&o, "head", L, H, Rh, "cw", mh, 0.0);
     if (drives != DRIVE_TAIL)
         put(&o, "%s", drive_head);
+    if (snub) {
+        /* just behind the head, its top below the carry strand: the belt
+         * wraps the head past its bottom, rises to the snub, passes over
+         * it (ccw) and goes down its far side to the return strand */
+        double xs = L - Rh - Rs - snub_gap;
+        double ys = Rt + (H + Rh - Rt) * xs / L - snub_clearance - Rs;
+        put_pulley(&o, "snub", xs, ys, Rs, "ccw", uniform(&r_snub, 80.0, 250.0), bearing);
+    }
     if (takeup != TAIL_TAKEUP) {
         double xc = takeup == LOOP_HEAD ? L - Rh - 2.0 - Rb - Rk : Rt + 3.0 + Rb + Rk;
         double x1 = xc + Rk + Rb, x2 = xc - Rk - Rb;
@@ -227,12 +251,13 @@ size_t bd_gen_conveyor(unsigned long seed, const bd_gen_options *opt, char *buf,
     }
 
     /* idlers: the carry strand leaves the tail; the long return span
-     * leaves bend2 (head loop) or the head */
+     * leaves bend2 (head loop), or the snub, or the head */
     put(&o, "idlers:\n");
     put(&o, "  - {span: tail, spacing: %.6g, rolling_resistance: %.6g, rotating_mass: 15}\n",
         a_carry, rr);
+    const char *return_span = takeup == LOOP_HEAD ? "bend2" : snub ? "snub" : "head";
     put(&o, "  - {span: %s, spacing: %.6g, rolling_resistance: %.6g, rotating_mass: 10}\n",
-        takeup == LOOP_HEAD ? "bend2" : "head", a_return, rr);
+        return_span, a_return, rr);
     if (mL > 0.0)
         put(&o, "material:\n  mass_per_length: %.6g\n  feed: {span: tail, at: %.6g}\n"
                 "  discharge: head\n  initially_loaded: %s\n",
@@ -241,6 +266,6 @@ size_t bd_gen_conveyor(unsigned long seed, const bd_gen_options *opt, char *buf,
             "  stabilize: %s\n", duration, rest ? "rest" : "static", stabilize ? "true" : "false");
     /* the checks read the belt speed at the first probe */
     put(&o, "  probes:\n    - {name: carry, span: tail, at: 0.5}\n"
-            "    - {name: return, span: %s, at: 0.5}\n", takeup == LOOP_HEAD ? "bend2" : "head");
+            "    - {name: return, span: %s, at: 0.5}\n", return_span);
     return o.len;
 }
