@@ -141,6 +141,35 @@ int bd_path_build(const bd_model_def *m, bd_path *path, bd_diag *diag)
     path->length = s;
     free(dir);
     free(span_len);
+
+    /* no span may run through a pulley it does not leave or reach: the
+     * common tangents above do not look at the others (a snub placed
+     * across the carry strand laid the belt through it, and the discrete
+     * belt's static layout diverged at its first step) */
+    for (int i = 0; i < n; i++) {
+        const bd_path_segment *sp = &path->segments[2 * i];
+        int j = (i + 1) % n;
+        for (int k = 0; k < n; k++) {
+            if (k == i || k == j)
+                continue;
+            const bd_pulley_def *c = &m->pulleys[k];
+            double t = (c->x - sp->p0[0]) * sp->dir[0] + (c->y - sp->p0[1]) * sp->dir[1];
+            t = t < 0.0 ? 0.0 : (t > sp->length ? sp->length : t);
+            double d = hypot(sp->p0[0] + t * sp->dir[0] - c->x, sp->p0[1] + t * sp->dir[1] - c->y);
+            if (d < c->radius * (1.0 - 1e-9)) {
+                bd_diag_error(diag, m->source, c->mark,
+                              "pulleys[%d] '%s': the belt span from '%s' to '%s' runs through "
+                              "it (%.4g m from its centre, radius %.4g m); move the pulley or "
+                              "change a wrap direction", k, c->name, m->pulleys[i].name,
+                              m->pulleys[j].name, d, c->radius);
+                bad = 1;
+            }
+        }
+    }
+    if (bad) {
+        bd_path_free(path);
+        return 1;
+    }
     return 0;
 }
 

@@ -99,7 +99,7 @@ case_bad bad_time_step.yaml            21     "time_step"
 # found by the fuzzer: a belt that its weight or its takeup would compress
 # at rest is an error (at once), not a crash or minutes of layout
 case_bad bad_layout_soft_belt.yaml     5      "belt"
-case_bad bad_layout_compressed.yaml    5      "belt"
+case_bad bad_layout_compressed.yaml    20     "runs through"
 
 # usage errors: exit 2
 usage_case() { # label args...
