@@ -22,18 +22,8 @@ static void progress(const bd_run_options *opt, const bd_sim *sim, double durati
 static void energy_start(bd_sim *sim)
 {
     bd_energy *en = &sim->energy;
+    memset(en, 0, sizeof *en);
     en->potential = bd_energy_potential(sim);
-    en->kinetic = 0.0;
-    en->dissipated = 0.0;
-    en->input = 0.0;
-    en->step_dissipated = 0.0;
-    en->step_input = 0.0;
-    en->step_input_at_t = 0.0;
-    en->max_kinetic = 0.0;
-    en->balance_error_rel = 0.0;
-    en->dissipated_checked = 0.0;
-    en->dissipation_fall_rel = 0.0;
-    en->dissipation_fall_t = 0.0;
     en->initial = en->potential;
 }
 

@@ -10,8 +10,9 @@
  * K_p = 2ω_c·J does not exceed the wave impedance the belt presents at
  * the pulley, R²·(Z_in + Z_out) with Z = √(EA·m′) (the characteristic
  * impedance of the belt's longitudinal wave equation m′·ü = EA·u″, force
- * per unit of speed; seed 001 §6.4, figs. 6.10–6.11, checks its wave speed
- * √(EA/m′) on the discrete belt): above that the loop is
+ * per unit of speed at the end of a long rod: K. F. Graff, Wave Motion in
+ * Elastic Solids, ch. 2; seed 001 §6.4, figs. 6.10–6.11, checks the wave
+ * speed √(EA/m′) on the discrete belt): above that the loop is
  * stiffer than the belt and turns every speed ripple of the mesh (node
  * passage over the pulley, idler impacts) into torque, where a drive tuned
  * to the belt's impedance absorbs a wave arriving at the pulley instead of
@@ -59,7 +60,9 @@ static double motor_torque(const bd_drive *p, double omega_pulley)
     return 2.0 * p->motor_breakdown * s * sb / (s * s + sb * sb);
 }
 
-/* dT_m/dω_m of the Kloss curve at the motor shaft, N·m·s */
+/* dT_m/dω_m of the Kloss curve at the motor shaft, N·m·s: the derivative
+ * of T_m(s) above, dT_m/ds = 2·T_b·s_b·(s_b² − s²)/(s² + s_b²)², times
+ * ds/dω_m = −1/ω_sync (derived here) */
 static double motor_slope(const bd_drive *p, double omega_pulley)
 {
     const bd_motor_def *m = &p->def->motor;
@@ -85,8 +88,9 @@ void bd_drive_prepare(bd_sim *sim, bd_drive *dr, const bd_pulley_body *p,
     if (w > w_impedance)
         w = w_impedance;
     /* the integral term stays explicit: a spring ω_c²·J on the pulley and
-     * the belt wrapped on it, stable for Δt·ω_c·√(J/I_local) < 2; keep a
-     * tenth of that */
+     * the belt wrapped on it, stable for Δt·ω_c·√(J/I_local) < 2 (the
+     * central-difference limit ω·Δt < 2 for that spring on I_local,
+     * docs/physics.md §3 and §6); keep a tenth of that */
     double I_local = p->m->inertia + sim->model->belt_mpl * BD_PI * R * R * R;
     double w_max = 0.2 * sqrt(I_local / reflected_inertia) / sim->model->dt;
     dr->ctrl_bandwidth = w < w_max ? w : w_max;

@@ -131,7 +131,7 @@ void bd_part_advance(bd_sim *sim, bd_part *part, double omega_old, double w_mid,
     case BD_PART_TAKEUP: {
         double qdot_old = p->qdot;
         p->q_step_start = p->q;
-        *w_nc += bd_takeup_advance(sim, &part->u.takeup, p, &en->input);
+        *w_nc += bd_takeup_advance(sim, &part->u.takeup, p, &en->input, &en->step_input_at_t);
         double qm = 0.5 * (qdot_old + p->qdot);
         *ke += 0.5 * p->m->carriage_mass * qm * qm;
         break;

@@ -117,8 +117,10 @@ double bd_takeup_force(const bd_takeup *tk, double t);
  * the pulley's weight */
 double bd_takeup_pull(const bd_sim *sim, const bd_takeup *tk, const bd_pulley_body *p);
 /* advance pulley p's carriage one step; returns the non-conservative work
- * done on it this step (J) and adds the set-point work to *input */
-double bd_takeup_advance(bd_sim *sim, bd_takeup *tk, bd_pulley_body *p, double *input);
+ * done on it this step (J) and adds the set-point work to *input and to
+ * *input_at_t (it is work up to t already, sim/energy.c bd_energy_at_t) */
+double bd_takeup_advance(bd_sim *sim, bd_takeup *tk, bd_pulley_body *p, double *input,
+                         double *input_at_t);
 
 /* transmission.c: belt transmissions of drives (seed 004) */
 struct bd_transmission *bd_transmission_create(const bd_sim *sim, bd_pulley_model *pm);

@@ -22,7 +22,8 @@ double bd_takeup_pull(const bd_sim *sim, const bd_takeup *tk, const bd_pulley_bo
 
 /* advance the carriage one step; returns the non-conservative work done on
  * it this step (J) and adds the set-point work to *input */
-double bd_takeup_advance(bd_sim *sim, bd_takeup *tk, bd_pulley_body *p, double *input)
+double bd_takeup_advance(bd_sim *sim, bd_takeup *tk, bd_pulley_body *p, double *input,
+                         double *input_at_t)
 {
     const bd_takeup_def *td = tk->def;
     double F = bd_takeup_force(tk, sim->t);
@@ -30,7 +31,7 @@ double bd_takeup_advance(bd_sim *sim, bd_takeup *tk, bd_pulley_body *p, double *
      * −∫q·dF, with q at the middle of the interval the force changed over */
     double w_set = -(F - tk->force_prev) * (p->q - 0.5 * p->qdot * sim->model->dt);
     *input += w_set;
-    sim->energy.step_input_at_t += w_set;
+    *input_at_t += w_set;
     tk->force_prev = F;
     double pull = bd_takeup_pull(sim, tk, p) + p->f_axis;
     double q_old = p->qdot;

@@ -56,7 +56,7 @@ void bd_energy_update_balance(bd_sim *sim)
 }
 
 /* the dissipated and input energy at t, where the kinetic and potential
- * energy are: the step books its works with the mid-step velocity v(t) over
+ * energy are (derived in docs/physics.md §9): the step books its works with the mid-step velocity v(t) over
  * [t − Δt/2, t + Δt/2], half a step past t. Without this the balance erred
  * by (input − dissipated power)·Δt/2, first order in Δt: 0.6–0.9 % of the
  * energy scale on motor starts, whose torque changes by 10 kN·m in 0.1 s,

@@ -57,7 +57,9 @@ static void zero_velocities(bd_sim *sim)
  * bd_sim_start_at_rest): the mid-step velocity v(t) = 0, so the half-step
  * velocities are −a·Δt/2. Setting the half-step velocities to zero instead
  * leaves v(t) = a·Δt/2 and the leapfrog's conserved energy
- * ½v(t)² + ½ω²(1 − ω²Δt²/4)x² can grow at a reset: a mode near the
+ * ½v(t)² + ½ω²(1 − ω²Δt²/4)x² (the modified energy the Störmer–Verlet
+ * scheme keeps exactly on a linear oscillator; Hairer, Lubich & Wanner,
+ * Geometric Numerical Integration, Springer 2006) can grow at a reset: a mode near the
  * step's limit, reset every few steps in phase with it, was pumped ~15 %
  * per reset and diverged (an undamped takeup loop held by its drive
  * pulley, 2 of 500 generated conveyors). At v(t) = 0 every reset takes
@@ -112,8 +114,9 @@ static void report_progress(const bd_run_options *opt, long steps, double wall)
     opt->progress(&p, opt->progress_ctx);
 }
 
-/* the run starts from here: clock, travel and bookkeeping back to zero */
-static void restart_clock(bd_sim *sim)
+/* the run starts from here: clock, travel and bookkeeping back to zero,
+ * at rest; 1: the forces there failed (fail_msg) */
+static int restart_clock(bd_sim *sim)
 {
     sim->t = 0.0;
     sim->steps = 0;
@@ -134,7 +137,7 @@ static void restart_clock(bd_sim *sim)
     sim->tension_max = -INFINITY;
     sim->tension_min = INFINITY;
     memset(&sim->energy, 0, sizeof sim->energy);
-    bd_sim_start_at_rest(sim);
+    return bd_sim_start_at_rest(sim);
 }
 
 int bd_sim_stabilize(bd_sim *sim, const bd_run_options *opt, char *err, size_t errlen)
@@ -145,15 +148,17 @@ int bd_sim_stabilize(bd_sim *sim, const bd_run_options *opt, char *err, size_t e
     node_sample laid;
     sample_nodes(sim, &laid);
     hold(sim, 1, feeding);
-    zero_velocities(sim);
+    /* at rest with the drive pulleys held: the velocities the build left
+     * were those of rest with the drives free */
+    int status = rest_here(sim) ? BD_RUN_FAILED : BD_RUN_OK;
     double prev = 0.0, peak = 0.0, scale = sim->model->belt->elastic_energy(sim);
     if (scale < 1.0)
         scale = 1.0;
-    int quiet_peaks = 0, resets = 0, status = BD_RUN_OK, converged = 0;
+    int quiet_peaks = 0, resets = 0, converged = 0;
     long k, max_steps = opt && opt->stabilize_max_steps > 0 ? opt->stabilize_max_steps
                                                             : STABILIZE_MAX_STEPS;
     err[0] = '\0';
-    for (k = 0; k < max_steps && !converged; k++) {
+    for (k = 0; status == BD_RUN_OK && k < max_steps && !converged; k++) {
         if (opt && opt->interrupted && *opt->interrupted) {
             status = BD_RUN_INTERRUPTED;
             break;
@@ -220,6 +225,10 @@ int bd_sim_stabilize(bd_sim *sim, const bd_run_options *opt, char *err, size_t e
                                         : "");
         bd_sim_warn(sim, "%s", err);
     }
-    restart_clock(sim);
+    if (restart_clock(sim)) {
+        snprintf(err, errlen, "the stabilized state could not be started from: %s",
+                 sim->fail_msg);
+        return BD_RUN_FAILED;
+    }
     return BD_RUN_OK;
 }

@@ -88,7 +88,8 @@ int bd_step_forces(bd_sim *sim)
 }
 
 /* A run starts at rest: v(0) = 0. The scheme carries velocities at half
- * steps, so the first one it needs is v(−Δt/2) = −a(0)·Δt/2; starting from
+ * steps, so the first one it needs is v(−Δt/2) = −a(0)·Δt/2 (nodes, pulley
+ * rotation, takeup carriages, idlers); starting from
  * v(−Δt/2) = 0 instead would give the system a spurious kinetic energy
  * ½m(a·Δt/2)² wherever the initial state is not exactly in equilibrium. */
 int bd_sim_start_at_rest(bd_sim *sim)
@@ -100,8 +101,15 @@ int bd_sim_start_at_rest(bd_sim *sim)
         sim->vx[i] = -sim->fx[i] / sim->mass[i] * h;
         sim->vy[i] = -sim->fy[i] / sim->mass[i] * h;
     }
-    for (int i = 0; i < sim->model->pulley_count; i++)
-        sim->pulleys[i].omega = -sim->pulleys[i].alpha * h;
+    for (int i = 0; i < sim->model->pulley_count; i++) {
+        bd_pulley_body *p = &sim->pulleys[i];
+        p->omega = -p->alpha * h;
+        /* a free carriage: its pull and the belt's (the wrap coupling solved
+         * its acceleration with the pulley's) */
+        double Mc;
+        double pull = bd_pulley_carriage(sim, p, &Mc);
+        p->qdot = Mc > 0.0 ? -(pull + p->f_axis) / Mc * h : 0.0;
+    }
     for (int i = 0; i < sim->model->idler_count; i++)
         sim->idlers[i].omega = -sim->idlers[i].alpha * h;
     return 0;

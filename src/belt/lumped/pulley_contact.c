@@ -165,7 +165,9 @@ static int find_sector(const bd_sim *sim, const bd_pulley_body *p, const bd_wrap
  * carriage's acceleration A this step (0 for a pulley that does not
  * move): the shell then ends the step at a velocity larger by Δt·A along
  * the axis a, so the node's end-of-step gap closes by Δt²·A·(n̂·a) more,
- *   f_n = f_n0 + g·A,   g = k_c·Δt²·(n̂·a)/(1 + k_c·Δt²/m).
+ *   f_n = f_n0 + g·A,   g = k_c·Δt²·(n̂·a)/(1 + k_c·Δt²/m)
+ * (derived here from seed 001's penalty contact, eqs 4.70–4.75, taken
+ * linearly implicit, with the shell's motion added; docs/physics.md §4).
  * Until issue 10 the shell's end-of-step velocity was taken with the last
  * step's acceleration and the carriage got the reaction explicitly: a lag
  * that feeds the belt's mass on the wrap back against the carriage's, a
@@ -221,7 +223,9 @@ static void gather(bd_sim *sim, bd_pulley_body *p, int moving)
  * a slipping one's is σ_i·μ_d·(f_n0 + g_i·A). The pulley and the carriage:
  *   I_s·α = T_p + R·Σ f_i,
  *   M_c·A = P + Σ (f_i·d_i − f_n,i·(n̂·a)),
- * two linear equations, solved exactly (Cramer). A node whose |f_i| passes
+ * two linear equations, solved exactly (Cramer); seed 001 eqs 4.84–4.94
+ * for the pulley alone, the carriage row derived here (docs/physics.md §4).
+ * A node whose |f_i| passes
  * μ_s·f_n slips and the set is solved again; on a moving carriage the
  * contact set is the one A gives, solved again when A changes it. */
 static void solve(bd_sim *sim, bd_pulley_body *p, double T_p, double P, double Mc)
@@ -328,8 +332,11 @@ static void solve(bd_sim *sim, bd_pulley_body *p, double T_p, double P, double M
     p->fnc_axis = 0.0;
     for (int c = 0; c < nc; c++) {
         int st = W->c_state[c];
+        /* exactly the set solved for α and A (when the carriage passes ran
+         * out, a node may end with f_n ≤ 0: skipping it would put on the
+         * nodes other forces than the pulley and carriage were solved with) */
         double fn = W->c_fn0[c] + W->c_g[c] * A;
-        if (st == OFF || fn <= 0.0)
+        if (st == OFF)
             continue;
         int k = W->c_node[c];
         double tx = W->c_tx[c], ty = W->c_ty[c];
