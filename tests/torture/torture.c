@@ -14,18 +14,25 @@
  * the law does not declare.
  *
  * The tolerances, and what each allows for:
- * - energy balance 0.5 % of the largest energy flow: the scheme's energy
+ * - energy balance 0.5 % of the largest energy flow of the run (input,
+ *   dissipated, kinetic, the change of potential energy; not the level of
+ *   the potential energy, whose zero is arbitrary): the scheme's energy
  *   is exact to round-off for the conservative forces; what remains is the
  *   bookkeeping of the contact springs and the material carried on and
  *   off, which are first order in the time step.
- * - dissipation never falls by more than 1e-9 of that scale between
- *   checks: round-off of the sums only.
+ * - dissipation never falls by more than 1e-9 of that scale over 10 ms:
+ *   round-off of the sums only (within a step an explicit dashpot or an
+ *   implicit contact may do negative work on a motion at the step's own
+ *   frequency, docs/physics.md §9; over 10 ms they may not).
  * - speed within 1 % of the target (speed drives) or of the Kloss curve's
  *   speed at the law's force (motors), mean over the window: what the
- *   PI loop and the motor curve leave with the torque ripple averaged.
+ *   PI loop and the motor curve leave with the torque ripple averaged,
+ *   and the strain difference between the drive, where the speed is set,
+ *   and the probe on the carry strand (the belt runs faster where it is
+ *   stretched more: ΔT/EA, up to a few tenths of a percent here).
  * - steady running: the run goes on window by window (--max-extension)
- *   until three successive means of force and speed agree within a
- *   quarter of their tolerances; a lightly damped takeup or motor swing
+ *   until three successive means of force and speed lie within a quarter
+ *   of their tolerances of each other (largest less smallest); a lightly damped takeup or motor swing
  *   may outlast that, and then force and speed are the means over the
  *   later half of the extended run, which average the swing over many
  *   periods: said on the line, not a failure of its own.
@@ -79,6 +86,10 @@ int main(int argc, char **argv)
                             "[--print SEED]\n");
             return 2;
         }
+    }
+    if (count < 1) {
+        fprintf(stderr, "torture: --count must be at least 1\n");
+        return 2;
     }
     double tol_force = strcmp(gen.formulation, "axial") == 0 ? 0.01 : 0.03;
     static char yaml[1 << 16];

@@ -78,10 +78,13 @@ static void torque_runaway(void)
     CHECK(run(sim, 1.0, err, sizeof err) == 1);
     check_message(err, "pulley 'head'", "surface speed");
     CHECK(strstr(err, "beyond the bound of 50 m/s") != NULL);
-    /* it stopped at the bound, not long after */
+    /* it stopped at the bound, not long after: one step's spin-up past it,
+     * α·R·Δt with α = T/I (50 kN·m on ½·100 kg·(0.3 m)² = 4.5 kg·m²),
+     * twice that for the belt's share of the inertia left out */
     bd_pulley_state ps;
     bd_sim_pulley(sim, 0, &ps);
-    CHECK(fabs(ps.omega_rad_s) * ps.radius_m < 60.0);
+    double overshoot = 2.0 * (50000.0 / 4.5) * 0.3 * bd_sim_time_step(sim);
+    CHECK(fabs(ps.omega_rad_s) * ps.radius_m < 50.0 + overshoot);
     bd_sim_free(sim);
     bd_model_def_free(&def);
 }
@@ -97,7 +100,10 @@ static void takeup_runaway(const char *formulation)
     CHECK(run(sim, 1.0, err, sizeof err) == 1);
     printf("%s:\n", formulation);
     check_message(err, "pulley 'tail' (takeup)", "carriage");
-    CHECK(bd_sim_time(sim) < 0.2);
+    /* the force ramps at F' = 10¹⁰ N/s from 0.05 s: the 10 kg carriage
+     * passes 50 m/s after τ = √(2·m·50/F') = 0.3 ms (the belt's 4 kN is
+     * nothing against it); 2 ms allows for the steps */
+    CHECK(bd_sim_time(sim) < 0.052);
     bd_sim_free(sim);
     bd_model_def_free(&def);
 

@@ -38,13 +38,14 @@ int main(void)
 {
     bd_model_def def;
     bd_sim *sim;
-    CHECK(bd_test_make_sim(model, &def, &sim) == 0);
+    bd_test_make_sim(model, &def, &sim);
     int n = bd_sim_node_count(sim);
     double deepest = 0.0, deepest_t = 0.0;
     char err[512] = "";
     int ok = 1;
     while (ok && bd_sim_time(sim) < 10.0 - 1e-9) {
-        ok = bd_sim_step(sim, 5, err, sizeof err) == 0;
+        /* every step: a node may sink and be thrown out within a few */
+        ok = bd_sim_step(sim, 1, err, sizeof err) == 0;
         for (int p = 0; p < 2; p++) {
             bd_pulley_state ps;
             bd_sim_pulley(sim, p, &ps);

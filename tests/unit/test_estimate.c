@@ -60,8 +60,10 @@ static void against_the_build(const char *name)
     CHECK(load(name, &def) == 0);
     bd_sim *sim = NULL;
     CHECK(bd_test_create(&def, &sim) == 0);
-    if (!sim)
+    if (!sim) {
+        bd_model_def_free(&def);
         return;
+    }
     bd_belt_estimate be;
     sim->model->belt->estimate(&def, &sim->model->path, &be);
     int axial = strcmp(sim->model->belt->name, "axial") == 0;
@@ -106,11 +108,14 @@ static void refused(void)
     if (diag.count == 1) {
         printf("refused in %.3f s: %s\n", t, diag.lines[0]);
         CHECK(strstr(diag.lines[0], "belt.element_length: 1e-06 m") != NULL);
+        /* head_drive's loop, 111.5 m, in elements of 1e-6 m */
         CHECK(strstr(diag.lines[0], "1.12e+08 nodes") != NULL);
         CHECK(strstr(diag.lines[0], "memory about") != NULL);
         CHECK(strstr(diag.lines[0], "physical memory") != NULL);
     }
-    CHECK(t < 0.5);
+    /* refused before anything was built: the estimate's message, not an
+     * allocation failure (how long it took is printed, not tested: timing
+     * belongs in bench/) */
     bd_diag_free(&diag);
     bd_model_def_free(&def);
 }
@@ -140,8 +145,10 @@ static void allocation_fails(void)
     def.belt.element_length = 5e-4;
     bd_model *model = NULL;
     CHECK(bd_test_compile(&def, &model) == 0);
-    if (!model)
+    if (!model) {
+        bd_model_def_free(&def);
         return;
+    }
     struct rlimit old, low;
     CHECK(getrlimit(RLIMIT_AS, &old) == 0);
     low = old;

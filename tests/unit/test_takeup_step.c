@@ -126,7 +126,7 @@ static void decay(void)
 {
     bd_model_def def;
     bd_sim *sim;
-    CHECK(bd_test_make_sim(decay_model, &def, &sim) == 0);
+    bd_test_make_sim(decay_model, &def, &sim);
     bd_sim_book_energy_every_step(sim, 1);
     const double L = bd_sim_belt_length(sim), dt = bd_sim_time_step(sim);
     /* extremes of the carriage's travel after the step */
@@ -177,9 +177,17 @@ static void decay(void)
            "of %.4g J\n",
            mean, q_static, omega, sqrt(k / m_eff), decrement, PI * omega * tau, acc.balance,
            acc.drop, acc.scale);
-    CHECK_REL(mean, q_static, 0.015);
-    CHECK_REL(omega, sqrt(k / m_eff), 0.015);
-    CHECK_REL(decrement, PI * omega * tau, 0.05);
+    /* mean within 1 %: each midpoint of two successive extremes of a
+     * decaying swing is off by about decrement/4 of the swing (0.6 % here,
+     * the swing about the mean's size); measured +0.35 %.
+     * ω within 1 %: Rayleigh's estimate takes the strands' mode shapes as
+     * linear (2/3 of a span's mass); measured +0.34 %.
+     * decrement within 2 %: the carriage mode's alone; the spans' own
+     * modes, damped faster, ride on the first swings; measured 0.02253 for
+     * 0.02253 */
+    CHECK_REL(mean, q_static, 0.01);
+    CHECK_REL(omega, sqrt(k / m_eff), 0.01);
+    CHECK_REL(decrement, PI * omega * tau, 0.02);
     CHECK(acc.balance <= 0.005 * acc.scale);
     CHECK(acc.drop <= 1e-9 * acc.scale);
     bd_sim_free(sim);
@@ -190,7 +198,7 @@ static void light_carriage(void)
 {
     bd_model_def def;
     bd_sim *sim;
-    CHECK(bd_test_make_sim(light_model, &def, &sim) == 0);
+    bd_test_make_sim(light_model, &def, &sim);
     bd_sim_book_energy_every_step(sim, 1);
     char err[512] = "";
     int ok = 1;
