@@ -284,6 +284,15 @@ static int load_varied(study_run *R, const bd_key_site *sites, const double *v, 
     return bad;
 }
 
+/* the line (from 1) of byte `at` of the text */
+static int line_at(const char *text, size_t at)
+{
+    int line = 1;
+    for (size_t i = 0; i < at; i++)
+        line += text[i] == '\n';
+    return line;
+}
+
 static int make_sweep_cases(study_run *R, char *err, size_t errlen)
 {
     bd_study *s = &R->s;
@@ -301,6 +310,15 @@ static int make_sweep_cases(study_run *R, char *err, size_t errlen)
             snprintf(err, errlen, "%s %s", opt_name, msg);
             return BD_RUN_BAD_INPUT;
         }
+        /* one number under two spellings (pulleys.head.radius and
+         * pulleys.0.radius, idlers[0].x and idlers.0.x) */
+        for (int i = 0; i < k; i++)
+            if (s->sites[i].len > 0 && s->sites[k].len > 0 && s->sites[i].at == s->sites[k].at) {
+                snprintf(err, errlen, "%s %s: names the same number as %s %s (line %d of the "
+                         "model file): vary it once", opt_name, s->keys[k].key, opt_name,
+                         s->keys[i].key, line_at(s->text, s->sites[k].at));
+                return BD_RUN_BAD_INPUT;
+            }
         for (int i = 0; i < k; i++)
             if (s->sites[i].len == 0 && s->sites[k].len == 0 && s->sites[i].at == s->sites[k].at
                 && strcmp(s->sites[i].adds, s->sites[k].adds) == 0) {

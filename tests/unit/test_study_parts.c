@@ -121,6 +121,17 @@ static void test_keys(void)
                       sizeof err) != 0);
     /* a key the model does not take: added, and the loader refuses it */
     CHECK(load_with("belt.colour", 1.0, &def, NULL) != 0);
+    /* one number under two spellings: the same site, which the text
+     * cannot be set at twice (the study refuses the pair, naming both) */
+    bd_key_site two[2];
+    CHECK(bd_key_find(model, strlen(model), "pulleys.head.radius", &two[0], err, sizeof err)
+          == 0);
+    CHECK(bd_key_find(model, strlen(model), "pulleys[0].radius", &two[1], err, sizeof err)
+          == 0);
+    CHECK(two[0].len > 0 && two[0].at == two[1].at && two[0].len == two[1].len);
+    double both[2] = {0.25, 0.3};
+    size_t len;
+    CHECK(bd_key_apply(model, strlen(model), two, both, 2, &len) == NULL);
 }
 
 static void test_grid_and_sample(void)
