@@ -12,7 +12,9 @@
 #include <signal.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <time.h>
+#include <unistd.h>
 
 #include "beltdyn/model.h"
 #include "io/sensitivity.h"
@@ -231,18 +233,26 @@ static void done(const bd_job_result *r, void *ctx)
               && r->wall_s == r->job);
 }
 
-static void test_runner(void)
+/* the NJOBS jobs on `workers` workers, job 5 the costliest */
+static const double job_cost[NJOBS] = {1, 1, 1, 1, 1, 9, 1};
+
+static bd_runner jobs_runner(int workers)
 {
-    double cost[NJOBS] = {1, 1, 1, 1, 1, 9, 1};
-    /* the aborting job's core dump is not wanted */
-    signal(SIGABRT, SIG_DFL);
     bd_runner r;
     memset(&r, 0, sizeof r);
     r.count = NJOBS;
-    r.cost = cost;
-    r.workers = 2;
+    r.cost = job_cost;
+    r.workers = workers;
     r.run = job;
     r.done = done;
+    return r;
+}
+
+static void test_runner(void)
+{
+    /* the aborting job's core dump is not wanted */
+    signal(SIGABRT, SIG_DFL);
+    bd_runner r = jobs_runner(2);
     char err[256];
     int dies = 1;   /* ctx: job 3 aborts */
     r.run_ctx = r.done_ctx = &dies;
@@ -269,11 +279,59 @@ static void test_runner(void)
     CHECK(order_n == 3 && seen[0] == 1 && seen[2] == 1 && seen[6] == 1 && seen[1] == 0);
 }
 
+/* workers that cannot start (no file descriptors left for their pipes,
+ * as under EMFILE or a fork's EAGAIN): the one that did start runs every
+ * job; none at all is an error naming why. A slot whose worker never
+ * started used to count as busy with job 0 forever, and the coordinator
+ * spun at full speed without end (the alarm fails this test then) */
+static int messages;
+
+static void count_message(const char *line, void *ctx)
+{
+    (void)ctx;
+    if (strstr(line, "could not be started"))
+        messages++;
+}
+
+static void test_runner_spawn_fails(void)
+{
+    bd_runner r = jobs_runner(3);
+    r.message = count_message;
+    char err[256];
+    struct rlimit old, low;
+    CHECK(getrlimit(RLIMIT_NOFILE, &old) == 0);
+    int first = dup(0);   /* the lowest free descriptor */
+    close(first);
+    alarm(60);
+    for (int room = 4; room >= 0; room -= 4) {
+        /* room 4: the first worker's two pipes, then none for the others */
+        low = old;
+        low.rlim_cur = (rlim_t)first + (rlim_t)room;
+        CHECK(setrlimit(RLIMIT_NOFILE, &low) == 0);
+        memset(seen, 0, sizeof seen);
+        order_n = messages = 0;
+        int rs = bd_runner_run(&r, err, sizeof err);
+        CHECK(setrlimit(RLIMIT_NOFILE, &old) == 0);
+        CHECK(messages == 1);
+        if (room > 0) {
+            CHECK(rs == BD_RUN_OK);
+            CHECK(order_n == NJOBS);
+            for (int j = 0; j < NJOBS; j++)
+                CHECK(seen[j] == 1);
+        } else {
+            CHECK(rs == BD_RUN_FAILED && order_n == 0);
+            CHECK(strstr(err, "no worker process could be started for 7 cases (pipe: "));
+        }
+    }
+    alarm(0);
+}
+
 int main(void)
 {
     test_keys();
     test_grid_and_sample();
     test_spearman();
     test_runner();
+    test_runner_spawn_fails();
     return bd_test_finish("test_study_parts");
 }
