@@ -99,7 +99,8 @@ static const char *hash_text(const bd_study *s)
     return hex_hash;
 }
 
-int bd_study_record_write(const bd_study *s, const bd_study_case *c, const bd_job_result *r)
+int bd_study_record_write(const bd_study *s, const bd_study_case *c, const bd_job_result *r,
+                          char *err, size_t errlen)
 {
     if (r->status != BD_RUN_OK && r->status != BD_RUN_FAILED)
         return 0;   /* interrupted or not built: it runs again */
@@ -127,15 +128,16 @@ int bd_study_record_write(const bd_study *s, const bd_study_case *c, const bd_jo
     }
     char *text = cJSON_Print(o);
     cJSON_Delete(o);
-    if (!text)
+    if (!text) {
+        snprintf(err, errlen, "out of memory");
         return -1;
+    }
     bd_strbuf b = {0};
     bd_sb_puts(&b, text);
     bd_sb_puts(&b, "\n");
     free(text);
-    char err[PATH_LEN + 64];
     path_of(s, c, path, sizeof path);
-    return bd_html_write(&b, path, err, sizeof err) ? -1 : 0;
+    return bd_html_write(&b, path, err, errlen) ? -1 : 0;
 }
 
 int bd_study_record_read(const bd_study *s, bd_study_case *c)

@@ -574,7 +574,14 @@ static void run_case(void *ctx, int job, const bd_job_env *env, bd_job_result *o
     out->wall_s = bd_wall_seconds() - w0;
     bd_sim_free(sim);
     bd_diag_free(&diag);
-    bd_study_record_write(s, c, out);
+    /* a result that is not on disk is run again by --resume: say so */
+    char werr[PATH_LEN + 64];
+    if (bd_study_record_write(s, c, out, werr, sizeof werr) != 0 && env->message) {
+        char line[PATH_LEN + 256];
+        snprintf(line, sizeof line, "case %s: warning: cannot write case.json (--resume "
+                 "runs it again): %s", c->name, werr);
+        env->message(line, env->message_ctx);
+    }
 }
 
 /* ---- gathering ---- */

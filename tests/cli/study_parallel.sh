@@ -7,6 +7,7 @@
 #   and the final table is the serial one;
 # - SIGINT stops all workers: exit 130, the table holds the finished cases
 #   (valid CSV, statuses completed or interrupted), no worker left;
+# - a case.json that cannot be written is said, naming the case;
 # - a non-empty directory that holds no study is refused (exit 2) unless
 #   --force.
 set -u
@@ -113,6 +114,22 @@ else
     bad "SIGINT" "no case completed before the study ended"
     pid=""
 fi
+
+# a case.json that cannot be written (a directory, not empty, in its
+# place) is said with the case's name, in this process and from a worker;
+# the study still completes (it used to be silent, and --resume reran it)
+for j in 1 2; do
+    mkdir -p "$work/nw$j/linear_T1_d0/case.json" && touch "$work/nw$j/linear_T1_d0/case.json/x"
+    "$BELTDYN" study "$model" -o "$work/nw$j" --curves linear --times 1 --delays 0,0.5 \
+        --after 1 --force -j $j >"$work/nw.out" 2>"$work/nw.err"
+    rc=$?
+    if [ $rc -eq 0 ] && grep -q "^case linear_T1_d0: warning: cannot write case.json.*Is a directory" \
+        "$work/nw.err" && [ "$(grep -c "cannot write" "$work/nw.err")" -eq 1 ]; then
+        ok "-j $j: a case.json that cannot be written is said, naming the case"
+    else
+        bad "-j $j: case.json not written" "exit $rc: $(head -c 400 "$work/nw.err")"
+    fi
+done
 
 # a non-empty directory that is not a study's
 mkdir -p "$work/other" && echo x >"$work/other/notes.txt"
