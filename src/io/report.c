@@ -1,6 +1,7 @@
 /* beltdyn report DIR: plots of a run and one self-contained report.html */
 #include "beltdyn/report.h"
 
+#include "base/file.h"
 #include "io/csv_read.h"
 #include "io/html.h"
 #include "io/study_report.h"
@@ -1138,36 +1139,33 @@ static int read_summary(report *r, char *err, size_t errlen)
         set_err(err, errlen, "%s: path too long", r->dir);
         return BD_REPORT_EINPUT;
     }
-    FILE *fp = fopen(path, "rb");
-    if (!fp) {
+    char *text;
+    size_t len;
+    int rd = bd_read_file(path, &text, &len);
+    if (rd == BD_READ_OPEN) {
         set_err(err, errlen, "%s: %s (not the output directory of beltdyn run?)", path,
                 strerror(errno));
         return BD_REPORT_EINPUT;
     }
-    bd_strbuf b = {0};
-    char chunk[65536];
-    size_t got;
-    while ((got = fread(chunk, 1, sizeof chunk, fp)) > 0) bd_sb_put(&b, chunk, got);
-    fclose(fp);
-    if (b.oom || !b.p) {
-        free(b.p);
+    if (rd != BD_READ_OK || len == 0) {
+        free(text);
         set_err(err, errlen, "%s: empty or unreadable", path);
         return BD_REPORT_EINPUT;
     }
-    r->summary = cJSON_ParseWithLength(b.p, b.n);
+    r->summary = cJSON_ParseWithLength(text, len);
     if (!r->summary || !cJSON_IsObject(r->summary)) {
         /* the line of the parse error */
         const char *at = cJSON_GetErrorPtr();
         int line = 1;
-        if (at && at >= b.p && at <= b.p + b.n)
-            for (const char *q = b.p; q < at; q++) line += *q == '\n';
+        if (at && at >= text && at <= text + len)
+            for (const char *q = text; q < at; q++) line += *q == '\n';
         set_err(err, errlen, "%s:%d: not a JSON object", path, line);
         cJSON_Delete(r->summary);
         r->summary = NULL;
-        free(b.p);
+        free(text);
         return BD_REPORT_EINPUT;
     }
-    free(b.p);
+    free(text);
 
     const cJSON *model = cJSON_GetObjectItemCaseSensitive(r->summary, "model");
     if (cJSON_IsString(model) && model->valuestring[0])

@@ -18,6 +18,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "base/file.h"
 #include "beltdyn/report.h"
 #include "io/csv_read.h"
 #include "io/html.h"
@@ -69,28 +70,13 @@ static double jnum(const cJSON *o, const char *key)
     return cJSON_IsNumber(v) ? v->valuedouble : NAN;
 }
 
-static char *read_text(const char *path)
-{
-    FILE *fp = fopen(path, "rb");
-    if (!fp) return NULL;
-    bd_strbuf b = {0};
-    char chunk[65536];
-    size_t got;
-    while ((got = fread(chunk, 1, sizeof chunk, fp)) > 0) bd_sb_put(&b, chunk, got);
-    fclose(fp);
-    if (b.oom) {
-        free(b.p);
-        return NULL;
-    }
-    return b.p;
-}
-
 static int read_study(study *s, char *err, size_t errlen)
 {
     char path[PATH_LEN];
     snprintf(path, sizeof path, "%s/study.json", s->dir);
-    char *text = read_text(path);
-    if (!text) {
+    char *text;
+    size_t len;
+    if (bd_read_file(path, &text, &len) != BD_READ_OK) {
         snprintf(err, errlen, "%s: %s (study.csv without study.json?)", path, strerror(errno));
         return BD_REPORT_EINPUT;
     }

@@ -16,6 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/file.h"
 #include "io/html.h"
 
 #define PATH_LEN 2048
@@ -144,25 +145,10 @@ int bd_study_record_read(const bd_study *s, bd_study_case *c)
 {
     char path[PATH_LEN], def[2048];
     path_of(s, c, path, sizeof path);
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return 0;
-    char *text = NULL;
-    size_t len = 0;
-    char chunk[4096];
-    size_t got;
-    while ((got = fread(chunk, 1, sizeof chunk, f)) > 0) {
-        char *more = realloc(text, len + got + 1);
-        if (!more)
-            break;
-        text = more;
-        memcpy(text + len, chunk, got);
-        len += got;
-    }
-    fclose(f);
-    if (!text)
-        return 0;
-    text[len] = '\0';
+    char *text;
+    size_t len;
+    if (bd_read_file(path, &text, &len) != BD_READ_OK)
+        return 0;   /* none, or unreadable: the case runs again */
     cJSON *o = cJSON_Parse(text);
     free(text);
     definition(s, c, def, sizeof def);

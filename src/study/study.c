@@ -30,6 +30,7 @@
 #include <dirent.h>
 
 #include "base/clock.h"
+#include "base/file.h"
 #include "study/ranks.h"
 #include "study/study_case.h"
 #include "study/sweep.h"
@@ -129,40 +130,6 @@ static uint64_t fnv1a(const char *p, size_t n)
         h *= 0x100000001b3ull;
     }
     return h;
-}
-
-static int read_file(const char *path, char **text, size_t *len)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return -1;
-    char *buf = NULL;
-    size_t n = 0, cap = 0;
-    for (;;) {
-        if (n == cap) {
-            char *more = realloc(buf, (cap = cap ? 2 * cap : 65536) + 1);
-            if (!more) {
-                free(buf);
-                fclose(f);
-                return -1;
-            }
-            buf = more;
-        }
-        size_t got = fread(buf + n, 1, cap - n, f);
-        n += got;
-        if (got == 0)
-            break;
-    }
-    int bad = ferror(f);
-    fclose(f);
-    if (bad) {
-        free(buf);
-        return -1;
-    }
-    buf[n] = '\0';
-    *text = buf;
-    *len = n;
-    return 0;
 }
 
 /* the model's first speed drive, or NULL */
@@ -420,7 +387,7 @@ static int setup(study_run *R, char *err, size_t errlen)
     s->kind = !sweep ? BD_STUDY_START : (o->nvary > 0 ? BD_STUDY_GRID : BD_STUDY_SAMPLE);
     s->nkeys = s->kind == BD_STUDY_GRID ? o->nvary : (s->kind == BD_STUDY_SAMPLE ? o->nrange : 0);
     s->keys = s->kind == BD_STUDY_GRID ? o->vary : o->range;
-    if (read_file(o->model_path, &s->text, &s->text_len) != 0) {
+    if (bd_read_file(o->model_path, &s->text, &s->text_len) != BD_READ_OK) {
         snprintf(err, errlen, "%s: cannot read the model file: %s", o->model_path,
                  strerror(errno));
         return BD_RUN_BAD_INPUT;

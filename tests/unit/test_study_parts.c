@@ -5,9 +5,11 @@
  * - the grid (every combination, ends exact) and the Latin hypercube (one
  *   case per stratum of every key, the same for a seed);
  * - Spearman's rank correlation on known data;
+ * - a whole file read (base/file.c);
  * - the runner in worker processes: every job reported once with its
  *   result, a job whose process dies is reported failed and the others
  *   still finish, the longest job is handed out first. */
+#include <errno.h>
 #include <math.h>
 #include <signal.h>
 #include <stdlib.h>
@@ -16,6 +18,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "base/file.h"
 #include "beltdyn/model.h"
 #include "io/sensitivity.h"
 #include "study/keypath.h"
@@ -326,6 +329,31 @@ static void test_runner_spawn_fails(void)
     alarm(0);
 }
 
+/* a whole file: across the first buffer's growth, empty, missing, a
+ * directory (opens, cannot be read) */
+static void test_read_file(void)
+{
+    char path[] = "/tmp/bd_read_fileXXXXXX";
+    int fd = mkstemp(path);
+    CHECK(fd >= 0);
+    FILE *f = fdopen(fd, "wb");
+    for (int i = 0; i < 20000; i++)
+        fprintf(f, "%07d\n", i);   /* 160 000 bytes */
+    fclose(f);
+    char *text;
+    size_t len;
+    CHECK(bd_read_file(path, &text, &len) == BD_READ_OK);
+    CHECK(len == 160000 && text[len] == '\0' && strncmp(text + len - 8, "0019999\n", 8) == 0);
+    free(text);
+    f = fopen(path, "wb");
+    fclose(f);
+    CHECK(bd_read_file(path, &text, &len) == BD_READ_OK && len == 0 && text[0] == '\0');
+    free(text);
+    remove(path);
+    CHECK(bd_read_file(path, &text, &len) == BD_READ_OPEN && text == NULL && errno == ENOENT);
+    CHECK(bd_read_file("/tmp", &text, &len) == BD_READ_ERROR && text == NULL && len == 0);
+}
+
 int main(void)
 {
     test_keys();
@@ -333,5 +361,6 @@ int main(void)
     test_spearman();
     test_runner();
     test_runner_spawn_fails();
+    test_read_file();
     return bd_test_finish("test_study_parts");
 }
