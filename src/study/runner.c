@@ -649,7 +649,11 @@ int bd_runner_run(const bd_runner *r, char *err, size_t errlen)
     c.t0 = c.last_shown = bd_wall_seconds();
     c.order = malloc((size_t)(r->count > 0 ? r->count : 1) * sizeof *c.order);
     c.frac = calloc((size_t)(r->count > 0 ? r->count : 1), sizeof *c.frac);
-    int nw = r->ranks > 1 ? r->ranks - 1 : (r->workers > 1 ? r->workers : 0);
+    /* no worker processes under an MPI launcher, whatever `workers` says:
+     * Open MPI does not support fork after MPI_Init, and a world of one
+     * rank runs its jobs here */
+    int nw = r->ranks > 1 ? r->ranks - 1
+                          : (r->workers > 1 && !bd_ranks_launched() ? r->workers : 0);
     c.w = calloc((size_t)(nw > 0 ? nw : 1), sizeof *c.w);
     c.pfd = calloc((size_t)(nw > 0 ? nw : 1), sizeof *c.pfd);
     c.pidx = calloc((size_t)(nw > 0 ? nw : 1), sizeof *c.pidx);

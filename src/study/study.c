@@ -693,17 +693,22 @@ int bd_study_run(const bd_study_options *opt, FILE *table, char *err, size_t err
         R->setup_failed = 1;
         snprintf(R->setup_err, sizeof R->setup_err, "%s", err);
     }
-    int workers = opt->jobs > 0 ? opt->jobs : bd_runner_cores();
+    /* under an MPI launcher one worker per rank, -j not used: a world of
+     * one rank runs the cases here, one after another (Open MPI does not
+     * support fork after MPI_Init; the runner keeps to it too) */
+    int launched = bd_ranks_launched();
+    int workers = launched ? 1 : opt->jobs > 0 ? opt->jobs : bd_runner_cores();
     if (R->table && status == BD_RUN_OK) {
-        int w = R->ranks > 1 ? R->ranks : (workers < R->to_run ? workers : R->to_run);
+        int w = launched ? R->ranks : (workers < R->to_run ? workers : R->to_run);
         fprintf(R->table, "%s of %s: %d cases in %s/", R->s.kind == BD_STUDY_START
                 ? "start study" : (R->s.kind == BD_STUDY_GRID ? "sweep (grid)"
                                    : "sweep (Latin hypercube)"), R->s.def.name, R->s.n,
                 opt->out_dir);
         if (R->skipped > 0)
             fprintf(R->table, " (%d complete before, %d to run)", R->skipped, R->to_run);
-        fprintf(R->table, ", %d %s\n", w > 0 ? w : 1, R->ranks > 1 ? "MPI ranks"
-                : (w > 1 ? "worker processes" : "process"));
+        fprintf(R->table, ", %d %s\n", w > 0 ? w : 1,
+                launched ? (w > 1 ? "MPI ranks" : "MPI rank")
+                         : (w > 1 ? "worker processes" : "process"));
         bd_study_table_header(&R->s, R->table);
         fflush(R->table);
     }

@@ -2,6 +2,8 @@
 # `beltdyn study` in parallel (issue 16) on a 6-case start study of a small
 # conveyor (3 curves x 2 delays, each ~5 s simulated):
 # - -j 2 writes the serial (-j 1) table, bit for bit but the wall clock;
+# - under mpirun -np 1 (when there is one) the cases run in the one rank,
+#   no workers forked, and write the serial table;
 # - a study killed (-9) after some cases completed leaves no worker
 #   behind; --resume keeps the completed cases (their case.json untouched)
 #   and the final table is the serial one;
@@ -55,6 +57,26 @@ if grep -q "2 worker processes" "$work/j2.out"; then ok "-j 2 ran 2 worker proce
 else bad "-j 2" "did not say it ran 2 worker processes: $(head -1 "$work/j2.out")"; fi
 if msg=$(same_table "$work/serial" "$work/j2"); then ok "-j 2 table = serial table"
 else bad "-j 2 table" "$msg"; fi
+
+# under `mpirun -np 1` (a world of one rank) the cases run in the rank's
+# own process, whatever -j says: it used to fork -j workers after
+# MPI_Init, which Open MPI does not support. Only where mpirun is and the
+# build has MPI (a build without it refuses to run under mpirun).
+if command -v mpirun >/dev/null; then
+    OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl=self,vader \
+        ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0" \
+        timeout 120 mpirun -np 1 "$BELTDYN" study "$model" -o "$work/np1" "${cases[@]}" -j 2 \
+        >"$work/np1.out" 2>&1
+    rc=$?
+    if grep -q "built without MPI" "$work/np1.out"; then
+        ok "mpirun -np 1: not checked, this beltdyn has no MPI"
+    elif [ $rc -eq 0 ] && grep -q ", 1 MPI rank$" "$work/np1.out" \
+        && msg=$(same_table "$work/serial" "$work/np1"); then
+        ok "mpirun -np 1 -j 2: one rank, no workers, the serial table"
+    else
+        bad "mpirun -np 1" "exit $rc: $(head -3 "$work/np1.out") ${msg:-}"
+    fi
+fi
 
 # killed after 2 cases, then resumed
 "$BELTDYN" study "$model" -o "$work/k" "${cases[@]}" -j 2 >"$work/k.out" 2>&1 &
