@@ -47,3 +47,14 @@ int bd_read_file(const char *path, char **text, size_t *len)
     *len = n;
     return BD_READ_OK;
 }
+
+int bd_path_join(char *out, size_t cap, const char *dir, const char *name)
+{
+    int n = snprintf(out, cap, "%s/%s", dir, name);
+    if (n < 0 || (size_t)n >= cap) {
+        if (cap > 0)
+            out[0] = '\0';
+        return -1;
+    }
+    return 0;
+}

@@ -1,5 +1,5 @@
-/* Whole files for the readers above (model/, io/, study/): a file read
- * into memory in one piece. */
+/* Files for the readers and writers above (model/, io/, study/): a file
+ * read into memory in one piece, a directory and a name joined. */
 #ifndef BD_FILE_H
 #define BD_FILE_H
 
@@ -17,5 +17,9 @@ enum {
  * bytes; free it), or one of the codes above with *text NULL, *len 0 and
  * nothing left open or allocated */
 int bd_read_file(const char *path, char **text, size_t *len);
+
+/* "dir/name" into out (cap bytes); 0, or -1 when it does not fit (out is
+ * then ""): a path too long is an error, never a file name cut short */
+int bd_path_join(char *out, size_t cap, const char *dir, const char *name);
 
 #endif

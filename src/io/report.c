@@ -42,12 +42,6 @@ static void set_err(char *err, size_t errlen, const char *fmt, ...)
     va_end(ap);
 }
 
-static int join(char *out, const char *dir, const char *name)
-{
-    int n = snprintf(out, PATH_LEN, "%s/%s", dir, name);
-    return n > 0 && n < PATH_LEN ? 0 : -1;
-}
-
 static int file_exists(const char *path)
 {
     struct stat st;
@@ -305,7 +299,7 @@ static float *raster_field(const double *t, const double *s, const double *T, si
 static int plot_tension_surface(report *r, char *err, size_t errlen)
 {
     char path[PATH_LEN];
-    if (join(path, r->dir, "tension.csv") || !file_exists(path)) return 0;
+    if (bd_path_join(path, sizeof path, r->dir, "tension.csv") || !file_exists(path)) return 0;
     static const char *const want[3] = {"t_s", "s_m", "tension_N"};
     bd_csv csv;
     if (bd_csv_read(path, want, 3, &csv, err, errlen)) return BD_REPORT_EINPUT;
@@ -391,7 +385,7 @@ done:
 static int plot_envelope(report *r, char *err, size_t errlen)
 {
     char path[PATH_LEN];
-    if (join(path, r->dir, "envelope.csv") || !file_exists(path)) return 0;
+    if (bd_path_join(path, sizeof path, r->dir, "envelope.csv") || !file_exists(path)) return 0;
     static const char *const want[3] = {"s_m", "tension_max_N", "tension_min_N"};
     bd_csv csv;
     if (bd_csv_read(path, want, 3, &csv, err, errlen)) return BD_REPORT_EINPUT;
@@ -572,7 +566,7 @@ static void mark_extreme(report *r, bd_plot_axes *a, const char *what, const cha
 static int plot_history(report *r, char *err, size_t errlen)
 {
     char path[PATH_LEN];
-    if (join(path, r->dir, "history.csv") || !file_exists(path)) return 0;
+    if (bd_path_join(path, sizeof path, r->dir, "history.csv") || !file_exists(path)) return 0;
     bd_csv h;
     if (bd_csv_read(path, NULL, 0, &h, err, errlen)) return BD_REPORT_EINPUT;
     int rc = 0;
@@ -930,7 +924,7 @@ static void history_range(const char *dir, const char *column, double *lo, doubl
     const char *want[1] = {column};
     bd_csv c;
     *lo = *hi = NAN;
-    if (join(path, dir, "history.csv") || bd_csv_read(path, want, 1, &c, err, sizeof err)) return;
+    if (bd_path_join(path, sizeof path, dir, "history.csv") || bd_csv_read(path, want, 1, &c, err, sizeof err)) return;
     for (size_t i = 0; i < c.nrows; i++) {
         double v = c.col[0][i];
         if (!isfinite(v)) continue;
@@ -1007,7 +1001,7 @@ static void headline(report *r, bd_strbuf *b)
         char path[PATH_LEN];
         bd_csv hd;
         char err[256];
-        if (!join(path, r->dir, "history.csv") && file_exists(path) &&
+        if (!bd_path_join(path, sizeof path, r->dir, "history.csv") && file_exists(path) &&
             !bd_csv_read_header(path, &hd, err, sizeof err)) {
             for (int j = 0; j < hd.ncols; j++) {
                 double lo, hi;
@@ -1121,7 +1115,7 @@ static int write_html(report *r, char *err, size_t errlen)
     }
     bd_sb_puts(&b, "</main></body></html>\n");
     char path[PATH_LEN];
-    if (join(path, r->dir, "report.html")) {
+    if (bd_path_join(path, sizeof path, r->dir, "report.html")) {
         free(b.p);
         set_err(err, errlen, "%s: path too long", r->dir);
         return BD_REPORT_EOUTPUT;
@@ -1135,7 +1129,7 @@ static int write_html(report *r, char *err, size_t errlen)
 static int read_summary(report *r, char *err, size_t errlen)
 {
     char path[PATH_LEN];
-    if (join(path, r->dir, "summary.json")) {
+    if (bd_path_join(path, sizeof path, r->dir, "summary.json")) {
         set_err(err, errlen, "%s: path too long", r->dir);
         return BD_REPORT_EINPUT;
     }
@@ -1218,8 +1212,8 @@ int bd_report_write(const char *dir, char *err, size_t errlen)
     }
     /* a start study's directory (beltdyn study): its own comparison report */
     char study_csv[PATH_LEN], summary[PATH_LEN];
-    if (join(study_csv, dir, "study.csv") == 0 && file_exists(study_csv) &&
-        (join(summary, dir, "summary.json") != 0 || !file_exists(summary)))
+    if (bd_path_join(study_csv, sizeof study_csv, dir, "study.csv") == 0 && file_exists(study_csv) &&
+        (bd_path_join(summary, sizeof summary, dir, "summary.json") != 0 || !file_exists(summary)))
         return bd_study_report_write(dir, err, errlen);
     r = calloc(1, sizeof *r);
     if (!r) {
@@ -1228,7 +1222,7 @@ int bd_report_write(const char *dir, char *err, size_t errlen)
     }
     r->dir = dir;
     if ((rc = read_summary(r, err, errlen))) goto done;
-    if (join(r->plots, dir, "plots")) {
+    if (bd_path_join(r->plots, sizeof r->plots, dir, "plots")) {
         set_err(err, errlen, "%s: path too long", dir);
         rc = BD_REPORT_EINPUT;
         goto done;

@@ -60,9 +60,12 @@ static void definition(const bd_study *s, const bd_study_case *c, char *buf, siz
                                   c->values[k]);
 }
 
-static void path_of(const bd_study *s, const bd_study_case *c, char *buf, size_t len)
+/* out_dir/<case>/case.json; 0, or -1 when the path is too long */
+static int path_of(const bd_study *s, const bd_study_case *c, char *buf, size_t len)
 {
-    snprintf(buf, len, "%s/%s/case.json", s->opt->out_dir, c->name);
+    char dir[PATH_LEN];
+    return bd_path_join(dir, sizeof dir, s->opt->out_dir, c->name)
+           || bd_path_join(buf, len, dir, "case.json") ? -1 : 0;
 }
 
 /* a double as JSON that reads back the same: 17 digits, or a word */
@@ -137,14 +140,19 @@ int bd_study_record_write(const bd_study *s, const bd_study_case *c, const bd_jo
     bd_sb_puts(&b, text);
     bd_sb_puts(&b, "\n");
     free(text);
-    path_of(s, c, path, sizeof path);
+    if (path_of(s, c, path, sizeof path)) {
+        free(b.p);
+        snprintf(err, errlen, "%s/%s: path too long", s->opt->out_dir, c->name);
+        return -1;
+    }
     return bd_html_write(&b, path, err, errlen) ? -1 : 0;
 }
 
 int bd_study_record_read(const bd_study *s, bd_study_case *c)
 {
     char path[PATH_LEN], def[2048];
-    path_of(s, c, path, sizeof path);
+    if (path_of(s, c, path, sizeof path))
+        return 0;
     char *text;
     size_t len;
     if (bd_read_file(path, &text, &len) != BD_READ_OK)
@@ -194,6 +202,6 @@ int bd_study_record_read(const bd_study *s, bd_study_case *c)
 void bd_study_record_remove(const bd_study *s, const bd_study_case *c)
 {
     char path[PATH_LEN];
-    path_of(s, c, path, sizeof path);
-    remove(path);
+    if (path_of(s, c, path, sizeof path) == 0)
+        remove(path);
 }

@@ -504,6 +504,13 @@ static void run_case(void *ctx, int job, const bd_job_env *env, bd_job_result *o
         return;
     }
     const bd_study_case *c = &s->cases[job];
+    char dir[PATH_LEN];
+    if (bd_path_join(dir, sizeof dir, s->opt->out_dir, c->name)) {
+        out->status = BD_RUN_BAD_INPUT;
+        snprintf(out->message, sizeof out->message, "case %s: %.300s/%s: path too long",
+                 c->name, s->opt->out_dir, c->name);
+        return;
+    }
     bd_sim *sim = NULL;
     bd_diag diag;
     bd_diag_init(&diag);
@@ -521,8 +528,7 @@ static void run_case(void *ctx, int job, const bd_job_env *env, bd_job_result *o
     if (!built) {
         out->status = BD_RUN_BAD_INPUT;
     } else {
-        char dir[PATH_LEN], msg[1024] = "";
-        snprintf(dir, sizeof dir, "%s/%s", s->opt->out_dir, c->name);
+        char msg[1024] = "";
         bd_run_options ro = {0};
         ro.out_dir = dir;
         ro.progress = env->progress;

@@ -10,6 +10,7 @@
 # - SIGINT stops all workers: exit 130, the table holds the finished cases
 #   (valid CSV, statuses completed or interrupted), no worker left;
 # - a case.json that cannot be written is said, naming the case;
+# - a case whose directory path is too long fails, saying so;
 # - a non-empty directory that holds no study is refused (exit 2) unless
 #   --force.
 set -u
@@ -152,6 +153,22 @@ for j in 1 2; do
         bad "-j $j: case.json not written" "exit $rc: $(head -c 400 "$work/nw.err")"
     fi
 done
+
+# a case's directory path too long for the run's files: the case fails
+# saying so, and nothing is written under a name cut short (it was)
+d200=$(printf 'd%.0s' $(seq 200))
+long="$work/$d200/$d200/$d200/$d200/$d200"
+mkdir -p "$long"
+"$BELTDYN" study "$model" -o "$long/s" --curves linear --times 1 --delays 0 --after 1 -j 1 \
+    >"$work/long.out" 2>"$work/long.err"
+rc=$?
+if [ $rc -eq 1 ] && grep -q "path too long" "$work/long.err" \
+    && [ "$(ls "$long/s" | tr '\n' ' ')" = "study.csv study.json " ] \
+    && grep -Eq "^linear_T1_d0,([^,]*,){4}(bad input|failed)," "$long/s/study.csv"; then
+    ok "a path too long for a case's files: the case fails saying so, nothing cut short"
+else
+    bad "path too long" "exit $rc: $(ls "$long/s" | head -5) $(head -c 300 "$work/long.err")"
+fi
 
 # a non-empty directory that is not a study's
 mkdir -p "$work/other" && echo x >"$work/other/notes.txt"

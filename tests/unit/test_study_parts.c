@@ -5,7 +5,7 @@
  * - the grid (every combination, ends exact) and the Latin hypercube (one
  *   case per stratum of every key, the same for a seed);
  * - Spearman's rank correlation on known data;
- * - a whole file read (base/file.c);
+ * - a whole file read, a path joined (base/file.c);
  * - the runner in worker processes: every job reported once with its
  *   result, a job whose process dies is reported failed and the others
  *   still finish, the longest job is handed out first. */
@@ -352,6 +352,10 @@ static void test_read_file(void)
     remove(path);
     CHECK(bd_read_file(path, &text, &len) == BD_READ_OPEN && text == NULL && errno == ENOENT);
     CHECK(bd_read_file("/tmp", &text, &len) == BD_READ_ERROR && text == NULL && len == 0);
+    /* a path joined whole, or refused: never cut short */
+    char p[8];
+    CHECK(bd_path_join(p, sizeof p, "ab", "cdef") == 0 && strcmp(p, "ab/cdef") == 0);
+    CHECK(bd_path_join(p, sizeof p, "ab", "cdefg") == -1 && p[0] == '\0');
 }
 
 int main(void)
