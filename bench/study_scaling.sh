@@ -14,6 +14,8 @@ beltdyn=$build/beltdyn
 [ -x "$beltdyn" ] || { echo "study_scaling: $beltdyn not built" >&2; exit 2; }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+# same_table DIR_A DIR_B: the tables equal but the wall-clock column (by name)
+. "$root/tests/cli/lib/same_table.sh"
 args=(study "$root/examples/head_drive.yaml" --curves linear,harrison,nordell,s-curve
       --times 4,8 --delays 0 --after 4 --quiet)
 echo "cores: $(nproc); load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
@@ -21,12 +23,17 @@ seconds() { # label command...
     local label=$1 t0 t1
     shift
     t0=$(date +%s.%N)
-    "$@" >"$work/$label.out" 2>&1 || { echo "$label failed:"; tail -5 "$work/$label.out"; exit 1; }
+    # the failure goes to stderr: stdout is the caller's $(...), the time
+    "$@" >"$work/$label.out" 2>&1 || {
+        echo "$label failed:" >&2
+        tail -5 "$work/$label.out" >&2
+        exit 1
+    }
     t1=$(date +%s.%N)
     awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.2f", b - a }'
 }
 same() { # dir: its table without the wall-clock column equals the serial one
-    cmp -s <(cut -d, -f1-20 "$work/j1/study.csv") <(cut -d, -f1-20 "$1/study.csv")
+    same_table "$work/j1" "$1" >&2
 }
 t1=$(seconds j1 "$beltdyn" "${args[@]}" -o "$work/j1" -j 1)
 t2=$(seconds j2 "$beltdyn" "${args[@]}" -o "$work/j2" -j 2)
@@ -36,6 +43,8 @@ echo "8-case study, -j 2: $t2 s ($s2)"
 awk -v a="$t1" -v b="$t2" 'BEGIN { printf "speed-up -j 2 over -j 1: %.2fx\n", a / b }'
 if command -v mpirun >/dev/null; then
     export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+    # two ranks on this machine need no network interfaces (as study_mpi.sh)
+    export OMPI_MCA_btl=self,vader
     tm=$(seconds mpi mpirun --oversubscribe -np 2 "$beltdyn" "${args[@]}" -o "$work/mpi")
     same "$work/mpi" && sm="same table" || sm="TABLE DIFFERS"
     echo "8-case study, mpirun -np 2: $tm s ($sm)"

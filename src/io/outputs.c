@@ -64,7 +64,13 @@ int bd_outputs_open(bd_outputs *o, const bd_sim *sim, const char *dir, int hdf5,
                     size_t errlen)
 {
     memset(o, 0, sizeof *o);
-    snprintf(o->dir, sizeof o->dir, "%s", dir);
+    /* the files' paths (dir/.tension.h5.part the longest) fit with a dir
+     * that fits; a longer one is refused, not cut short */
+    if (snprintf(o->dir, sizeof o->dir, "%s", dir) >= (int)sizeof o->dir) {
+        snprintf(err, errlen, "%.200s...: output directory path too long (at most %d bytes)",
+                 dir, (int)sizeof o->dir - 1);
+        return 1;
+    }
     if (make_dir(dir, err, errlen))
         return 1;
     o->history = open_part(o, BD_OUT_HISTORY, "history.csv", err, errlen);

@@ -1,6 +1,7 @@
 /* beltdyn report DIR: plots of a run and one self-contained report.html */
 #include "beltdyn/report.h"
 
+#include "base/file.h"
 #include "io/csv_read.h"
 #include "io/html.h"
 #include "io/study_report.h"
@@ -39,12 +40,6 @@ static void set_err(char *err, size_t errlen, const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(err, errlen, fmt, ap);
     va_end(ap);
-}
-
-static int join(char *out, const char *dir, const char *name)
-{
-    int n = snprintf(out, PATH_LEN, "%s/%s", dir, name);
-    return n > 0 && n < PATH_LEN ? 0 : -1;
 }
 
 static int file_exists(const char *path)
@@ -304,7 +299,7 @@ static float *raster_field(const double *t, const double *s, const double *T, si
 static int plot_tension_surface(report *r, char *err, size_t errlen)
 {
     char path[PATH_LEN];
-    if (join(path, r->dir, "tension.csv") || !file_exists(path)) return 0;
+    if (bd_path_join(path, sizeof path, r->dir, "tension.csv") || !file_exists(path)) return 0;
     static const char *const want[3] = {"t_s", "s_m", "tension_N"};
     bd_csv csv;
     if (bd_csv_read(path, want, 3, &csv, err, errlen)) return BD_REPORT_EINPUT;
@@ -390,7 +385,7 @@ done:
 static int plot_envelope(report *r, char *err, size_t errlen)
 {
     char path[PATH_LEN];
-    if (join(path, r->dir, "envelope.csv") || !file_exists(path)) return 0;
+    if (bd_path_join(path, sizeof path, r->dir, "envelope.csv") || !file_exists(path)) return 0;
     static const char *const want[3] = {"s_m", "tension_max_N", "tension_min_N"};
     bd_csv csv;
     if (bd_csv_read(path, want, 3, &csv, err, errlen)) return BD_REPORT_EINPUT;
@@ -571,7 +566,7 @@ static void mark_extreme(report *r, bd_plot_axes *a, const char *what, const cha
 static int plot_history(report *r, char *err, size_t errlen)
 {
     char path[PATH_LEN];
-    if (join(path, r->dir, "history.csv") || !file_exists(path)) return 0;
+    if (bd_path_join(path, sizeof path, r->dir, "history.csv") || !file_exists(path)) return 0;
     bd_csv h;
     if (bd_csv_read(path, NULL, 0, &h, err, errlen)) return BD_REPORT_EINPUT;
     int rc = 0;
@@ -929,7 +924,7 @@ static void history_range(const char *dir, const char *column, double *lo, doubl
     const char *want[1] = {column};
     bd_csv c;
     *lo = *hi = NAN;
-    if (join(path, dir, "history.csv") || bd_csv_read(path, want, 1, &c, err, sizeof err)) return;
+    if (bd_path_join(path, sizeof path, dir, "history.csv") || bd_csv_read(path, want, 1, &c, err, sizeof err)) return;
     for (size_t i = 0; i < c.nrows; i++) {
         double v = c.col[0][i];
         if (!isfinite(v)) continue;
@@ -1006,7 +1001,7 @@ static void headline(report *r, bd_strbuf *b)
         char path[PATH_LEN];
         bd_csv hd;
         char err[256];
-        if (!join(path, r->dir, "history.csv") && file_exists(path) &&
+        if (!bd_path_join(path, sizeof path, r->dir, "history.csv") && file_exists(path) &&
             !bd_csv_read_header(path, &hd, err, sizeof err)) {
             for (int j = 0; j < hd.ncols; j++) {
                 double lo, hi;
@@ -1120,7 +1115,7 @@ static int write_html(report *r, char *err, size_t errlen)
     }
     bd_sb_puts(&b, "</main></body></html>\n");
     char path[PATH_LEN];
-    if (join(path, r->dir, "report.html")) {
+    if (bd_path_join(path, sizeof path, r->dir, "report.html")) {
         free(b.p);
         set_err(err, errlen, "%s: path too long", r->dir);
         return BD_REPORT_EOUTPUT;
@@ -1134,40 +1129,37 @@ static int write_html(report *r, char *err, size_t errlen)
 static int read_summary(report *r, char *err, size_t errlen)
 {
     char path[PATH_LEN];
-    if (join(path, r->dir, "summary.json")) {
+    if (bd_path_join(path, sizeof path, r->dir, "summary.json")) {
         set_err(err, errlen, "%s: path too long", r->dir);
         return BD_REPORT_EINPUT;
     }
-    FILE *fp = fopen(path, "rb");
-    if (!fp) {
+    char *text;
+    size_t len;
+    int rd = bd_read_file(path, &text, &len);
+    if (rd == BD_READ_OPEN) {
         set_err(err, errlen, "%s: %s (not the output directory of beltdyn run?)", path,
                 strerror(errno));
         return BD_REPORT_EINPUT;
     }
-    bd_strbuf b = {0};
-    char chunk[65536];
-    size_t got;
-    while ((got = fread(chunk, 1, sizeof chunk, fp)) > 0) bd_sb_put(&b, chunk, got);
-    fclose(fp);
-    if (b.oom || !b.p) {
-        free(b.p);
+    if (rd != BD_READ_OK || len == 0) {
+        free(text);
         set_err(err, errlen, "%s: empty or unreadable", path);
         return BD_REPORT_EINPUT;
     }
-    r->summary = cJSON_ParseWithLength(b.p, b.n);
+    r->summary = cJSON_ParseWithLength(text, len);
     if (!r->summary || !cJSON_IsObject(r->summary)) {
         /* the line of the parse error */
         const char *at = cJSON_GetErrorPtr();
         int line = 1;
-        if (at && at >= b.p && at <= b.p + b.n)
-            for (const char *q = b.p; q < at; q++) line += *q == '\n';
+        if (at && at >= text && at <= text + len)
+            for (const char *q = text; q < at; q++) line += *q == '\n';
         set_err(err, errlen, "%s:%d: not a JSON object", path, line);
         cJSON_Delete(r->summary);
         r->summary = NULL;
-        free(b.p);
+        free(text);
         return BD_REPORT_EINPUT;
     }
-    free(b.p);
+    free(text);
 
     const cJSON *model = cJSON_GetObjectItemCaseSensitive(r->summary, "model");
     if (cJSON_IsString(model) && model->valuestring[0])
@@ -1220,8 +1212,8 @@ int bd_report_write(const char *dir, char *err, size_t errlen)
     }
     /* a start study's directory (beltdyn study): its own comparison report */
     char study_csv[PATH_LEN], summary[PATH_LEN];
-    if (join(study_csv, dir, "study.csv") == 0 && file_exists(study_csv) &&
-        (join(summary, dir, "summary.json") != 0 || !file_exists(summary)))
+    if (bd_path_join(study_csv, sizeof study_csv, dir, "study.csv") == 0 && file_exists(study_csv) &&
+        (bd_path_join(summary, sizeof summary, dir, "summary.json") != 0 || !file_exists(summary)))
         return bd_study_report_write(dir, err, errlen);
     r = calloc(1, sizeof *r);
     if (!r) {
@@ -1230,7 +1222,7 @@ int bd_report_write(const char *dir, char *err, size_t errlen)
     }
     r->dir = dir;
     if ((rc = read_summary(r, err, errlen))) goto done;
-    if (join(r->plots, dir, "plots")) {
+    if (bd_path_join(r->plots, sizeof r->plots, dir, "plots")) {
         set_err(err, errlen, "%s: path too long", dir);
         rc = BD_REPORT_EINPUT;
         goto done;

@@ -18,6 +18,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "base/file.h"
 #include "beltdyn/report.h"
 #include "io/csv_read.h"
 #include "io/html.h"
@@ -69,28 +70,16 @@ static double jnum(const cJSON *o, const char *key)
     return cJSON_IsNumber(v) ? v->valuedouble : NAN;
 }
 
-static char *read_text(const char *path)
-{
-    FILE *fp = fopen(path, "rb");
-    if (!fp) return NULL;
-    bd_strbuf b = {0};
-    char chunk[65536];
-    size_t got;
-    while ((got = fread(chunk, 1, sizeof chunk, fp)) > 0) bd_sb_put(&b, chunk, got);
-    fclose(fp);
-    if (b.oom) {
-        free(b.p);
-        return NULL;
-    }
-    return b.p;
-}
-
 static int read_study(study *s, char *err, size_t errlen)
 {
     char path[PATH_LEN];
-    snprintf(path, sizeof path, "%s/study.json", s->dir);
-    char *text = read_text(path);
-    if (!text) {
+    if (bd_path_join(path, sizeof path, s->dir, "study.json")) {
+        snprintf(err, errlen, "%s: path too long", s->dir);
+        return BD_REPORT_EINPUT;
+    }
+    char *text;
+    size_t len;
+    if (bd_read_file(path, &text, &len) != BD_READ_OK) {
         snprintf(err, errlen, "%s: %s (study.csv without study.json?)", path, strerror(errno));
         return BD_REPORT_EINPUT;
     }
@@ -128,14 +117,22 @@ static int read_study(study *s, char *err, size_t errlen)
     return 0;
 }
 
+/* DIR/<case i>/history.csv; 0, or -1 when the path is too long */
+static int case_history(char *path, size_t cap, const study *s, int i)
+{
+    char dir[PATH_LEN];
+    return bd_path_join(dir, sizeof dir, s->dir, s->c[i].name)
+           || bd_path_join(path, cap, dir, "history.csv") ? -1 : 0;
+}
+
 /* the probe column with the highest tension in the first case's history */
 static void choose_probe(study *s)
 {
     for (int i = 0; i < s->n && !s->probe[0]; i++) {
         char path[PATH_LEN], err[256];
-        snprintf(path, sizeof path, "%s/%s/history.csv", s->dir, s->c[i].name);
         bd_csv h;
-        if (bd_csv_read(path, NULL, 0, &h, err, sizeof err)) continue;
+        if (case_history(path, sizeof path, s, i) || bd_csv_read(path, NULL, 0, &h, err, sizeof err))
+            continue;
         double best = -INFINITY;
         for (int k = 0; k < h.ncols; k++) {
             size_t len = strlen(h.names[k]);
@@ -156,8 +153,8 @@ static void read_histories(study *s)
     const char *want[2] = {"t_s", s->probe};
     for (int i = 0; i < s->n; i++) {
         char path[PATH_LEN], err[256];
-        snprintf(path, sizeof path, "%s/%s/history.csv", s->dir, s->c[i].name);
-        if (bd_csv_read(path, want, 2, &s->c[i].hist, err, sizeof err))
+        if (case_history(path, sizeof path, s, i)
+            || bd_csv_read(path, want, 2, &s->c[i].hist, err, sizeof err))
             memset(&s->c[i].hist, 0, sizeof s->c[i].hist);
         for (size_t r = 0; r < s->c[i].hist.nrows; r++) s->c[i].hist.col[1][r] /= 1e3;
     }
@@ -321,7 +318,11 @@ static int write_html(study *s, const char *const *plots, const char *const *cap
         }
     bd_sb_puts(&b, "</main></body></html>\n");
     char path[PATH_LEN];
-    snprintf(path, sizeof path, "%s/report.html", s->dir);
+    if (bd_path_join(path, sizeof path, s->dir, "report.html")) {
+        free(b.p);
+        snprintf(err, errlen, "%s: path too long", s->dir);
+        return BD_REPORT_EOUTPUT;
+    }
     return bd_html_write(&b, path, err, errlen) ? BD_REPORT_EOUTPUT : 0;
 }
 
@@ -340,7 +341,11 @@ int bd_study_report_write(const char *dir, char *err, size_t errlen)
         rc = bd_sweep_report_write(dir, s->json, err, errlen);
         goto done;
     }
-    snprintf(s->plots, sizeof s->plots, "%s/plots", dir);
+    if (bd_path_join(s->plots, sizeof s->plots, dir, "plots")) {
+        snprintf(err, errlen, "%s: path too long", dir);
+        rc = BD_REPORT_EOUTPUT;
+        goto done;
+    }
     if (mkdir(s->plots, 0777) != 0 && errno != EEXIST) {
         snprintf(err, errlen, "%s: %s", s->plots, strerror(errno));
         rc = BD_REPORT_EOUTPUT;

@@ -22,6 +22,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "base/file.h"
 #include "beltdyn/report.h"
 #include "io/html.h"
 #include "io/plot.h"
@@ -274,7 +275,10 @@ static int plot_sensitivity(sweep *s, char *err, size_t errlen)
 static int write_ranking(sweep *s, char *err, size_t errlen)
 {
     char path[PATH_LEN];
-    snprintf(path, sizeof path, "%s/sensitivity.csv", s->dir);
+    if (bd_path_join(path, sizeof path, s->dir, "sensitivity.csv")) {
+        snprintf(err, errlen, "%s: path too long", s->dir);
+        return BD_REPORT_EOUTPUT;
+    }
     bd_strbuf b = {0};
     bd_sb_puts(&b, "output,rank,key,spearman_rho\n");
     for (int q = 0; q < 3; q++) {
@@ -401,7 +405,11 @@ static int write_html(sweep *s, char *err, size_t errlen)
     html_cases(s, &b);
     bd_sb_puts(&b, "</main></body></html>\n");
     char path[PATH_LEN];
-    snprintf(path, sizeof path, "%s/report.html", s->dir);
+    if (bd_path_join(path, sizeof path, s->dir, "report.html")) {
+        free(b.p);
+        snprintf(err, errlen, "%s: path too long", s->dir);
+        return BD_REPORT_EOUTPUT;
+    }
     return bd_html_write(&b, path, err, errlen) ? BD_REPORT_EOUTPUT : 0;
 }
 
@@ -416,8 +424,10 @@ int bd_sweep_report_write(const char *dir, const cJSON *root, char *err, size_t 
     s->root = root;
     int rc = read_sweep(s, err, errlen);
     if (rc == 0) {
-        snprintf(s->plots, sizeof s->plots, "%s/plots", dir);
-        if (mkdir(s->plots, 0777) != 0 && errno != EEXIST) {
+        if (bd_path_join(s->plots, sizeof s->plots, dir, "plots")) {
+            snprintf(err, errlen, "%s: path too long", dir);
+            rc = BD_REPORT_EOUTPUT;
+        } else if (mkdir(s->plots, 0777) != 0 && errno != EEXIST) {
             snprintf(err, errlen, "%s: %s", s->plots, strerror(errno));
             rc = BD_REPORT_EOUTPUT;
         }

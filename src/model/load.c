@@ -39,6 +39,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "base/constants.h"
+#include "base/file.h"
 
 #define PATH_LEN 256
 #define MAX_FIELDS 16
@@ -1039,37 +1040,20 @@ int bd_model_load_string(const char *text, size_t len, const char *path, bd_mode
 
 int bd_model_load(const char *path, bd_model_def *out, bd_diag *diag)
 {
-    FILE *fp = fopen(path, "rb");
-    char *text = NULL;
-    size_t len = 0, cap = 0;
+    char *text;
+    size_t len;
     int rc;
     bd_model_def_init(out);
     snprintf(out->source, sizeof out->source, "%s", path);
-    if (!fp) {
-        bd_diag_error(diag, path, (bd_mark){0, 0}, "cannot open model file: %s", strerror(errno));
-        return 1;
-    }
-    for (;;) {
-        if (len == cap) {
-            char *grown = realloc(text, cap = cap ? 2 * cap : 65536);
-            if (!grown) {
-                free(text);
-                fclose(fp);
-                bd_diag_error(diag, path, (bd_mark){0, 0}, "out of memory reading the model file");
-                return 1;
-            }
-            text = grown;
-        }
-        size_t got_n = fread(text + len, 1, cap - len, fp);
-        len += got_n;
-        if (got_n == 0)
-            break;
-    }
-    rc = ferror(fp);
-    fclose(fp);
-    if (rc) {
-        free(text);
-        bd_diag_error(diag, path, (bd_mark){0, 0}, "cannot read model file");
+    rc = bd_read_file(path, &text, &len);
+    if (rc != BD_READ_OK) {
+        const char *why = strerror(errno);
+        if (rc == BD_READ_OPEN)
+            bd_diag_error(diag, path, (bd_mark){0, 0}, "cannot open model file: %s", why);
+        else if (rc == BD_READ_NOMEM)
+            bd_diag_error(diag, path, (bd_mark){0, 0}, "out of memory reading the model file");
+        else
+            bd_diag_error(diag, path, (bd_mark){0, 0}, "cannot read model file: %s", why);
         return 1;
     }
     rc = bd_model_load_string(text, len, path, out, diag);

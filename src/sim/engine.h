@@ -24,6 +24,12 @@ int bd_bounds_check(bd_sim *sim);
  * when refused (the error in diag; a long run gets a warning there); after
  * it, the nodes and the step actually made. Bytes and seconds as text. */
 int bd_cost_estimate(bd_sim *sim, bd_diag *diag);
+/* the same estimate of a definition over `duration` s, from its path and
+ * its formulation's `estimate`, without a simulation: counts, step, bytes,
+ * seconds (not the memory available; the study orders its cases by it).
+ * 0, or -1 when the formulation or the path cannot be had (loop: the
+ * path's length, m, or NULL) */
+int bd_cost_from_def(const bd_model_def *def, double duration, bd_cost *c, double *loop);
 void bd_cost_update(bd_sim *sim);
 void bd_cost_bytes_text(double bytes, char *buf, size_t len);
 void bd_cost_time_text(double s, char *buf, size_t len);

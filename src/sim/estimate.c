@@ -113,21 +113,21 @@ static void what_it_makes(const bd_model_def *def, const bd_cost *c, double loop
              def->belt.element_length > 0.0 ? "" : " (the default)", loop, c->nodes, idlers);
 }
 
-int bd_cost_estimate(bd_sim *sim, bd_diag *diag)
+int bd_cost_from_def(const bd_model_def *def, double duration, bd_cost *c, double *loop)
 {
-    const bd_model_def *def = sim->model->def;
+    const bd_belt_ops *ops = bd_belt_ops_for(def->belt.formulation);
     bd_path path;
     bd_diag quiet;
     bd_diag_init(&quiet);
-    int bad = bd_path_build(def, &path, &quiet);
+    int bad = !ops || bd_path_build(def, &path, &quiet);
     bd_diag_free(&quiet);
     if (bad)
-        return 0;   /* the build says what is wrong with the path */
+        return -1;
     bd_belt_estimate be;
-    sim->model->belt->estimate(def, &path, &be);
-    double loop = path.length;
+    ops->estimate(def, &path, &be);
+    if (loop)
+        *loop = path.length;
     bd_path_free(&path);
-    bd_cost *c = &sim->own->cost;
     c->element_length = be.element_length;
     c->nodes = be.nodes;
     c->idlers = be.idlers;
@@ -136,7 +136,17 @@ int bd_cost_estimate(bd_sim *sim, bd_diag *diag)
     c->rate = be.rate;
     c->dt = def->simulation.time_step > 0.0 ? def->simulation.time_step
                                             : BD_TIME_STEP_SAFETY * be.stable_step;
-    complete(c, def->simulation.duration);
+    complete(c, duration);
+    return 0;
+}
+
+int bd_cost_estimate(bd_sim *sim, bd_diag *diag)
+{
+    const bd_model_def *def = sim->model->def;
+    bd_cost *c = &sim->own->cost;
+    double loop = 0.0;
+    if (bd_cost_from_def(def, def->simulation.duration, c, &loop) != 0)
+        return 0;   /* the build says what is wrong with the path */
     available_memory(c);
     char makes[256], mem[32], avail[32], phys[32], time[32];
     what_it_makes(def, c, loop, makes, sizeof makes);

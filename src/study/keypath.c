@@ -324,6 +324,12 @@ char *bd_key_apply(const char *text, size_t len, const bd_key_site *sites, const
     size_t o = 0, from = 0;
     for (int k = 0; k < n; k++) {
         const bd_key_site *s = &sites[idx[k]];
+        /* two sites on one number (or past the text) would copy from
+         * behind where the last one ended: refused, not wrapped around */
+        if (s->at < from || s->at > len || s->len > len - s->at) {
+            free(out);
+            return NULL;
+        }
         memcpy(out + o, text + from, s->at - from);
         o += s->at - from;
         o += (size_t)snprintf(out + o, cap - o, "%s%.17g%s", s->before, values[idx[k]], s->after);

@@ -29,7 +29,7 @@ int bd_key_find(const char *text, size_t len, const char *key, bd_key_site *site
 /* the text with n sites set to values (each written as %.17g: the same
  * double when read back). Sites must not overlap; two added at one place
  * must add different keys. malloc'ed (*outlen bytes, NUL-terminated), NULL
- * out of memory */
+ * out of memory or when two sites are one number (or overlap) */
 char *bd_key_apply(const char *text, size_t len, const bd_key_site *sites, const double *values,
                    int n, size_t *outlen);
 

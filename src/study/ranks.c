@@ -24,11 +24,6 @@ int bd_ranks_launched(void)
 
 static int started;
 
-int bd_ranks_built(void)
-{
-    return 1;
-}
-
 int bd_ranks_begin(int *rank, int *size, char *err, size_t errlen)
 {
     *rank = 0;
@@ -97,11 +92,6 @@ int bd_ranks_recv(int *src, void *buf, int cap, int *len, int timeout_ms)
 }
 
 #else
-
-int bd_ranks_built(void)
-{
-    return 0;
-}
 
 int bd_ranks_begin(int *rank, int *size, char *err, size_t errlen)
 {

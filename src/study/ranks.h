@@ -8,9 +8,6 @@
 
 #include <stddef.h>
 
-/* 1 when the build has MPI */
-int bd_ranks_built(void);
-
 /* 1 when an MPI launcher started this process (its environment says so:
  * OMPI_COMM_WORLD_SIZE, PMIX_RANK or PMI_RANK) */
 int bd_ranks_launched(void);

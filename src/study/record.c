@@ -16,6 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/file.h"
 #include "io/html.h"
 
 #define PATH_LEN 2048
@@ -59,9 +60,12 @@ static void definition(const bd_study *s, const bd_study_case *c, char *buf, siz
                                   c->values[k]);
 }
 
-static void path_of(const bd_study *s, const bd_study_case *c, char *buf, size_t len)
+/* out_dir/<case>/case.json; 0, or -1 when the path is too long */
+static int path_of(const bd_study *s, const bd_study_case *c, char *buf, size_t len)
 {
-    snprintf(buf, len, "%s/%s/case.json", s->opt->out_dir, c->name);
+    char dir[PATH_LEN];
+    return bd_path_join(dir, sizeof dir, s->opt->out_dir, c->name)
+           || bd_path_join(buf, len, dir, "case.json") ? -1 : 0;
 }
 
 /* a double as JSON that reads back the same: 17 digits, or a word */
@@ -99,7 +103,8 @@ static const char *hash_text(const bd_study *s)
     return hex_hash;
 }
 
-int bd_study_record_write(const bd_study *s, const bd_study_case *c, const bd_job_result *r)
+int bd_study_record_write(const bd_study *s, const bd_study_case *c, const bd_job_result *r,
+                          char *err, size_t errlen)
 {
     if (r->status != BD_RUN_OK && r->status != BD_RUN_FAILED)
         return 0;   /* interrupted or not built: it runs again */
@@ -127,40 +132,31 @@ int bd_study_record_write(const bd_study *s, const bd_study_case *c, const bd_jo
     }
     char *text = cJSON_Print(o);
     cJSON_Delete(o);
-    if (!text)
+    if (!text) {
+        snprintf(err, errlen, "out of memory");
         return -1;
+    }
     bd_strbuf b = {0};
     bd_sb_puts(&b, text);
     bd_sb_puts(&b, "\n");
     free(text);
-    char err[PATH_LEN + 64];
-    path_of(s, c, path, sizeof path);
-    return bd_html_write(&b, path, err, sizeof err) ? -1 : 0;
+    if (path_of(s, c, path, sizeof path)) {
+        free(b.p);
+        snprintf(err, errlen, "%s/%s: path too long", s->opt->out_dir, c->name);
+        return -1;
+    }
+    return bd_html_write(&b, path, err, errlen) ? -1 : 0;
 }
 
 int bd_study_record_read(const bd_study *s, bd_study_case *c)
 {
     char path[PATH_LEN], def[2048];
-    path_of(s, c, path, sizeof path);
-    FILE *f = fopen(path, "rb");
-    if (!f)
+    if (path_of(s, c, path, sizeof path))
         return 0;
-    char *text = NULL;
-    size_t len = 0;
-    char chunk[4096];
-    size_t got;
-    while ((got = fread(chunk, 1, sizeof chunk, f)) > 0) {
-        char *more = realloc(text, len + got + 1);
-        if (!more)
-            break;
-        text = more;
-        memcpy(text + len, chunk, got);
-        len += got;
-    }
-    fclose(f);
-    if (!text)
-        return 0;
-    text[len] = '\0';
+    char *text;
+    size_t len;
+    if (bd_read_file(path, &text, &len) != BD_READ_OK)
+        return 0;   /* none, or unreadable: the case runs again */
     cJSON *o = cJSON_Parse(text);
     free(text);
     definition(s, c, def, sizeof def);
@@ -206,6 +202,6 @@ int bd_study_record_read(const bd_study *s, bd_study_case *c)
 void bd_study_record_remove(const bd_study *s, const bd_study_case *c)
 {
     char path[PATH_LEN];
-    path_of(s, c, path, sizeof path);
-    remove(path);
+    if (path_of(s, c, path, sizeof path) == 0)
+        remove(path);
 }

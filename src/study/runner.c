@@ -255,6 +255,8 @@ typedef struct coord {
     struct pollfd *pfd;  /* [nw] scratch of service() */
     int *pidx;           /* [nw] the worker of each pfd */
     int nw, respawns;
+    int spawn_failed;    /* workers that could not be started */
+    char spawn_why[96];  /* the first one's reason */
     int local_job;       /* running in this process, or -1 */
     int stopping;        /* interrupted: no more jobs handed out */
     double t0, last_shown;
@@ -511,22 +513,44 @@ static void run_local(coord *c, int job)
     finish_job(c, &res);
 }
 
-/* a worker process in slot k */
+/* a worker that could not start: said once (the others run the jobs) */
+static void spawn_failed(coord *c, const char *what, int err)
+{
+    if (c->spawn_failed++)
+        return;
+    snprintf(c->spawn_why, sizeof c->spawn_why, "%s: %s", what, strerror(err));
+    if (!c->r->message)
+        return;
+    char line[256];
+    snprintf(line, sizeof line, "warning: a worker process could not be started (%s); the "
+             "cases run on the workers that did start", c->spawn_why);
+    c->r->message(line, c->r->message_ctx);
+}
+
+/* a worker process in slot k; 0, or -1 with the slot left idle and dead
+ * (not busy: a slot that never started runs no job) */
 static int spawn(coord *c, int k)
 {
+    c->w[k] = (remote){-1, 0, 0, 0, -1, -1};
     int task[2], result[2];
-    if (pipe(task) != 0)
+    if (pipe(task) != 0) {
+        spawn_failed(c, "pipe", errno);
         return -1;
+    }
     if (pipe(result) != 0) {
+        int e = errno;
         close(task[0]);
         close(task[1]);
+        spawn_failed(c, "pipe", e);
         return -1;
     }
     fflush(NULL);   /* nothing buffered is written twice */
     pid_t parent = getpid();
     pid_t pid = fork();
     if (pid < 0) {
+        int e = errno;
         close(task[0]), close(task[1]), close(result[0]), close(result[1]);
+        spawn_failed(c, "fork", e);
         return -1;
     }
     if (pid == 0) {
@@ -591,8 +615,9 @@ static int coordinate(coord *c)
             break;
         if (!local && alive == 0 && c->next < c->total && !c->stopping) {
             /* every worker is gone and none could be started again */
-            snprintf(c->err, c->errlen, "no worker process could be started for %d cases",
-                     c->total - c->next);
+            snprintf(c->err, c->errlen, "no worker process could be started for %d cases%s%s%s",
+                     c->total - c->next, c->spawn_why[0] ? " (" : "", c->spawn_why,
+                     c->spawn_why[0] ? ")" : "");
             c->broken = 1;
             break;
         }
@@ -624,7 +649,11 @@ int bd_runner_run(const bd_runner *r, char *err, size_t errlen)
     c.t0 = c.last_shown = bd_wall_seconds();
     c.order = malloc((size_t)(r->count > 0 ? r->count : 1) * sizeof *c.order);
     c.frac = calloc((size_t)(r->count > 0 ? r->count : 1), sizeof *c.frac);
-    int nw = r->ranks > 1 ? r->ranks - 1 : (r->workers > 1 ? r->workers : 0);
+    /* no worker processes under an MPI launcher, whatever `workers` says:
+     * Open MPI does not support fork after MPI_Init, and a world of one
+     * rank runs its jobs here */
+    int nw = r->ranks > 1 ? r->ranks - 1
+                          : (r->workers > 1 && !bd_ranks_launched() ? r->workers : 0);
     c.w = calloc((size_t)(nw > 0 ? nw : 1), sizeof *c.w);
     c.pfd = calloc((size_t)(nw > 0 ? nw : 1), sizeof *c.pfd);
     c.pidx = calloc((size_t)(nw > 0 ? nw : 1), sizeof *c.pidx);
@@ -656,8 +685,7 @@ int bd_runner_run(const bd_runner *r, char *err, size_t errlen)
         c.mode = MODE_FORK;
         c.nw = nw < c.total ? nw : c.total;
         for (int k = 0; k < c.nw; k++)
-            if (spawn(&c, k) != 0)
-                c.w[k].alive = 0;
+            spawn(&c, k);   /* one that fails is left idle; the others run the jobs */
         status = coordinate(&c);
         sigaction(SIGPIPE, &old, NULL);
     } else {

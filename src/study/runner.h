@@ -55,7 +55,8 @@ typedef struct bd_runner {
     const double *cost;          /* [count] estimated cost, any unit, or NULL */
     const unsigned char *todo;   /* [count] 1 to run it, or NULL: all */
     int workers;                 /* worker processes on this machine; 1: the jobs run
-                                    in this process. Not used across ranks */
+                                    in this process. Not used under an MPI launcher
+                                    (one rank: the jobs run in this process) */
     int rank, ranks;             /* bd_ranks_begin's; ranks > 1: one worker per rank,
                                     rank 0 hands out, gathers and runs jobs too */
     bd_job_fn run;

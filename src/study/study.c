@@ -30,6 +30,7 @@
 #include <dirent.h>
 
 #include "base/clock.h"
+#include "base/file.h"
 #include "study/ranks.h"
 #include "study/study_case.h"
 #include "study/sweep.h"
@@ -129,40 +130,6 @@ static uint64_t fnv1a(const char *p, size_t n)
         h *= 0x100000001b3ull;
     }
     return h;
-}
-
-static int read_file(const char *path, char **text, size_t *len)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return -1;
-    char *buf = NULL;
-    size_t n = 0, cap = 0;
-    for (;;) {
-        if (n == cap) {
-            char *more = realloc(buf, (cap = cap ? 2 * cap : 65536) + 1);
-            if (!more) {
-                free(buf);
-                fclose(f);
-                return -1;
-            }
-            buf = more;
-        }
-        size_t got = fread(buf + n, 1, cap - n, f);
-        n += got;
-        if (got == 0)
-            break;
-    }
-    int bad = ferror(f);
-    fclose(f);
-    if (bad) {
-        free(buf);
-        return -1;
-    }
-    buf[n] = '\0';
-    *text = buf;
-    *len = n;
-    return 0;
 }
 
 /* the model's first speed drive, or NULL */
@@ -284,6 +251,15 @@ static int load_varied(study_run *R, const bd_key_site *sites, const double *v, 
     return bad;
 }
 
+/* the line (from 1) of byte `at` of the text */
+static int line_at(const char *text, size_t at)
+{
+    int line = 1;
+    for (size_t i = 0; i < at; i++)
+        line += text[i] == '\n';
+    return line;
+}
+
 static int make_sweep_cases(study_run *R, char *err, size_t errlen)
 {
     bd_study *s = &R->s;
@@ -301,6 +277,15 @@ static int make_sweep_cases(study_run *R, char *err, size_t errlen)
             snprintf(err, errlen, "%s %s", opt_name, msg);
             return BD_RUN_BAD_INPUT;
         }
+        /* one number under two spellings (pulleys.head.radius and
+         * pulleys.0.radius, idlers[0].x and idlers.0.x) */
+        for (int i = 0; i < k; i++)
+            if (s->sites[i].len > 0 && s->sites[k].len > 0 && s->sites[i].at == s->sites[k].at) {
+                snprintf(err, errlen, "%s %s: names the same number as %s %s (line %d of the "
+                         "model file): vary it once", opt_name, s->keys[k].key, opt_name,
+                         s->keys[i].key, line_at(s->text, s->sites[k].at));
+                return BD_RUN_BAD_INPUT;
+            }
         for (int i = 0; i < k; i++)
             if (s->sites[i].len == 0 && s->sites[k].len == 0 && s->sites[i].at == s->sites[k].at
                 && strcmp(s->sites[i].adds, s->sites[k].adds) == 0) {
@@ -402,7 +387,7 @@ static int setup(study_run *R, char *err, size_t errlen)
     s->kind = !sweep ? BD_STUDY_START : (o->nvary > 0 ? BD_STUDY_GRID : BD_STUDY_SAMPLE);
     s->nkeys = s->kind == BD_STUDY_GRID ? o->nvary : (s->kind == BD_STUDY_SAMPLE ? o->nrange : 0);
     s->keys = s->kind == BD_STUDY_GRID ? o->vary : o->range;
-    if (read_file(o->model_path, &s->text, &s->text_len) != 0) {
+    if (bd_read_file(o->model_path, &s->text, &s->text_len) != BD_READ_OK) {
         snprintf(err, errlen, "%s: cannot read the model file: %s", o->model_path,
                  strerror(errno));
         return BD_RUN_BAD_INPUT;
@@ -519,6 +504,13 @@ static void run_case(void *ctx, int job, const bd_job_env *env, bd_job_result *o
         return;
     }
     const bd_study_case *c = &s->cases[job];
+    char dir[PATH_LEN];
+    if (bd_path_join(dir, sizeof dir, s->opt->out_dir, c->name)) {
+        out->status = BD_RUN_BAD_INPUT;
+        snprintf(out->message, sizeof out->message, "case %s: %.300s/%s: path too long",
+                 c->name, s->opt->out_dir, c->name);
+        return;
+    }
     bd_sim *sim = NULL;
     bd_diag diag;
     bd_diag_init(&diag);
@@ -536,8 +528,7 @@ static void run_case(void *ctx, int job, const bd_job_env *env, bd_job_result *o
     if (!built) {
         out->status = BD_RUN_BAD_INPUT;
     } else {
-        char dir[PATH_LEN], msg[1024] = "";
-        snprintf(dir, sizeof dir, "%s/%s", s->opt->out_dir, c->name);
+        char msg[1024] = "";
         bd_run_options ro = {0};
         ro.out_dir = dir;
         ro.progress = env->progress;
@@ -556,7 +547,14 @@ static void run_case(void *ctx, int job, const bd_job_env *env, bd_job_result *o
     out->wall_s = bd_wall_seconds() - w0;
     bd_sim_free(sim);
     bd_diag_free(&diag);
-    bd_study_record_write(s, c, out);
+    /* a result that is not on disk is run again by --resume: say so */
+    char werr[PATH_LEN + 64];
+    if (bd_study_record_write(s, c, out, werr, sizeof werr) != 0 && env->message) {
+        char line[PATH_LEN + 256];
+        snprintf(line, sizeof line, "case %s: warning: cannot write case.json (--resume "
+                 "runs it again): %s", c->name, werr);
+        env->message(line, env->message_ctx);
+    }
 }
 
 /* ---- gathering ---- */
@@ -701,17 +699,22 @@ int bd_study_run(const bd_study_options *opt, FILE *table, char *err, size_t err
         R->setup_failed = 1;
         snprintf(R->setup_err, sizeof R->setup_err, "%s", err);
     }
-    int workers = opt->jobs > 0 ? opt->jobs : bd_runner_cores();
+    /* under an MPI launcher one worker per rank, -j not used: a world of
+     * one rank runs the cases here, one after another (Open MPI does not
+     * support fork after MPI_Init; the runner keeps to it too) */
+    int launched = bd_ranks_launched();
+    int workers = launched ? 1 : opt->jobs > 0 ? opt->jobs : bd_runner_cores();
     if (R->table && status == BD_RUN_OK) {
-        int w = R->ranks > 1 ? R->ranks : (workers < R->to_run ? workers : R->to_run);
+        int w = launched ? R->ranks : (workers < R->to_run ? workers : R->to_run);
         fprintf(R->table, "%s of %s: %d cases in %s/", R->s.kind == BD_STUDY_START
                 ? "start study" : (R->s.kind == BD_STUDY_GRID ? "sweep (grid)"
                                    : "sweep (Latin hypercube)"), R->s.def.name, R->s.n,
                 opt->out_dir);
         if (R->skipped > 0)
             fprintf(R->table, " (%d complete before, %d to run)", R->skipped, R->to_run);
-        fprintf(R->table, ", %d %s\n", w > 0 ? w : 1, R->ranks > 1 ? "MPI ranks"
-                : (w > 1 ? "worker processes" : "process"));
+        fprintf(R->table, ", %d %s\n", w > 0 ? w : 1,
+                launched ? (w > 1 ? "MPI ranks" : "MPI rank")
+                         : (w > 1 ? "worker processes" : "process"));
         bd_study_table_header(&R->s, R->table);
         fflush(R->table);
     }

@@ -62,9 +62,11 @@ void bd_study_column_names(const bd_study *s, char *buf, size_t len);
 const char *bd_study_status_word(int status);
 
 /* record.c: out_dir/<case>/case.json, a case's result, written (by the
- * worker that ran it) whole under a temporary name and renamed; read back
- * by --resume only when it is the same case of the same model */
-int bd_study_record_write(const bd_study *s, const bd_study_case *c, const bd_job_result *r);
+ * worker that ran it) whole under a temporary name and renamed (0, or -1
+ * with the reason in err); read back by --resume only when it is the same
+ * case of the same model */
+int bd_study_record_write(const bd_study *s, const bd_study_case *c, const bd_job_result *r,
+                          char *err, size_t errlen);
 int bd_study_record_read(const bd_study *s, bd_study_case *c);
 void bd_study_record_remove(const bd_study *s, const bd_study_case *c);
 

@@ -74,7 +74,9 @@ int bd_study_parse_range(const char *text, int with_n, bd_study_range *out, char
     return 0;
 }
 
-long bd_sweep_grid_count(const bd_study_range *keys, int nkeys)
+/* the grid's number of cases (the product of the keys' n), -1 above
+ * BD_SWEEP_MAX_CASES */
+static long grid_count(const bd_study_range *keys, int nkeys)
 {
     long n = 1;
     for (int k = 0; k < nkeys; k++) {
@@ -97,7 +99,7 @@ static double grid_point(const bd_study_range *r, int i)
 
 double *bd_sweep_grid(const bd_study_range *keys, int nkeys, int *ncases)
 {
-    long n = bd_sweep_grid_count(keys, nkeys);
+    long n = grid_count(keys, nkeys);
     if (n < 1 || nkeys < 1)
         return NULL;
     double *v = malloc((size_t)n * (size_t)nkeys * sizeof *v);

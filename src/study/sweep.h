@@ -7,10 +7,6 @@
 
 #define BD_SWEEP_MAX_CASES 100000
 
-/* the grid's number of cases (the product of the keys' n), -1 above
- * BD_SWEEP_MAX_CASES */
-long bd_sweep_grid_count(const bd_study_range *keys, int nkeys);
-
 /* the grid: every combination, the first key slowest, the last fastest;
  * malloc'ed [*ncases][nkeys], NULL out of memory or too many */
 double *bd_sweep_grid(const bd_study_range *keys, int nkeys, int *ncases);

@@ -15,6 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/file.h"
 #include "base/json_util.h"
 #include "io/html.h"
 
@@ -284,12 +285,18 @@ int bd_study_write_tables(const bd_study *s, char *err, size_t errlen)
     }
     free(text);
     /* each whole through a temporary name and a rename */
-    snprintf(path, sizeof path, "%s/study.csv", s->opt->out_dir);
+    if (bd_path_join(path, sizeof path, s->opt->out_dir, "study.json")) {
+        free(csv.p);
+        free(json.p);
+        snprintf(err, errlen, "%s: path too long", s->opt->out_dir);
+        return 1;
+    }
+    bd_path_join(path, sizeof path, s->opt->out_dir, "study.csv");   /* shorter: fits */
     if (bd_html_write(&csv, path, err, errlen)) {
         free(json.p);
         return 1;
     }
-    snprintf(path, sizeof path, "%s/study.json", s->opt->out_dir);
+    bd_path_join(path, sizeof path, s->opt->out_dir, "study.json");
     return bd_html_write(&json, path, err, errlen) ? 1 : 0;
 }
 

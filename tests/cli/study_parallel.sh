@@ -2,11 +2,15 @@
 # `beltdyn study` in parallel (issue 16) on a 6-case start study of a small
 # conveyor (3 curves x 2 delays, each ~5 s simulated):
 # - -j 2 writes the serial (-j 1) table, bit for bit but the wall clock;
+# - under mpirun -np 1 (when there is one) the cases run in the one rank,
+#   no workers forked, and write the serial table;
 # - a study killed (-9) after some cases completed leaves no worker
 #   behind; --resume keeps the completed cases (their case.json untouched)
 #   and the final table is the serial one;
 # - SIGINT stops all workers: exit 130, the table holds the finished cases
 #   (valid CSV, statuses completed or interrupted), no worker left;
+# - a case.json that cannot be written is said, naming the case;
+# - a case whose directory path is too long fails, saying so;
 # - a non-empty directory that holds no study is refused (exit 2) unless
 #   --force.
 set -u
@@ -54,6 +58,26 @@ if grep -q "2 worker processes" "$work/j2.out"; then ok "-j 2 ran 2 worker proce
 else bad "-j 2" "did not say it ran 2 worker processes: $(head -1 "$work/j2.out")"; fi
 if msg=$(same_table "$work/serial" "$work/j2"); then ok "-j 2 table = serial table"
 else bad "-j 2 table" "$msg"; fi
+
+# under `mpirun -np 1` (a world of one rank) the cases run in the rank's
+# own process, whatever -j says: it used to fork -j workers after
+# MPI_Init, which Open MPI does not support. Only where mpirun is and the
+# build has MPI (a build without it refuses to run under mpirun).
+if command -v mpirun >/dev/null; then
+    OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl=self,vader \
+        ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0" \
+        timeout 120 mpirun -np 1 "$BELTDYN" study "$model" -o "$work/np1" "${cases[@]}" -j 2 \
+        >"$work/np1.out" 2>&1
+    rc=$?
+    if grep -q "built without MPI" "$work/np1.out"; then
+        ok "mpirun -np 1: not checked, this beltdyn has no MPI"
+    elif [ $rc -eq 0 ] && grep -q ", 1 MPI rank$" "$work/np1.out" \
+        && msg=$(same_table "$work/serial" "$work/np1"); then
+        ok "mpirun -np 1 -j 2: one rank, no workers, the serial table"
+    else
+        bad "mpirun -np 1" "exit $rc: $(head -3 "$work/np1.out") ${msg:-}"
+    fi
+fi
 
 # killed after 2 cases, then resumed
 "$BELTDYN" study "$model" -o "$work/k" "${cases[@]}" -j 2 >"$work/k.out" 2>&1 &
@@ -112,6 +136,38 @@ PY
 else
     bad "SIGINT" "no case completed before the study ended"
     pid=""
+fi
+
+# a case.json that cannot be written (a directory, not empty, in its
+# place) is said with the case's name, in this process and from a worker;
+# the study still completes (it used to be silent, and --resume reran it)
+for j in 1 2; do
+    mkdir -p "$work/nw$j/linear_T1_d0/case.json" && touch "$work/nw$j/linear_T1_d0/case.json/x"
+    "$BELTDYN" study "$model" -o "$work/nw$j" --curves linear --times 1 --delays 0,0.5 \
+        --after 1 --force -j $j >"$work/nw.out" 2>"$work/nw.err"
+    rc=$?
+    if [ $rc -eq 0 ] && grep -q "^case linear_T1_d0: warning: cannot write case.json.*Is a directory" \
+        "$work/nw.err" && [ "$(grep -c "cannot write" "$work/nw.err")" -eq 1 ]; then
+        ok "-j $j: a case.json that cannot be written is said, naming the case"
+    else
+        bad "-j $j: case.json not written" "exit $rc: $(head -c 400 "$work/nw.err")"
+    fi
+done
+
+# a case's directory path too long for the run's files: the case fails
+# saying so, and nothing is written under a name cut short (it was)
+d200=$(printf 'd%.0s' $(seq 200))
+long="$work/$d200/$d200/$d200/$d200/$d200"
+mkdir -p "$long"
+"$BELTDYN" study "$model" -o "$long/s" --curves linear --times 1 --delays 0 --after 1 -j 1 \
+    >"$work/long.out" 2>"$work/long.err"
+rc=$?
+if [ $rc -eq 1 ] && grep -q "path too long" "$work/long.err" \
+    && [ "$(ls "$long/s" | tr '\n' ' ')" = "study.csv study.json " ] \
+    && grep -Eq "^linear_T1_d0,([^,]*,){4}(bad input|failed)," "$long/s/study.csv"; then
+    ok "a path too long for a case's files: the case fails saying so, nothing cut short"
+else
+    bad "path too long" "exit $rc: $(ls "$long/s" | head -5) $(head -c 300 "$work/long.err")"
 fi
 
 # a non-empty directory that is not a study's

@@ -139,6 +139,21 @@ for spec in "pulleys.middle.mass=1:2:2|middle" "pulleys.head.wrap=1:2:2|pulleys.
         bad "--vary $arg" "exit $rc, output: $(head -c 400 "$work/bad.out")"
     fi
 done
+# one number under two spellings (by name and by index): exit 2 naming
+# both keys, nothing written (it crashed, or ran a garbled model text)
+for pair in "pulleys.head.radius pulleys.0.radius 0.2:0.25:2" \
+            "idlers[0].spacing idlers.0.spacing 1:1.5:2"; do
+    set -- $pair
+    "$BELTDYN" study "$model" -o "$work/bad_same" --vary "$1=$3" --vary "$2=$3" \
+        >"$work/bad.out" 2>&1
+    rc=$?
+    if [ $rc -eq 2 ] && grep -qF -- "$1" "$work/bad.out" && grep -qF -- "$2" "$work/bad.out" \
+        && grep -q "same number" "$work/bad.out" && [ ! -e "$work/bad_same" ]; then
+        ok "--vary $1 and $2: exit 2 naming both"
+    else
+        bad "--vary $1 and $2" "exit $rc, output: $(head -c 400 "$work/bad.out")"
+    fi
+done
 "$BELTDYN" study "$model" -o "$work/bad_best" --vary "$T=1:2:2" --best nosuch >"$work/bad.out" 2>&1
 rc=$?
 if [ $rc -eq 2 ] && grep -q "nosuch" "$work/bad.out"; then ok "--best of no column: exit 2"

@@ -5,15 +5,20 @@
  * - the grid (every combination, ends exact) and the Latin hypercube (one
  *   case per stratum of every key, the same for a seed);
  * - Spearman's rank correlation on known data;
+ * - a whole file read, a path joined (base/file.c);
  * - the runner in worker processes: every job reported once with its
  *   result, a job whose process dies is reported failed and the others
  *   still finish, the longest job is handed out first. */
+#include <errno.h>
 #include <math.h>
 #include <signal.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <time.h>
+#include <unistd.h>
 
+#include "base/file.h"
 #include "beltdyn/model.h"
 #include "io/sensitivity.h"
 #include "study/keypath.h"
@@ -121,6 +126,17 @@ static void test_keys(void)
                       sizeof err) != 0);
     /* a key the model does not take: added, and the loader refuses it */
     CHECK(load_with("belt.colour", 1.0, &def, NULL) != 0);
+    /* one number under two spellings: the same site, which the text
+     * cannot be set at twice (the study refuses the pair, naming both) */
+    bd_key_site two[2];
+    CHECK(bd_key_find(model, strlen(model), "pulleys.head.radius", &two[0], err, sizeof err)
+          == 0);
+    CHECK(bd_key_find(model, strlen(model), "pulleys[0].radius", &two[1], err, sizeof err)
+          == 0);
+    CHECK(two[0].len > 0 && two[0].at == two[1].at && two[0].len == two[1].len);
+    double both[2] = {0.25, 0.3};
+    size_t len;
+    CHECK(bd_key_apply(model, strlen(model), two, both, 2, &len) == NULL);
 }
 
 static void test_grid_and_sample(void)
@@ -220,18 +236,26 @@ static void done(const bd_job_result *r, void *ctx)
               && r->wall_s == r->job);
 }
 
-static void test_runner(void)
+/* the NJOBS jobs on `workers` workers, job 5 the costliest */
+static const double job_cost[NJOBS] = {1, 1, 1, 1, 1, 9, 1};
+
+static bd_runner jobs_runner(int workers)
 {
-    double cost[NJOBS] = {1, 1, 1, 1, 1, 9, 1};
-    /* the aborting job's core dump is not wanted */
-    signal(SIGABRT, SIG_DFL);
     bd_runner r;
     memset(&r, 0, sizeof r);
     r.count = NJOBS;
-    r.cost = cost;
-    r.workers = 2;
+    r.cost = job_cost;
+    r.workers = workers;
     r.run = job;
     r.done = done;
+    return r;
+}
+
+static void test_runner(void)
+{
+    /* the aborting job's core dump is not wanted */
+    signal(SIGABRT, SIG_DFL);
+    bd_runner r = jobs_runner(2);
     char err[256];
     int dies = 1;   /* ctx: job 3 aborts */
     r.run_ctx = r.done_ctx = &dies;
@@ -258,11 +282,89 @@ static void test_runner(void)
     CHECK(order_n == 3 && seen[0] == 1 && seen[2] == 1 && seen[6] == 1 && seen[1] == 0);
 }
 
+/* workers that cannot start (no file descriptors left for their pipes,
+ * as under EMFILE or a fork's EAGAIN): the one that did start runs every
+ * job; none at all is an error naming why. A slot whose worker never
+ * started used to count as busy with job 0 forever, and the coordinator
+ * spun at full speed without end (the alarm fails this test then) */
+static int messages;
+
+static void count_message(const char *line, void *ctx)
+{
+    (void)ctx;
+    if (strstr(line, "could not be started"))
+        messages++;
+}
+
+static void test_runner_spawn_fails(void)
+{
+    bd_runner r = jobs_runner(3);
+    r.message = count_message;
+    char err[256];
+    struct rlimit old, low;
+    CHECK(getrlimit(RLIMIT_NOFILE, &old) == 0);
+    int first = dup(0);   /* the lowest free descriptor */
+    close(first);
+    alarm(60);
+    for (int room = 4; room >= 0; room -= 4) {
+        /* room 4: the first worker's two pipes, then none for the others */
+        low = old;
+        low.rlim_cur = (rlim_t)first + (rlim_t)room;
+        CHECK(setrlimit(RLIMIT_NOFILE, &low) == 0);
+        memset(seen, 0, sizeof seen);
+        order_n = messages = 0;
+        int rs = bd_runner_run(&r, err, sizeof err);
+        CHECK(setrlimit(RLIMIT_NOFILE, &old) == 0);
+        CHECK(messages == 1);
+        if (room > 0) {
+            CHECK(rs == BD_RUN_OK);
+            CHECK(order_n == NJOBS);
+            for (int j = 0; j < NJOBS; j++)
+                CHECK(seen[j] == 1);
+        } else {
+            CHECK(rs == BD_RUN_FAILED && order_n == 0);
+            CHECK(strstr(err, "no worker process could be started for 7 cases (pipe: "));
+        }
+    }
+    alarm(0);
+}
+
+/* a whole file: across the first buffer's growth, empty, missing, a
+ * directory (opens, cannot be read) */
+static void test_read_file(void)
+{
+    char path[] = "/tmp/bd_read_fileXXXXXX";
+    int fd = mkstemp(path);
+    CHECK(fd >= 0);
+    FILE *f = fdopen(fd, "wb");
+    for (int i = 0; i < 20000; i++)
+        fprintf(f, "%07d\n", i);   /* 160 000 bytes */
+    fclose(f);
+    char *text;
+    size_t len;
+    CHECK(bd_read_file(path, &text, &len) == BD_READ_OK);
+    CHECK(len == 160000 && text[len] == '\0' && strncmp(text + len - 8, "0019999\n", 8) == 0);
+    free(text);
+    f = fopen(path, "wb");
+    fclose(f);
+    CHECK(bd_read_file(path, &text, &len) == BD_READ_OK && len == 0 && text[0] == '\0');
+    free(text);
+    remove(path);
+    CHECK(bd_read_file(path, &text, &len) == BD_READ_OPEN && text == NULL && errno == ENOENT);
+    CHECK(bd_read_file("/tmp", &text, &len) == BD_READ_ERROR && text == NULL && len == 0);
+    /* a path joined whole, or refused: never cut short */
+    char p[8];
+    CHECK(bd_path_join(p, sizeof p, "ab", "cdef") == 0 && strcmp(p, "ab/cdef") == 0);
+    CHECK(bd_path_join(p, sizeof p, "ab", "cdefg") == -1 && p[0] == '\0');
+}
+
 int main(void)
 {
     test_keys();
     test_grid_and_sample();
     test_spearman();
     test_runner();
+    test_runner_spawn_fails();
+    test_read_file();
     return bd_test_finish("test_study_parts");
 }

@@ -1,0 +1,60 @@
+#include "base/file.h"
+
+#include <errno.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+int bd_read_file(const char *path, char **text, size_t *len)
+{
+    *text = NULL;
+    *len = 0;
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return BD_READ_OPEN;
+    char *buf = NULL;
+    size_t n = 0, cap = 0;
+    for (;;) {
+        /* room for the next chunk (doubling from 64 kB) and the NUL */
+        if (n == cap) {
+            size_t grown = cap ? 2 * cap : 65536;
+            char *more = grown > cap && grown < SIZE_MAX ? realloc(buf, grown + 1) : NULL;
+            if (!more) {
+                free(buf);
+                fclose(f);
+                errno = ENOMEM;
+                return BD_READ_NOMEM;
+            }
+            buf = more;
+            cap = grown;
+        }
+        errno = 0;
+        size_t got = fread(buf + n, 1, cap - n, f);
+        n += got;
+        if (got == 0)
+            break;
+    }
+    if (ferror(f)) {
+        int e = errno ? errno : EIO;
+        free(buf);
+        fclose(f);
+        errno = e;
+        return BD_READ_ERROR;
+    }
+    fclose(f);
+    buf[n] = '\0';
+    *text = buf;
+    *len = n;
+    return BD_READ_OK;
+}
+
+int bd_path_join(char *out, size_t cap, const char *dir, const char *name)
+{
+    int n = snprintf(out, cap, "%s/%s", dir, name);
+    if (n < 0 || (size_t)n >= cap) {
+        if (cap > 0)
+            out[0] = '\0';
+        return -1;
+    }
+    return 0;
+}
