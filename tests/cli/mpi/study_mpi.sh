@@ -29,6 +29,7 @@ mpi() {
 start=(study "$DATA/study_small.yaml" --curves linear,s-curve --times 1 --delays 0,0.5 --after 1)
 sweep=(study "$DATA/sweep_small.yaml" --vary pulleys.head.drive.start.time=1:3:3
        --vary pulleys.tail.takeup.mass=600:900:2)
+declare -A cases=([start]=4 [sweep]=6)   # 2 curves x 2 delays; 3 x 2 grid
 for what in start sweep; do
     declare -n args=$what
     if "$BELTDYN" "${args[@]}" -o "$work/$what.serial" -j 1 >"$work/$what.serial.out" 2>&1
@@ -40,7 +41,7 @@ for what in start sweep; do
     if grep -q "2 MPI ranks" "$work/$what.mpi.out"; then ok "$what: ran on 2 ranks"
     else bad "$what: ranks" "$(head -3 "$work/$what.mpi.out")"; fi
     # rank 0 printed a row for every case, whichever rank ran it
-    if [ "$(grep -c "^[A-Za-z_0-9.-]* \+[0-9]" "$work/$what.mpi.out")" -ge 4 ]; then
+    if [ "$(grep -c "^[A-Za-z_0-9.-]* \+[0-9]" "$work/$what.mpi.out")" -ge "${cases[$what]}" ]; then
         ok "$what: every case reported"
     else bad "$what: rows" "$(cat "$work/$what.mpi.out")"; fi
     if msg=$(same_table "$work/$what.serial" "$work/$what.mpi"); then
