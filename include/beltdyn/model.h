@@ -167,7 +167,8 @@ typedef struct bd_idler_set_def {
 
 typedef enum bd_formulation {
     BD_FORMULATION_DISCRETE = 0,  /* 2D lumped-mass belt (seed 001) */
-    BD_FORMULATION_AXIAL          /* 1D chain with capstan pulleys (seed 004) */
+    BD_FORMULATION_AXIAL,         /* 1D chain with capstan pulleys (seed 004) */
+    BD_FORMULATION_MOVING_NODE    /* nodes fixed in space, material flowing (seed 003) */
 } bd_formulation;
 
 typedef struct bd_belt_def {
@@ -178,6 +179,8 @@ typedef struct bd_belt_def {
     double rated_tension;     /* N, 0 = not given */
     double initial_tension;   /* N, installed tension without takeup */
     double element_length;    /* m target, 0 = formulation default */
+    double wrap_element_angle;  /* rad, moving_node: one arc element on a wrap */
+    double span_element_length; /* m, moving_node: span element target, 0 = default */
     double width;             /* m, 0 = not given */
     double thickness;         /* m, 0 = not given */
     double modulus;           /* Pa, 0 = not given */

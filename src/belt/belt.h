@@ -102,6 +102,7 @@ const bd_belt_ops *bd_belt_ops_for(bd_formulation f);
 /* the formulations (one folder each) */
 extern const bd_belt_ops bd_lumped_ops;   /* belt/lumped: seed 001 */
 extern const bd_belt_ops bd_axial_ops;    /* belt/axial: seed 004 */
+extern const bd_belt_ops bd_moving_node_ops; /* belt/moving_node: seed 003 */
 
 /* shared by the formulations' builds (belt/common.c) */
 /* probes and the feed point: points fixed on the path */

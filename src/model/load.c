@@ -571,7 +571,7 @@ static void belt_post(ctx *c, const fieldset *fs, yaml_node_t *const *found, bd_
         b->bending_stiffness = b->modulus * b->width * b->thickness * b->thickness * b->thickness / 12.0;
 }
 
-static const char *const formulation_names[] = {"discrete", "axial", NULL};
+static const char *const formulation_names[] = {"discrete", "axial", "moving_node", NULL};
 static const field belt_fields[] = {
     POS("mass_per_length", bd_belt_def, mass_per_length, REQ),
     POS("axial_stiffness", bd_belt_def, axial_stiffness, 0),
@@ -583,6 +583,8 @@ static const field belt_fields[] = {
     POS("rated_tension", bd_belt_def, rated_tension, 0),
     NONNEG("initial_tension", bd_belt_def, initial_tension, 0),
     POS("element_length", bd_belt_def, element_length, 0),
+    NUM("wrap_element_angle_deg", bd_belt_def, wrap_element_angle, GT | DEG, 0.0, 90.0),
+    POS("span_element_length", bd_belt_def, span_element_length, 0),
     ENUM("formulation", bd_belt_def, formulation, 0, formulation_names, NULL),
 };
 FIELDSET(belt_fs, belt_fields, belt_post);

@@ -116,6 +116,7 @@ bd_belt_def bd_belt_default(void)
     bd_belt_def b;
     memset(&b, 0, sizeof b);
     b.formulation = BD_FORMULATION_DISCRETE;
+    b.wrap_element_angle = 5.0 * BD_DEG;
     return b;
 }
 

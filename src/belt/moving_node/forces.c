@@ -1,0 +1,195 @@
+/* The moving-node belt's forces at t (docs/physics.md §12).
+ *
+ * Element e (node e → e+1) in the material description (Kelvin–Voigt,
+ * seed 001 eq 4.1 per unit unstretched length; seed 003 §5):
+ *   ε_e = l_e/ΔX_e − 1,   T_e = EA·ε_e + c_e·(v_{e+1} − v_e + dsq_e·q̇),
+ * l_e its length in space (span: from the chord and the transverse
+ * displacements; arc: R·Δθ), the dashpot acting on the material rate of
+ * stretch ∂v/∂X (the belt speed relative to the nodes plus the mesh's own
+ * rate where a takeup carriage moves it).
+ *
+ * Node i, along the path (seed 003 §3: the material acceleration at a
+ * spatial point is ∂v/∂t + v·∂v/∂s):
+ *   m_i·∂v_i/∂t = T_i·cos_i − T_{i−1}·cos_{i−1} + W_i − m_i·v_i·∂v/∂s
+ *                 − f_r·N_i·sat(v_i/v_0) [idler] − m'_L·v_i² [feed] + F_i [pulley]
+ * with ∂v/∂s upwind. Only the elastic part at t goes into fx here; the
+ * dashpots, the elastic increment over the step and the pulley friction
+ * are the implicit solve's (solve.c).
+ *
+ * Node i of a span, across it (the axially moving string, w_tt + 2v·w_st
+ * + v²·w_ss = (T/m')·w_ss + ..., in the spatial description):
+ *   m_i·ẅ_i = T_i·sin_i − T_{i−1}·sin_{i−1} − m_i·v_i²·w_ss − 2·m_i·v_i·ẇ_s
+ *             + N_i + W⊥_i + bending,
+ * explicit central differences; an idler node rests on its idler (N ≥ 0
+ * keeps w ≥ 0) or lifts off.
+ *
+ * An arc node lies on its pulley: the pressure the pulley must give it,
+ *   N_i = Σ T·Δθ/2 (its arc elements) − m_arc·v²/R + weight towards the
+ *         centre (+ the pull of a sagging span at a tangent point),
+ * bounds its friction (solve.c); N < 0 is lift-off. */
+#include "belt/moving_node/moving_node.h"
+
+#include <math.h>
+
+#include "laws/rolling.h"
+
+/* every element's length, direction, strain and tension */
+static void elements(bd_sim *sim)
+{
+    const bd_mn_model *mm = bd_mn_model_of(sim);
+    bd_mn *mn = bd_mn_of(sim);
+    const int n = sim->model->n;
+    const double EA = sim->model->EA, *v = sim->vx, *w = mn->w;
+    for (int e = 0; e < n; e++) {
+        int j = bd_mn_next(e, n);
+        double ds = mm->ds0[e], rate = v[j] - v[e];
+        if (mm->eq[e] >= 0) {
+            const bd_pulley_body *p = &sim->pulleys[mm->eq[e]];
+            ds += mm->dsq[e] * p->q;
+            rate += mm->dsq[e] * p->qdot;
+        }
+        double l = ds, cs = 1.0, sn = 0.0;
+        if (!mm->on_arc[e]) {
+            double dw = w[j] - w[e];
+            l = sqrt(ds * ds + dw * dw);
+            cs = ds / l;
+            sn = dw / l;
+        }
+        mn->len[e] = l;
+        mn->cos_e[e] = cs;
+        mn->sin_e[e] = sn;
+        double td = mm->c[e] * rate;
+        mn->td[e] = td;
+        sim->tension[e] = EA * (l / mn->dX[e] - 1.0) + td;
+    }
+}
+
+/* bending (EI > 0): the discrete energy Σ ½·EI·κ_i²·h_i over the span
+ * nodes, κ_i the second difference of w; its forces −∂U/∂w into out */
+static void bending(const bd_sim *sim, double *out)
+{
+    const bd_mn_model *mm = bd_mn_model_of(sim);
+    const bd_mn *mn = bd_mn_of(sim);
+    const int n = sim->model->n;
+    const double EI = sim->model->EI, *w = mn->w;
+    for (int i = 0; i < n; i++)
+        out[i] = 0.0;
+    if (EI <= 0.0)
+        return;
+    for (int i = 0; i < n; i++) {
+        if (mm->kind[i] == BD_MN_ARC)
+            continue;
+        int b = bd_mn_prev(i, n), j = bd_mn_next(i, n);
+        double la = mm->ds0[b], lb = mm->ds0[i], h = 0.5 * (la + lb);
+        double M = EI * ((w[j] - w[i]) / lb - (w[i] - w[b]) / la) / h;
+        out[j] -= M / lb;
+        out[i] += M * (1.0 / la + 1.0 / lb);
+        out[b] -= M / la;
+    }
+}
+
+/* the pressure on arc node i */
+static double arc_pressure(const bd_sim *sim, int i)
+{
+    const bd_mn_model *mm = bd_mn_model_of(sim);
+    const bd_mn *mn = bd_mn_of(sim);
+    const int n = sim->model->n;
+    int b = bd_mn_prev(i, n), j = bd_mn_next(i, n);
+    const double *T = sim->tension;
+    double N = 0.0, R = 0.0;
+    if (mm->on_arc[b]) {
+        R = mm->radius[b];
+        N += 0.5 * T[b] * mm->ds0[b] / R;
+    } else if (mn->sin_e[b] != 0.0) {
+        /* a sagging span pulls the tangent point along its normal */
+        N -= T[b] * mn->sin_e[b] * (mm->nx[b] * mm->nx[i] + mm->ny[b] * mm->ny[i]);
+    }
+    if (mm->on_arc[i]) {
+        R = mm->radius[i];
+        N += 0.5 * T[i] * mm->ds0[i] / R;
+    } else if (mn->sin_e[i] != 0.0) {
+        N += T[i] * mn->sin_e[i] * (mm->nx[j] * mm->nx[i] + mm->ny[j] * mm->ny[i]);
+    }
+    if (R > 0.0) {
+        double cell = 0.5 * (mm->ds0[b] + mm->ds0[i]), share = mm->arc_len[i] / cell;
+        double m = sim->mass[i] - mm->idler_mass[i];
+        N += share * (mn->f_norm[i] - m * sim->vx[i] * sim->vx[i] / R);
+    }
+    return N;
+}
+
+void bd_mn_forces(bd_sim *sim)
+{
+    const bd_mn_model *mm = bd_mn_model_of(sim);
+    bd_mn *mn = bd_mn_of(sim);
+    const int n = sim->model->n;
+    const double dt = sim->model->dt;
+    elements(sim);
+    bd_tension_extremes(sim);
+    double *fb = mn->cp;   /* scratch until the solve */
+    bending(sim, fb);
+
+    const double *v = sim->vx, *wd = sim->vy, *w = mn->w, *T = sim->tension, *td = mn->td;
+    for (int i = 0; i < n; i++) {
+        int b = bd_mn_prev(i, n), j = bd_mn_next(i, n);
+        double vi = v[i];
+        double m = sim->mass[i] - mm->idler_mass[i];
+        /* the elastic pull along the path, and the mesh's dashpot part
+         * (known: the carriage speed is at the half step) */
+        double Ti = T[i] - td[i], Tb = T[b] - td[b];
+        double F = Ti * mn->cos_e[i] - Tb * mn->cos_e[b] + mn->f_grav[i], Fn = 0.0;
+        if (mm->eq[i] >= 0) {
+            double d = mm->c[i] * mm->dsq[i] * sim->pulleys[mm->eq[i]].qdot * mn->cos_e[i];
+            F += d;
+            Fn += d;
+        }
+        if (mm->eq[b] >= 0) {
+            double d = mm->c[b] * mm->dsq[b] * sim->pulleys[mm->eq[b]].qdot * mn->cos_e[b];
+            F -= d;
+            Fn -= d;
+        }
+        /* the convective acceleration v·∂v/∂s, upwind */
+        if (vi >= 0.0)
+            F -= m * vi * (vi - v[b]) / mn->len[b];
+        else
+            F -= m * vi * (v[j] - vi) / mn->len[i];
+        double G = 0.0, Gn = 0.0;
+        if (mm->kind[i] == BD_MN_ARC) {
+            mn->normal[i] = arc_pressure(sim, i);
+        } else {
+            double la = mn->len[b], lb = mn->len[i];
+            double wss = ((w[j] - w[i]) / lb - (w[i] - w[b]) / la) / (0.5 * (la + lb));
+            G = T[i] * mn->sin_e[i] - T[b] * mn->sin_e[b] + mn->f_norm[i] + fb[i]
+              - m * vi * vi * wss - 2.0 * m * vi * (wd[j] - wd[b]) / (la + lb);
+            mn->normal[i] = 0.0;
+            if (mm->kind[i] == BD_MN_IDLER) {
+                /* rests on its idler when it would otherwise end the step
+                 * below it: the support takes it to w = 0 */
+                double wd_new = wd[i] + dt * G / m;
+                if (w[i] + dt * wd_new < 0.0) {
+                    double N = m * (-w[i] / dt - wd[i]) / dt - G;
+                    G += N;
+                    Gn += N;
+                    mn->normal[i] = N;
+                }
+                /* rolling resistance against the belt's motion (seed 004
+                 * §5; faded below BD_ROLLING_SPEED) */
+                double sat = vi / BD_ROLLING_SPEED;
+                sat = sat > 1.0 ? 1.0 : (sat < -1.0 ? -1.0 : sat);
+                double r = -mm->rolling[i] * mn->normal[i] * sat;
+                F += r;
+                Fn += r;
+            }
+        }
+        if (i == mm->feed_node && sim->has_feed && vi > 0.0) {
+            /* the material landing is accelerated to belt speed */
+            double f = -sim->model->material_mpl * vi * vi;
+            F += f;
+            Fn += f;
+        }
+        sim->fx[i] = F;
+        sim->fnx[i] = Fn;
+        sim->fy[i] = G;
+        sim->fny[i] = Gn;
+    }
+}

@@ -1,0 +1,214 @@
+/* The moving-node belt: the step's update, the material flowing through
+ * the nodes, the load fronts, and the energies (docs/physics.md §12). */
+#include "belt/moving_node/moving_node.h"
+
+#include <math.h>
+
+/* Nodes to t + Δt. Along the path the solve gave v⁺; the belt passes
+ * node i at v⁺_i/λ_i of unstretched length per second (seed 003 eq 2, the
+ * stretch λ = 1 + ε of the element it comes from: upwind), which moves
+ * ΔX from element to element (ΣΔX is kept exactly). Across a span:
+ * explicit central differences. The kinetic energy is booked at mid step
+ * as the other belts do, the gravity work on the flowing belt with v⁺
+ * (the displacement of the step), so that −(its sum) is the potential of
+ * the weights at t. */
+void bd_mn_integrate(bd_sim *sim, double *ke_out, double *w_nc_out)
+{
+    const bd_mn_model *mm = bd_mn_model_of(sim);
+    bd_mn *mn = bd_mn_of(sim);
+    const int n = sim->model->n;
+    const double dt = sim->model->dt;
+    double *v = sim->vx, *wd = sim->vy, *w = mn->w, *dX = mn->dX;
+    const double *vn = mn->vnew;
+    double ke = 0.0, w_nc = 0.0, grav = 0.0;
+    for (int i = 0; i < n; i++) {
+        double mid = 0.5 * (v[i] + vn[i]);
+        ke += sim->mass[i] * mid * mid;
+        w_nc += sim->fnx[i] * mid;
+        grav += mn->f_grav[i] * vn[i];
+    }
+    /* the flux through each node, with the strains at t */
+    double *flux = mn->cp;   /* scratch after the solve */
+    for (int i = 0; i < n; i++) {
+        int up = vn[i] >= 0.0 ? bd_mn_prev(i, n) : i;
+        flux[i] = dt * vn[i] * dX[up] / mn->len[up];
+        mn->xi[i] += flux[i];
+    }
+    for (int e = 0; e < n; e++)
+        dX[e] += flux[e] - flux[bd_mn_next(e, n)];
+    for (int i = 0; i < n; i++)
+        v[i] = vn[i];
+    /* across the spans */
+    for (int i = 0; i < n; i++) {
+        if (mm->kind[i] == BD_MN_ARC)
+            continue;
+        double m = sim->mass[i] - mm->idler_mass[i];
+        double a = sim->fy[i] * dt / m, mid = wd[i] + 0.5 * a;
+        ke += m * mid * mid;
+        w_nc += sim->fny[i] * mid;
+        grav += mn->f_norm[i] * (wd[i] + a);
+        wd[i] += a;
+        w[i] += wd[i] * dt;
+        if (mm->kind[i] != BD_MN_IDLER)
+            continue;
+        if (w[i] < 0.0)
+            w[i] = 0.0;   /* the support put it there: rounding only */
+        else if (w[i] > 0.0 && !sim->stabilizing) {
+            /* lifted off its idler (recorded, said after the run) */
+            if (mn->idler_lift_steps == 0) {
+                mn->idler_lift_first_t = sim->t;
+                mn->idler_lift_first_node = i;
+            }
+            mn->idler_lift_steps++;
+        }
+    }
+    mn->grav_work += grav * dt;
+    *ke_out = 0.5 * ke;
+    *w_nc_out = w_nc * dt;
+}
+
+/* where the nodes are after the carriages moved: on a carriage or a
+ * stretch that follows it, and across the span by w */
+void bd_mn_takeup_geometry(bd_sim *sim)
+{
+    const bd_mn_model *mm = bd_mn_model_of(sim);
+    const bd_mn *mn = bd_mn_of(sim);
+    for (int i = 0; i < sim->model->n; i++) {
+        double x = mm->x0[i], y = mm->y0[i];
+        if (mm->mover[i] >= 0) {
+            double q = sim->pulleys[mm->mover[i]].q;
+            x += mm->mx[i] * q;
+            y += mm->my[i] * q;
+        }
+        if (mm->kind[i] != BD_MN_ARC) {
+            x += mn->w[i] * mm->nx[i];
+            y += mn->w[i] * mm->ny[i];
+        }
+        sim->x[i] = x;
+        sim->y[i] = y;
+    }
+}
+
+/* element e's length in space (as forces.c) */
+static double element_length(const bd_sim *sim, int e)
+{
+    const bd_mn_model *mm = bd_mn_model_of(sim);
+    const bd_mn *mn = bd_mn_of(sim);
+    double ds = mm->ds0[e];
+    if (mm->eq[e] >= 0)
+        ds += mm->dsq[e] * sim->pulleys[mm->eq[e]].q;
+    if (mm->on_arc[e])
+        return ds;
+    double dw = mn->w[bd_mn_next(e, sim->model->n)] - mn->w[e];
+    return sqrt(ds * ds + dw * dw);
+}
+
+/* ½·EA·ε²·ΔX of every element, and ½·EI·κ²·h of every span node */
+double bd_mn_elastic_energy(const bd_sim *sim)
+{
+    const bd_mn_model *mm = bd_mn_model_of(sim);
+    const bd_mn *mn = bd_mn_of(sim);
+    const int n = sim->model->n;
+    const double EA = sim->model->EA, EI = sim->model->EI;
+    double e = 0.0;
+    for (int k = 0; k < n; k++) {
+        double eps = element_length(sim, k) / mn->dX[k] - 1.0;
+        e += 0.5 * EA * eps * eps * mn->dX[k];
+    }
+    if (EI > 0.0)
+        for (int i = 0; i < n; i++) {
+            if (mm->kind[i] == BD_MN_ARC)
+                continue;
+            int b = bd_mn_prev(i, n), j = bd_mn_next(i, n);
+            double la = mm->ds0[b], lb = mm->ds0[i], h = 0.5 * (la + lb);
+            double kap = ((mn->w[j] - mn->w[i]) / lb - (mn->w[i] - mn->w[b]) / la) / h;
+            e += 0.5 * EI * kap * kap * h;
+        }
+    return e;
+}
+
+/* elastic energy, and the weights' potential as the work they did on the
+ * flowing belt so far (its change is −W·v per step; the pulleys' weight
+ * and the takeup pulls, the moving nodes' weight with them through
+ * wrap_pull, are the parts': sim/energy.c) */
+double bd_mn_potential(const bd_sim *sim)
+{
+    return bd_mn_elastic_energy(sim) - bd_mn_of(sim)->grav_work;
+}
+
+/* the element holding path point s, searched from *e */
+static int element_at(const bd_sim *sim, double s, int *e)
+{
+    const int n = sim->model->n;
+    const double L = sim->model->path.length, *s0 = sim->model->s_node0,
+                 *len = bd_mn_model_of(sim)->ds0;
+    for (int it = 0; it < n; it++) {
+        double rel = s - s0[*e];
+        rel -= L * floor(rel / L + 0.5);
+        if (rel < 0.0)
+            *e = bd_mn_prev(*e, n);
+        else if (rel >= len[*e])
+            *e = bd_mn_next(*e, n);
+        else
+            return *e;
+    }
+    return *e;
+}
+
+/* a node's load after a front moved through its cell: material arriving
+ * at belt speed brings ½Δm·v² (input), leaving takes it (dissipated) */
+static void reload(bd_sim *sim, int i)
+{
+    double m0 = sim->material[i];
+    bd_mn_node_load(sim, i);
+    double de = 0.5 * (sim->material[i] - m0) * sim->vx[i] * sim->vx[i];
+    if (de >= 0.0)
+        sim->energy.input += de;
+    else
+        sim->energy.dissipated -= de;
+}
+
+/* a free front rides with the belt within [lo, hi] from the feed point;
+ * the nodes whose cells it crossed get their new load. 1: reached hi */
+static int move_front(bd_sim *sim, double *d, double lo, double hi)
+{
+    const bd_mn_model *mm = bd_mn_model_of(sim);
+    const int n = sim->model->n;
+    const double L = sim->model->path.length;
+    int e = mm->feed_node >= 0 ? mm->feed_node : 0;
+    element_at(sim, mm->s_feed + *d, &e);
+    int j = bd_mn_next(e, n);
+    double rel = mm->s_feed + *d - sim->model->s_node0[e];
+    rel -= L * floor(rel / L);
+    double g = rel / mm->ds0[e];
+    double v = (1.0 - g) * sim->vx[e] + g * sim->vx[j];
+    double d_new = *d + v * sim->model->dt;
+    d_new = d_new < lo ? lo : (d_new > hi ? hi : d_new);
+    if (d_new == *d)
+        return d_new >= hi;
+    int e0 = e;
+    *d = d_new;
+    int e1 = e0;
+    element_at(sim, mm->s_feed + *d, &e1);
+    /* the nodes of every element from the one behind to the one ahead */
+    int from = v >= 0.0 ? e0 : e1, to = v >= 0.0 ? e1 : e0;
+    for (int k = from;; k = bd_mn_next(k, n)) {
+        reload(sim, k);
+        reload(sim, bd_mn_next(k, n));
+        if (k == to)
+            break;
+    }
+    return d_new >= hi;
+}
+
+/* the load fronts: the head rides with the belt until it reaches the
+ * discharge pulley, the tail once feeding has stopped (as the axial belt) */
+void bd_mn_material(bd_sim *sim)
+{
+    bd_mn *mn = bd_mn_of(sim);
+    const bd_mn_model *mm = bd_mn_model_of(sim);
+    if (mn->head_free && move_front(sim, &mn->d_head, mn->d_tail, mm->load_len))
+        mn->head_free = 0;
+    if (mn->tail_free)
+        move_front(sim, &mn->d_tail, 0.0, mn->d_head);
+}

@@ -1,0 +1,173 @@
+/* The moving-node belt (docs/physics.md §12; seed 003's spatial
+ * description applied to a conveyor belt).
+ *
+ * Its nodes are points fixed in space where the physics is: the tangent
+ * points and points on every wrap arc, every idler station, the feed point
+ * and the probes, with span nodes between. The belt's material flows
+ * through them. Node i carries
+ *   - the belt's speed along the path relative to the node, v_i (sim->vx):
+ *     the material velocity of seed 003 §3 (a node on a takeup carriage
+ *     moves with it; v is then the speed relative to the node);
+ *   - the material coordinate there, as the unstretched length of belt that
+ *     has passed it, ξ_i (ξ̇_i = v_i/λ_i, λ the stretch: seed 003 eq 2,
+ *     the spatial node holding ξ-rate while its material coordinate
+ *     changes, §4);
+ *   - on a span, a transverse displacement w_i along the span's normal
+ *     (sim->vy its rate): sag, lift-off, bending where EI > 0.
+ * Element e (node e → e+1) holds the unstretched belt ΔX_e = ΔX_e(0) +
+ * ξ_e − ξ_{e+1}; its strain is ε_e = l_e/ΔX_e − 1 (geometrically exact,
+ * l_e its length in space). Arc nodes lie on their pulley: no transverse
+ * freedom, a normal pressure from tension, v²κ and weight, stick or slip.
+ *
+ * The axial equations are solved implicitly (trapezoidal, β = 1/4) along
+ * the whole loop together with every pulley's rotation (solve.c), so the
+ * short wrap elements set no time step; the transverse motion is explicit. */
+#ifndef BD_MOVING_NODE_H
+#define BD_MOVING_NODE_H
+
+#include "belt/belt.h"
+
+/* what stands at a node */
+enum { BD_MN_FREE = 0,   /* span node between supports: transverse freedom */
+       BD_MN_IDLER = 1,  /* span node on an idler: lifts off, or rests */
+       BD_MN_ARC = 2 };  /* on a pulley's wrap (tangent points included) */
+
+/* contact state of an arc node, kept from step to step */
+enum { BD_MN_STICK = 0, BD_MN_SLIP_POS = 1, BD_MN_SLIP_NEG = 2, BD_MN_OFF = 3 };
+
+/* a movable pulley's share in the element lengths: elements
+ * first .. first+count−1 (mod n) of each stretch change their length in
+ * space by dsq_e·q (compiled) */
+typedef struct bd_mn_stretch {
+    int first, count;
+} bd_mn_stretch;
+
+typedef struct bd_mn_pulley {
+    int first, count;          /* its arc nodes, tangent points included */
+    bd_mn_stretch in, out;     /* movable: the span stretches that follow it */
+} bd_mn_pulley;
+
+/* compiled (in the model, behind model->belt_model) */
+typedef struct bd_mn_model {
+    /* nodes [n] */
+    unsigned char *kind;      /* BD_MN_FREE, _IDLER, _ARC */
+    int *pulley;              /* arc node: its pulley, else −1 */
+    int *span;                /* span node (not arc): its span, else −1 */
+    double *tx, *ty;          /* unit path tangent (direction of travel) */
+    double *nx, *ny;          /* span: unit normal (w > 0 away from the
+                                 idlers); arc: unit normal to the centre */
+    double *arc_len;          /* arc node: m of arc it stands for */
+    double *theta_sum;        /* arc node: half its two arc elements' angles */
+    double *rolling;          /* idler node: rolling-resistance coefficient */
+    double *idler_mass;       /* idler node: rotating mass I/r², kg */
+    double *belt_mass;        /* kg of belt in its cell */
+    double *mx, *my;          /* m per m of carriage travel (movable) */
+    int *mover;               /* the movable pulley moving it, or −1 */
+    double *x0, *y0;          /* m, position at q = 0, w = 0 */
+    /* elements [n] */
+    double *ds0;              /* m, its length along the path at q = 0 */
+    double *dsq;              /* m/m: ds/dq of the movable pulley moving it */
+    int *eq;                  /* that pulley, or −1 */
+    double *k;                /* N/m, EA/ΔX at rest (the implicit part) */
+    double *c;                /* N·s/m, Kelvin–Voigt dashpot (seed 001 eq 4.3) */
+    unsigned char *on_arc;    /* element on a wrap (no transverse freedom) */
+    double *radius;           /* arc element: its pulley's radius */
+    bd_mn_pulley *pulleys;    /* [pulley_count] */
+    double tension_bound;     /* N, the tension the transverse step allows */
+    double wave_speed;        /* m/s, √(EA/m') of the empty belt */
+    int feed_node;            /* node at the feed point, −1 = none */
+    double s_feed, load_len;  /* m, the loaded region (as the axial belt) */
+    int free_nodes;           /* nodes with transverse freedom */
+} bd_mn_model;
+
+/* state (behind sim->belt_data) */
+typedef struct bd_mn {
+    double *xi;               /* [n] step (integrate): m of belt passed node i */
+    double *w;                /* [n] step (integrate): m transverse, span nodes */
+    double *dX;               /* [n] step (integrate): m unstretched in element e */
+    double *len;              /* [n] step (forces): m, element length in space */
+    double *cos_e, *sin_e;    /* [n] step (forces): its direction in its span */
+    double *td;               /* [n] step (forces): N, the dashpot's part */
+    double *f_grav;           /* [n] N, weight along the path (material phase) */
+    double *f_norm;           /* [n] N, weight along the normal (material phase) */
+    double *normal;           /* [n] step (forces): N, pulley or idler support */
+    double *vnew;             /* [n] step (supports): v at t + Δt/2 */
+    double *rhs;              /* [n] scratch of the solve */
+    double *p0, *qa, *qb;     /* [n] scratch of the solve */
+    double *cp;               /* [n] scratch: the Thomas sweep */
+    double *fr;               /* [n] step (supports): N, pulley friction on node i */
+    double *frg;              /* [3n] scratch: a stuck node's friction per pulley speed */
+    int *frp;                 /* [3n] scratch: ... and which pulleys */
+    double *omega;            /* [pulley_count] scratch: ω⁺ of the solve */
+    unsigned char *contact;   /* [n] step (supports): BD_MN_STICK .. OFF */
+    double *Q;                /* [pulley_count] step (wrap): external torque */
+    double *A;                /* [pulley_count²] scratch: the pulleys' system */
+    double *b;                /* [pulley_count] scratch */
+    double grav_work;         /* J, work of gravity on the flowing belt so far */
+    double d_tail, d_head;    /* m, the loaded region from the feed point */
+    int tail_free, head_free;
+    /* stats, said after the run */
+    long solve_fallbacks;     /* steps whose contact set did not settle */
+    long liftoff_steps;       /* node-steps with an arc node off its pulley */
+    double liftoff_first_t;
+    int liftoff_first_node;
+    long idler_lift_steps;    /* node-steps with an idler node lifted */
+    double idler_lift_first_t;
+    int idler_lift_first_node;
+} bd_mn;
+
+static inline bd_mn *bd_mn_of(const bd_sim *sim)
+{
+    return (bd_mn *)sim->belt_data;
+}
+
+static inline const bd_mn_model *bd_mn_model_of(const bd_sim *sim)
+{
+    return (const bd_mn_model *)sim->model->belt_model;
+}
+
+static inline bd_mn_model *bd_mn_model_build(bd_sim *sim)
+{
+    return (bd_mn_model *)sim->own->belt_model;
+}
+
+static inline int bd_mn_next(int i, int n)
+{
+    return i + 1 == n ? 0 : i + 1;
+}
+
+static inline int bd_mn_prev(int i, int n)
+{
+    return i == 0 ? n - 1 : i - 1;
+}
+
+/* layout.c: the nodes on the path */
+void bd_mn_layout_fill(bd_sim *sim);
+int bd_mn_layout_count(const bd_model_def *def, const bd_path *path);
+double bd_mn_span_target(const bd_model_def *def, const bd_path *path, int span);
+
+/* build.c */
+int bd_mn_build(bd_sim *sim, bd_diag *diag);
+void bd_mn_free(bd_sim *sim);
+void bd_mn_free_model(bd_model *model);
+void bd_mn_clone(bd_sim *dst, const bd_sim *src);
+double bd_mn_stable_step(const bd_sim *sim, bd_time_step_limit *limit);
+void bd_mn_estimate(const bd_model_def *def, const bd_path *path, bd_belt_estimate *out);
+void bd_mn_node_load(bd_sim *sim, int i);
+double bd_mn_loaded_length(const bd_sim *sim, double a, double b);
+
+/* forces.c */
+void bd_mn_forces(bd_sim *sim);
+
+/* solve.c */
+void bd_mn_wrap(bd_sim *sim, bd_pulley_body *p, double external_torque);
+void bd_mn_solve(bd_sim *sim);
+
+/* integrate.c */
+void bd_mn_integrate(bd_sim *sim, double *ke, double *w_nc);
+void bd_mn_takeup_geometry(bd_sim *sim);
+void bd_mn_material(bd_sim *sim);
+double bd_mn_potential(const bd_sim *sim);
+double bd_mn_elastic_energy(const bd_sim *sim);
+
+#endif
