@@ -17,7 +17,12 @@
  * (T_tight − F_C)/(T_slack − F_C) = e^(|μ|θ) with |μ| = f·tanh(4·1 m/s /
  * 1 mm/s) = f and F_C = ρV² = 0 for a belt at rest; the tolerance leaves
  * room for the belt's waves between the pulleys and the creep of the
- * regularized friction on B. The axial belt laid without tension also
+ * regularized friction on B.
+ * Moving-node belt (issue 12 acceptance): tolerance 1%. Its slipping arc
+ * nodes take μ_d·N with N = Σ T·Δθ/2 of their 5° elements, the trapezoidal
+ * rule for dT/dθ = μ·T: per element (1 + μΔθ/2)/(1 − μΔθ/2), which is
+ * e^(μΔθ) to (μΔθ)³/12 ≈ 2e-6; the 1% leaves room for the belt's waves.
+ * The axial belt laid without tension also
  * warns that a belt end has lost its tension (seed 004). */
 #include <math.h>
 #include <stdio.h>
@@ -121,6 +126,7 @@ int main(void)
 {
     slipping("0.035", 0.05);
     slipping("0.25, formulation: axial", 0.02);
+    slipping("0.25, formulation: moving_node", 0.01);
     slack_warning();
     return bd_test_finish("capstan");
 }
