@@ -27,7 +27,8 @@ static const size_t STATE_DOUBLES[] = {
     offsetof(bd_mn, td),     offsetof(bd_mn, f_grav), offsetof(bd_mn, f_norm),
     offsetof(bd_mn, normal), offsetof(bd_mn, vnew),   offsetof(bd_mn, rhs),
     offsetof(bd_mn, p0),     offsetof(bd_mn, qa),     offsetof(bd_mn, qb),
-    offsetof(bd_mn, cp),     offsetof(bd_mn, fr)};
+    offsetof(bd_mn, cp),     offsetof(bd_mn, fr),     offsetof(bd_mn, ca),
+    offsetof(bd_mn, cb)};
 static const size_t MODEL_DOUBLES[] = {
     offsetof(bd_mn_model, tx),         offsetof(bd_mn_model, ty),
     offsetof(bd_mn_model, nx),         offsetof(bd_mn_model, ny),
@@ -55,6 +56,8 @@ static void alloc_arrays(bd_sim *sim)
     mn->omega = bd_xcalloc(np, sizeof *mn->omega);
     mn->frg = bd_xcalloc(3 * n, sizeof *mn->frg);
     mn->frp = bd_xcalloc(3 * n, sizeof *mn->frp);
+    mn->run_prev = bd_xcalloc(n, sizeof *mn->run_prev);
+    mn->run_next = bd_xcalloc(n, sizeof *mn->run_next);
     mm->kind = bd_xcalloc(n, 1);
     mm->on_arc = bd_xcalloc(n, 1);
     mm->pulley = bd_xcalloc(n, sizeof *mm->pulley);
@@ -443,6 +446,8 @@ void bd_mn_free(bd_sim *sim)
     free(mn->omega);
     free(mn->frg);
     free(mn->frp);
+    free(mn->run_prev);
+    free(mn->run_next);
     free(mn);
     sim->belt_data = NULL;
 }
@@ -474,7 +479,7 @@ void bd_mn_clone(bd_sim *dst, const bd_sim *src)
     *mn = *S;
     mn->contact = NULL;
     mn->Q = mn->A = mn->b = mn->omega = mn->frg = NULL;
-    mn->frp = NULL;
+    mn->frp = mn->run_prev = mn->run_next = NULL;
     bd_doubles_dup(mn, S, STATE_DOUBLES, COUNT(STATE_DOUBLES), n);
     mn->contact = bd_xdup(S->contact, n, 1);
     mn->Q = bd_xdup(S->Q, np, sizeof *mn->Q);
@@ -483,6 +488,8 @@ void bd_mn_clone(bd_sim *dst, const bd_sim *src)
     mn->omega = bd_xdup(S->omega, np, sizeof *mn->omega);
     mn->frg = bd_xdup(S->frg, 3 * n, sizeof *mn->frg);
     mn->frp = bd_xdup(S->frp, 3 * n, sizeof *mn->frp);
+    mn->run_prev = bd_xdup(S->run_prev, n, sizeof *mn->run_prev);
+    mn->run_next = bd_xdup(S->run_next, n, sizeof *mn->run_next);
 }
 
 /* node-steps per second, measured by bench/bench_moving_node */

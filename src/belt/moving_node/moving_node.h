@@ -98,7 +98,11 @@ typedef struct bd_mn {
     double *fr;               /* [n] step (supports): N, pulley friction on node i */
     double *frg;              /* [3n] scratch: a stuck node's friction per pulley speed */
     int *frp;                 /* [3n] scratch: ... and which pulleys */
+    int *run_prev, *run_next; /* [n] scratch: a stuck node's stuck neighbours
+                                 across the runs beside it */
     double *omega;            /* [pulley_count] scratch: ω⁺ of the solve */
+    double *ca, *cb;          /* [n] the solve's a_e, b_e for coef_dt */
+    double coef_dt;           /* s, the step they are for (0: none yet) */
     unsigned char *contact;   /* [n] step (supports): BD_MN_STICK .. OFF */
     double *Q;                /* [pulley_count] step (wrap): external torque */
     double *A;                /* [pulley_count²] scratch: the pulleys' system */

@@ -53,15 +53,32 @@ static inline double numerical_dashpot(const bd_mn_model *mm, int e, double dt)
     return mm->ds0[e] < mm->wave_speed * dt ? 0.5 * dt * mm->k[e] : 0.0;
 }
 
-static inline double a_coef(const bd_mn_model *mm, int e, double dt)
+static inline double a_of(const bd_mn_model *mm, int e, double dt)
 {
     return 0.25 * dt * mm->k[e] + 0.5 * mm->c[e] + numerical_dashpot(mm, e, dt);
 }
 
-static inline double b_coef(const bd_mn_model *mm, int e, double dt)
+static inline double b_of(const bd_mn_model *mm, int e, double dt)
 {
     return -0.25 * dt * mm->k[e] + 0.5 * mm->c[e];
 }
+
+/* the coefficients, constant over a run: computed by the first step (the
+ * time step is chosen after the belt is built) */
+static void coefs(bd_sim *sim, double dt)
+{
+    bd_mn *mn = bd_mn_of(sim);
+    const bd_mn_model *mm = bd_mn_model_of(sim);
+    if (mn->coef_dt != dt) {
+        for (int e = 0; e < sim->model->n; e++) {
+            mn->ca[e] = a_of(mm, e, dt);
+            mn->cb[e] = b_of(mm, e, dt);
+        }
+        mn->coef_dt = dt;
+    }
+}
+
+
 
 /* the speed of a stuck node's pulley surface: R·ω⁺, known when held */
 static affine surface(const bd_sim *sim, int i)
@@ -95,7 +112,6 @@ static double slip_force(const bd_sim *sim, int i)
  * the run (qa), and at the node after it (qb) */
 static void run_solve(bd_sim *sim, int first, int count, double dt)
 {
-    const bd_mn_model *mm = bd_mn_model_of(sim);
     bd_mn *mn = bd_mn_of(sim);
     const int n = sim->model->n;
     double *cp = mn->cp, *x = mn->p0, *ya = mn->qa, *yb = mn->qb;
@@ -103,7 +119,7 @@ static void run_solve(bd_sim *sim, int first, int count, double dt)
     int i = first;
     for (int k = 0; k < count; k++) {
         int b = bd_mn_prev(i, n);
-        double al = a_coef(mm, b, dt), ar = a_coef(mm, i, dt);
+        double al = mn->ca[b], ar = mn->ca[i];
         double D = sim->mass[i] / dt + al + ar;
         double r = mn->rhs[i] + slip_force(sim, i);
         double ra = k == 0 ? al : 0.0, rb = k == count - 1 ? ar : 0.0;
@@ -142,19 +158,18 @@ static void run_solve(bd_sim *sim, int first, int count, double dt)
  * on the two corner entries −a_{n−1}) */
 static void loop_solve(bd_sim *sim, double dt)
 {
-    const bd_mn_model *mm = bd_mn_model_of(sim);
     bd_mn *mn = bd_mn_of(sim);
     const int n = sim->model->n;
     double *cp = mn->cp, *x = mn->p0, *z = mn->qa;
-    double corner = -a_coef(mm, n - 1, dt);
-    double D0 = sim->mass[0] / dt + a_coef(mm, n - 1, dt) + a_coef(mm, 0, dt);
+    double corner = -mn->ca[n - 1];
+    double D0 = sim->mass[0] / dt + mn->ca[n - 1] + mn->ca[0];
     double gam = -D0;
     /* T' = T − u·vᵀ with u = (γ, 0, …, corner), v = (1, 0, …, corner/γ) */
     double prev_c = 0.0, px = 0.0, pz = 0.0;
     for (int i = 0; i < n; i++) {
         int b = i == 0 ? n - 1 : i - 1;
-        double al = i == 0 ? 0.0 : a_coef(mm, b, dt), ar = i == n - 1 ? 0.0 : a_coef(mm, i, dt);
-        double D = sim->mass[i] / dt + a_coef(mm, b, dt) + a_coef(mm, i, dt);
+        double al = i == 0 ? 0.0 : mn->ca[b], ar = i == n - 1 ? 0.0 : mn->ca[i];
+        double D = sim->mass[i] / dt + mn->ca[b] + mn->ca[i];
         if (i == 0)
             D -= gam;
         if (i == n - 1)
@@ -272,6 +287,9 @@ static void solve_pass(bd_sim *sim, double dt, double *omega, double *fr)
         }
         if (count > 0)
             run_solve(sim, first, count, dt);
+        /* the stuck nodes at the run's two ends know each other */
+        mn->run_next[s] = e;
+        mn->run_prev[e] = s;
         s = e;
     } while (s != s0);
 
@@ -281,7 +299,7 @@ static void solve_pass(bd_sim *sim, double dt, double *omega, double *fr)
     s = s0;
     do {
         int b = bd_mn_prev(s, n), j = bd_mn_next(s, n);
-        double ab = a_coef(mm, b, dt), as = a_coef(mm, s, dt);
+        double ab = mn->ca[b], as = mn->ca[s];
         double D = sim->mass[s] / dt + ab + as;
         affine vs = surface(sim, s);
         /* coefficients on up to three pulleys */
@@ -299,14 +317,10 @@ static void solve_pass(bd_sim *sim, double dt, double *omega, double *fr)
             if (mm->kind[x] == BD_MN_ARC && is_stuck(mn, x)) {
                 add[na++] = surface(sim, x);
             } else {
-                /* x is in a run; find its ends: walk to the stuck nodes
-                 * (side 0: the run ends at s on the right; side 1: it
-                 * starts after s on the left) */
-                int l = x, r = x;
-                while (!(mm->kind[l] == BD_MN_ARC && is_stuck(mn, l)))
-                    l = bd_mn_prev(l, n);
-                while (!(mm->kind[r] == BD_MN_ARC && is_stuck(mn, r)))
-                    r = bd_mn_next(r, n);
+                /* x is in a run: the one ending at s (side 0) or the one
+                 * starting after it (side 1) */
+                int l = side == 0 ? mn->run_prev[s] : s;
+                int r = side == 0 ? s : mn->run_next[s];
                 cx = mn->p0[x];
                 affine L = surface(sim, l), R = surface(sim, r);
                 L.c0 *= mn->qa[x];
@@ -468,10 +482,11 @@ void bd_mn_solve(bd_sim *sim)
     bd_mn *mn = bd_mn_of(sim);
     const int n = sim->model->n, np = sim->model->pulley_count;
     const double dt = sim->model->dt, *v = sim->vx;
+    coefs(sim, dt);
     for (int i = 0; i < n; i++) {
         int b = bd_mn_prev(i, n), j = bd_mn_next(i, n);
         mn->rhs[i] = sim->mass[i] * v[i] / dt + sim->fx[i]
-                   + b_coef(mm, i, dt) * (v[j] - v[i]) - b_coef(mm, b, dt) * (v[i] - v[b]);
+                   + mn->cb[i] * (v[j] - v[i]) - mn->cb[b] * (v[i] - v[b]);
     }
     contact_from_pressure(sim);
     for (int clip = 0; clip < 3; clip++) {
