@@ -492,8 +492,9 @@ void bd_mn_clone(bd_sim *dst, const bd_sim *src)
     mn->run_next = bd_xdup(S->run_next, n, sizeof *mn->run_next);
 }
 
-/* node-steps per second, measured by bench/bench_moving_node */
-#define MN_RATE 2.0e7
+/* node-steps per second: the cement-plant example as moving_node, 40 s
+ * (1291 nodes, 35 715 steps) in 2.8 s on the two-core machine */
+#define MN_RATE 1.6e7
 
 /* what bd_mn_build would make: the layout's node count, and the step of
  * the shortest span target (bd_mn_stable_step without the transverse
