@@ -127,4 +127,24 @@ double bd_belt_point_tension(const bd_sim *sim, const bd_tracker *tr);
  * interpolated */
 void bd_belt_point_position(const bd_sim *sim, const bd_tracker *tr, double *x, double *y);
 
+/* belts whose nodes are stations fixed on the path (axial, moving_node),
+ * their speed along it in vx (belt/common.c) */
+/* a point between the two stations around it; len[e] is element e's
+ * length along the path */
+void bd_station_point_init(const bd_sim *sim, bd_tracker *tr, double s, const double *len);
+/* the stations stay where they are: nothing to follow */
+void bd_station_point_update(const bd_sim *sim, bd_tracker *tr);
+/* place, tension and speed interpolated between the two stations */
+void bd_station_sample(const bd_sim *sim, const bd_tracker *tr, bd_belt_sample *out);
+/* element e's midpoint on the path (len as above) */
+double bd_station_element_s(const bd_sim *sim, int e, const double *len);
+/* element e's speed: the mean of its nodes'; node i's: vx */
+double bd_station_element_speed(const bd_sim *sim, int e);
+double bd_station_node_speed(const bd_sim *sim, int i);
+/* the wraps store nothing of their own (their elastic energy, if any, is
+ * the belt's elements') */
+double bd_station_wrap_energy(const bd_sim *sim, const bd_pulley_body *p);
+/* the idlers' rotating mass is in the node masses already: J unchanged */
+double bd_station_support_inertia(const bd_sim *sim, double R, double J);
+
 #endif

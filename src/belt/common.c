@@ -148,3 +148,64 @@ void bd_belt_point_position(const bd_sim *sim, const bd_tracker *tr, double *x, 
     *x = sim->x[e] + g * (sim->x[j] - sim->x[e]);
     *y = sim->y[e] + g * (sim->y[j] - sim->y[e]);
 }
+
+/* ---- belts whose nodes are stations fixed on the path (axial,
+ * moving_node): what their sensors read ---- */
+
+void bd_station_point_init(const bd_sim *sim, bd_tracker *tr, double s, const double *len)
+{
+    bd_belt_point_place(sim, tr, s);
+    int lo = tr->element;
+    double rel = tr->s - sim->model->s_node0[lo];
+    if (rel < 0.0) {
+        tr->element = sim->model->n - 1;
+        rel = tr->s + sim->model->path.length - sim->model->s_node0[sim->model->n - 1];
+    }
+    tr->gamma = rel / len[tr->element];
+}
+
+void bd_station_point_update(const bd_sim *sim, bd_tracker *tr)
+{
+    (void)sim;
+    (void)tr;
+}
+
+void bd_station_sample(const bd_sim *sim, const bd_tracker *tr, bd_belt_sample *out)
+{
+    int e = tr->element, j = e + 1 == sim->model->n ? 0 : e + 1;
+    double g = tr->gamma;
+    bd_belt_point_position(sim, tr, &out->x, &out->y);
+    out->tension = bd_belt_point_tension(sim, tr);
+    out->speed = (1.0 - g) * sim->vx[e] + g * sim->vx[j];
+}
+
+double bd_station_element_s(const bd_sim *sim, int e, const double *len)
+{
+    double s = sim->model->s_node0[e] + 0.5 * len[e];
+    return s < sim->model->path.length ? s : s - sim->model->path.length;
+}
+
+double bd_station_element_speed(const bd_sim *sim, int e)
+{
+    int j = e + 1 == sim->model->n ? 0 : e + 1;
+    return 0.5 * (sim->vx[e] + sim->vx[j]);
+}
+
+double bd_station_node_speed(const bd_sim *sim, int i)
+{
+    return sim->vx[i];
+}
+
+double bd_station_wrap_energy(const bd_sim *sim, const bd_pulley_body *p)
+{
+    (void)sim;
+    (void)p;
+    return 0.0;
+}
+
+double bd_station_support_inertia(const bd_sim *sim, double R, double J)
+{
+    (void)sim;
+    (void)R;
+    return J;
+}

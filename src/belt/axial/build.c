@@ -538,19 +538,10 @@ void bd_axial_clone(bd_sim *dst, const bd_sim *src)
     ax->pulleys = bd_xdup(S->pulleys, np, sizeof *ax->pulleys);
 }
 
-/* a point fixed on the path: its place between the two stations around
- * it, which stay where they are */
+/* a point fixed on the path, between the two stations around it */
 void bd_axial_point_init(const bd_sim *sim, bd_tracker *tr, double s)
 {
-    const bd_axial_model *am = bd_axial_model_of(sim);
-    bd_belt_point_place(sim, tr, s);
-    int lo = tr->element;
-    double rel = tr->s - sim->model->s_node0[lo];
-    if (rel < 0.0) {
-        tr->element = sim->model->n - 1;
-        rel = tr->s + sim->model->path.length - sim->model->s_node0[sim->model->n - 1];
-    }
-    tr->gamma = rel / am->s_len[tr->element];
+    bd_station_point_init(sim, tr, s, bd_axial_model_of(sim)->s_len);
 }
 
 /* node-steps per second: bench/bench_axial_10km (10 013 nodes) runs 2.6e8

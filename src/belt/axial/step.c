@@ -306,59 +306,15 @@ void bd_axial_report_events(bd_sim *sim)
     }
 }
 
-static void sample(const bd_sim *sim, const bd_tracker *tr, bd_belt_sample *out)
-{
-    int e = tr->element, j = e + 1 == sim->model->n ? 0 : e + 1;
-    double g = tr->gamma;
-    bd_belt_point_position(sim, tr, &out->x, &out->y);
-    out->tension = bd_belt_point_tension(sim, tr);
-    out->speed = (1.0 - g) * sim->vx[e] + g * sim->vx[j];
-}
-
-/* stations stay where they are: nothing to follow */
-static void point_update(const bd_sim *sim, bd_tracker *tr)
-{
-    (void)sim;
-    (void)tr;
-}
-
 static double element_s(const bd_sim *sim, int e)
 {
-    double s = sim->model->s_node0[e] + 0.5 * bd_axial_model_of(sim)->s_len[e];
-    return s < sim->model->path.length ? s : s - sim->model->path.length;
-}
-
-static double element_speed(const bd_sim *sim, int e)
-{
-    int j = e + 1 == sim->model->n ? 0 : e + 1;
-    return 0.5 * (sim->vx[e] + sim->vx[j]);
+    return bd_station_element_s(sim, e, bd_axial_model_of(sim)->s_len);
 }
 
 /* the elements differ in l0; the tension says the strain */
 static double element_strain(const bd_sim *sim, int e)
 {
     return sim->tension[e] / sim->model->EA;
-}
-
-static double node_speed(const bd_sim *sim, int i)
-{
-    return sim->vx[i];
-}
-
-/* a pulley's wrap stores nothing: the seed-004 wrap has no compliance */
-static double wrap_energy(const bd_sim *sim, const bd_pulley_body *p)
-{
-    (void)sim;
-    (void)p;
-    return 0.0;
-}
-
-/* the idlers' rotating mass is in the node masses already */
-static double support_inertia(const bd_sim *sim, double R, double J)
-{
-    (void)sim;
-    (void)R;
-    return J;
 }
 
 const bd_belt_ops bd_axial_ops = {
@@ -380,14 +336,14 @@ const bd_belt_ops bd_axial_ops = {
     .material = bd_axial_material,
     .potential = bd_axial_potential,
     .elastic_energy = bd_axial_elastic_energy,
-    .wrap_energy = wrap_energy,
-    .support_inertia = support_inertia,
+    .wrap_energy = bd_station_wrap_energy,
+    .support_inertia = bd_station_support_inertia,
     .point_init = bd_axial_point_init,
-    .point_update = point_update,
-    .sample = sample,
+    .point_update = bd_station_point_update,
+    .sample = bd_station_sample,
     .element_s = element_s,
-    .element_speed = element_speed,
+    .element_speed = bd_station_element_speed,
     .element_strain = element_strain,
-    .node_speed = node_speed,
+    .node_speed = bd_station_node_speed,
     .report_events = bd_axial_report_events,
 };

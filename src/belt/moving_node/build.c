@@ -22,7 +22,7 @@
 #define WEIGHT_SAMPLES 4
 
 static const size_t STATE_DOUBLES[] = {
-    offsetof(bd_mn, xi),     offsetof(bd_mn, w),      offsetof(bd_mn, dX),
+    offsetof(bd_mn, w),      offsetof(bd_mn, dX),
     offsetof(bd_mn, len),    offsetof(bd_mn, cos_e),  offsetof(bd_mn, sin_e),
     offsetof(bd_mn, td),     offsetof(bd_mn, f_grav), offsetof(bd_mn, f_norm),
     offsetof(bd_mn, normal), offsetof(bd_mn, vnew),   offsetof(bd_mn, rhs),
@@ -32,7 +32,7 @@ static const size_t STATE_DOUBLES[] = {
 static const size_t MODEL_DOUBLES[] = {
     offsetof(bd_mn_model, tx),         offsetof(bd_mn_model, ty),
     offsetof(bd_mn_model, nx),         offsetof(bd_mn_model, ny),
-    offsetof(bd_mn_model, arc_len),    offsetof(bd_mn_model, theta_sum),
+    offsetof(bd_mn_model, arc_len),
     offsetof(bd_mn_model, rolling),    offsetof(bd_mn_model, idler_mass),
     offsetof(bd_mn_model, belt_mass),  offsetof(bd_mn_model, mx),
     offsetof(bd_mn_model, my),         offsetof(bd_mn_model, x0),
@@ -61,7 +61,6 @@ static void alloc_arrays(bd_sim *sim)
     mm->kind = bd_xcalloc(n, 1);
     mm->on_arc = bd_xcalloc(n, 1);
     mm->pulley = bd_xcalloc(n, sizeof *mm->pulley);
-    mm->span = bd_xcalloc(n, sizeof *mm->span);
     mm->mover = bd_xcalloc(n, sizeof *mm->mover);
     mm->eq = bd_xcalloc(n, sizeof *mm->eq);
     mm->pulleys = bd_xcalloc(np, sizeof *mm->pulleys);
@@ -80,7 +79,7 @@ static int loaded_zone(const bd_sim *sim, double *from, double *to)
     return 1;
 }
 
-double bd_mn_loaded_length(const bd_sim *sim, double a, double b)
+static double loaded_length(const bd_sim *sim, double a, double b)
 {
     double from, to;
     if (!loaded_zone(sim, &from, &to))
@@ -116,7 +115,7 @@ void bd_mn_node_load(bd_sim *sim, int i)
     bd_mn *mn = bd_mn_of(sim);
     double a, z;
     cell(sim, i, &a, &z);
-    double m = sim->model->def->material.mass_per_length * bd_mn_loaded_length(sim, a, z);
+    double m = sim->model->def->material.mass_per_length * loaded_length(sim, a, z);
     sim->material[i] = m;
     sim->mass[i] = mm->belt_mass[i] + m + mm->idler_mass[i];
     if (sim->model->dt > 0.0)
@@ -338,8 +337,6 @@ int bd_mn_build(bd_sim *sim, bd_diag *diag)
         bd_mn_node_load(sim, i);
         sim->x[i] = mm->x0[i];
         sim->y[i] = mm->y0[i];
-        if (mm->kind[i] != BD_MN_ARC)
-            mm->free_nodes++;
     }
     if (setup_movers(sim, diag))
         return 1;
@@ -461,7 +458,6 @@ void bd_mn_free_model(bd_model *model)
     free(mm->kind);
     free(mm->on_arc);
     free(mm->pulley);
-    free(mm->span);
     free(mm->mover);
     free(mm->eq);
     free(mm->pulleys);

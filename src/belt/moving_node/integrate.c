@@ -32,7 +32,6 @@ void bd_mn_integrate(bd_sim *sim, double *ke_out, double *w_nc_out)
     for (int i = 0; i < n; i++) {
         int up = vn[i] >= 0.0 ? bd_mn_prev(i, n) : i;
         flux[i] = dt * vn[i] * dX[up] / mn->len[up];
-        mn->xi[i] += flux[i];
     }
     for (int e = 0; e < n; e++)
         dX[e] += flux[e] - flux[bd_mn_next(e, n)];

@@ -112,7 +112,7 @@ static int arc_elements(const bd_model_def *def, const bd_path *path, int p)
 
 /* walk the loop: spans with their hard points, then the arcs; each node
  * reported to `put` (NULL: count only) */
-typedef void (*put_fn)(bd_sim *sim, int i, double s, int kind, int pulley, int span, int set);
+typedef void (*put_fn)(bd_sim *sim, int i, double s, int kind, int pulley, int set);
 
 static int walk(const bd_model_def *def, const bd_path *path, bd_sim *sim, put_fn put)
 {
@@ -125,7 +125,7 @@ static int walk(const bd_model_def *def, const bd_path *path, bd_sim *sim, put_f
         int m = span_points(def, path, j, &hp);
         /* the span's first node is pulley j's tangent-out point */
         if (put)
-            put(sim, n, sp->s0, BD_MN_ARC, j, j, -1);
+            put(sim, n, sp->s0, BD_MN_ARC, j, -1);
         n++;
         double from = 0.0;
         for (int h = 0; h <= m; h++) {
@@ -133,12 +133,12 @@ static int walk(const bd_model_def *def, const bd_path *path, bd_sim *sim, put_f
             int k = piece_elements(to - from, target);
             for (int c = 1; c < k; c++) {
                 if (put)
-                    put(sim, n, sp->s0 + from + c * (to - from) / k, BD_MN_FREE, -1, j, -1);
+                    put(sim, n, sp->s0 + from + c * (to - from) / k, BD_MN_FREE, -1, -1);
                 n++;
             }
             if (h < m) {
                 if (put)
-                    put(sim, n, sp->s0 + to, hp[h].set >= 0 ? BD_MN_IDLER : BD_MN_FREE, -1, j,
+                    put(sim, n, sp->s0 + to, hp[h].set >= 0 ? BD_MN_IDLER : BD_MN_FREE, -1,
                         hp[h].set);
                 n++;
             }
@@ -152,7 +152,7 @@ static int walk(const bd_model_def *def, const bd_path *path, bd_sim *sim, put_f
         int k = arc_elements(def, path, p);
         for (int c = 0; c < k; c++) {
             if (put)
-                put(sim, n, arc->s0 + c * arc->length / k, BD_MN_ARC, p, -1, -1);
+                put(sim, n, arc->s0 + c * arc->length / k, BD_MN_ARC, p, -1);
             n++;
         }
     }
@@ -165,7 +165,7 @@ int bd_mn_layout_count(const bd_model_def *def, const bd_path *path)
 }
 
 /* the node's place and what stands there (the arrays are allocated) */
-static void put_node(bd_sim *sim, int i, double s, int kind, int pulley, int span, int set)
+static void put_node(bd_sim *sim, int i, double s, int kind, int pulley, int set)
 {
     bd_mn_model *mm = bd_mn_model_build(sim);
     const bd_path *path = &sim->model->path;
@@ -176,7 +176,6 @@ static void put_node(bd_sim *sim, int i, double s, int kind, int pulley, int spa
     sim->own->s_node0[i] = s;
     mm->kind[i] = (unsigned char)kind;
     mm->pulley[i] = pulley;
-    mm->span[i] = kind == BD_MN_ARC ? -1 : span;
     mm->mover[i] = -1;
     double p[2], t[2];
     bd_path_point(path, s, p, t);
@@ -236,7 +235,7 @@ void bd_mn_layout_fill(bd_sim *sim)
 {
     walk(sim->model->def, &sim->model->path, sim, put_node);
     element_geometry(sim);
-    /* the arc nodes of each pulley, and the arc length each stands for */
+    /* the arc length each arc node stands for, and each pulley's arc nodes */
     bd_mn_model *mm = bd_mn_model_build(sim);
     const int n = sim->model->n;
     for (int p = 0; p < sim->model->pulley_count; p++)
@@ -245,17 +244,14 @@ void bd_mn_layout_fill(bd_sim *sim)
         if (mm->kind[i] != BD_MN_ARC)
             continue;
         int b = bd_mn_prev(i, n);
-        double half = 0.0, ang = 0.0;
+        double half = 0.0;
         if (mm->on_arc[b]) {
             half += 0.5 * mm->ds0[b];
-            ang += 0.5 * mm->ds0[b] / mm->radius[b];
         }
         if (mm->on_arc[i]) {
             half += 0.5 * mm->ds0[i];
-            ang += 0.5 * mm->ds0[i] / mm->radius[i];
         }
         mm->arc_len[i] = half;
-        mm->theta_sum[i] = ang;
     }
     /* a pulley's arc nodes run from its tangent-in point to its
      * tangent-out point, which is node 0 for pulley 0 */

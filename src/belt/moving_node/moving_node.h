@@ -8,14 +8,14 @@
  *   - the belt's speed along the path relative to the node, v_i (sim->vx):
  *     the material velocity of seed 003 §3 (a node on a takeup carriage
  *     moves with it; v is then the speed relative to the node);
- *   - the material coordinate there, as the unstretched length of belt that
- *     has passed it, ξ_i (ξ̇_i = v_i/λ_i, λ the stretch: seed 003 eq 2,
- *     the spatial node holding ξ-rate while its material coordinate
- *     changes, §4);
+ *   - through it the belt flows at v_i/λ_i of unstretched length per
+ *     second (λ the stretch; seed 003 eq 2, the spatial node whose
+ *     material coordinate changes while it stands still, §4);
  *   - on a span, a transverse displacement w_i along the span's normal
  *     (sim->vy its rate): sag, lift-off, bending where EI > 0.
- * Element e (node e → e+1) holds the unstretched belt ΔX_e = ΔX_e(0) +
- * ξ_e − ξ_{e+1}; its strain is ε_e = l_e/ΔX_e − 1 (geometrically exact,
+ * Element e (node e → e+1) holds the unstretched belt ΔX_e, which gains
+ * what flows in at node e and loses what flows out at node e+1; its strain
+ * is ε_e = l_e/ΔX_e − 1 (geometrically exact,
  * l_e its length in space). Arc nodes lie on their pulley: no transverse
  * freedom, a normal pressure from tension, v²κ and weight, stick or slip.
  *
@@ -52,12 +52,10 @@ typedef struct bd_mn_model {
     /* nodes [n] */
     unsigned char *kind;      /* BD_MN_FREE, _IDLER, _ARC */
     int *pulley;              /* arc node: its pulley, else −1 */
-    int *span;                /* span node (not arc): its span, else −1 */
     double *tx, *ty;          /* unit path tangent (direction of travel) */
     double *nx, *ny;          /* span: unit normal (w > 0 away from the
                                  idlers); arc: unit normal to the centre */
     double *arc_len;          /* arc node: m of arc it stands for */
-    double *theta_sum;        /* arc node: half its two arc elements' angles */
     double *rolling;          /* idler node: rolling-resistance coefficient */
     double *idler_mass;       /* idler node: rotating mass I/r², kg */
     double *belt_mass;        /* kg of belt in its cell */
@@ -77,12 +75,10 @@ typedef struct bd_mn_model {
     double wave_speed;        /* m/s, √(EA/m') of the empty belt */
     int feed_node;            /* node at the feed point, −1 = none */
     double s_feed, load_len;  /* m, the loaded region (as the axial belt) */
-    int free_nodes;           /* nodes with transverse freedom */
 } bd_mn_model;
 
 /* state (behind sim->belt_data) */
 typedef struct bd_mn {
-    double *xi;               /* [n] step (integrate): m of belt passed node i */
     double *w;                /* [n] step (integrate): m transverse, span nodes */
     double *dX;               /* [n] step (integrate): m unstretched in element e */
     double *len;              /* [n] step (forces): m, element length in space */
@@ -158,7 +154,6 @@ void bd_mn_clone(bd_sim *dst, const bd_sim *src);
 double bd_mn_stable_step(const bd_sim *sim, bd_time_step_limit *limit);
 void bd_mn_estimate(const bd_model_def *def, const bd_path *path, bd_belt_estimate *out);
 void bd_mn_node_load(bd_sim *sim, int i);
-double bd_mn_loaded_length(const bd_sim *sim, double a, double b);
 
 /* forces.c */
 void bd_mn_forces(bd_sim *sim);

@@ -2,74 +2,20 @@
  * what the sensors read and the events said after the run. */
 #include "belt/moving_node/moving_node.h"
 
-#include <math.h>
-
-/* a point fixed on the path: its place between the two nodes around it,
- * which stay where they are */
 static void point_init(const bd_sim *sim, bd_tracker *tr, double s)
 {
-    const bd_mn_model *mm = bd_mn_model_of(sim);
-    bd_belt_point_place(sim, tr, s);
-    int lo = tr->element;
-    double rel = tr->s - sim->model->s_node0[lo];
-    if (rel < 0.0) {
-        tr->element = sim->model->n - 1;
-        rel = tr->s + sim->model->path.length - sim->model->s_node0[sim->model->n - 1];
-    }
-    tr->gamma = rel / mm->ds0[tr->element];
-}
-
-static void point_update(const bd_sim *sim, bd_tracker *tr)
-{
-    (void)sim;
-    (void)tr;
-}
-
-static void sample(const bd_sim *sim, const bd_tracker *tr, bd_belt_sample *out)
-{
-    int e = tr->element, j = bd_mn_next(e, sim->model->n);
-    double g = tr->gamma;
-    bd_belt_point_position(sim, tr, &out->x, &out->y);
-    out->tension = bd_belt_point_tension(sim, tr);
-    out->speed = (1.0 - g) * sim->vx[e] + g * sim->vx[j];
+    bd_station_point_init(sim, tr, s, bd_mn_model_of(sim)->ds0);
 }
 
 static double element_s(const bd_sim *sim, int e)
 {
-    double s = sim->model->s_node0[e] + 0.5 * bd_mn_model_of(sim)->ds0[e];
-    return s < sim->model->path.length ? s : s - sim->model->path.length;
-}
-
-static double element_speed(const bd_sim *sim, int e)
-{
-    return 0.5 * (sim->vx[e] + sim->vx[bd_mn_next(e, sim->model->n)]);
+    return bd_station_element_s(sim, e, bd_mn_model_of(sim)->ds0);
 }
 
 static double element_strain(const bd_sim *sim, int e)
 {
     const bd_mn *mn = bd_mn_of(sim);
     return mn->len[e] / mn->dX[e] - 1.0;
-}
-
-static double node_speed(const bd_sim *sim, int i)
-{
-    return sim->vx[i];
-}
-
-/* the wraps' elastic energy is the belt's own (its arc elements) */
-static double wrap_energy(const bd_sim *sim, const bd_pulley_body *p)
-{
-    (void)sim;
-    (void)p;
-    return 0.0;
-}
-
-/* the idlers' rotating mass is in the node masses already */
-static double support_inertia(const bd_sim *sim, double R, double J)
-{
-    (void)sim;
-    (void)R;
-    return J;
 }
 
 static void report_events(bd_sim *sim)
@@ -112,14 +58,14 @@ const bd_belt_ops bd_moving_node_ops = {
     .material = bd_mn_material,
     .potential = bd_mn_potential,
     .elastic_energy = bd_mn_elastic_energy,
-    .wrap_energy = wrap_energy,
-    .support_inertia = support_inertia,
+    .wrap_energy = bd_station_wrap_energy,
+    .support_inertia = bd_station_support_inertia,
     .point_init = point_init,
-    .point_update = point_update,
-    .sample = sample,
+    .point_update = bd_station_point_update,
+    .sample = bd_station_sample,
     .element_s = element_s,
-    .element_speed = element_speed,
+    .element_speed = bd_station_element_speed,
     .element_strain = element_strain,
-    .node_speed = node_speed,
+    .node_speed = bd_station_node_speed,
     .report_events = report_events,
 };
