@@ -1,6 +1,8 @@
 /* HTML page helpers (html.h) */
 #include "io/html.h"
 
+#include "base/file.h"
+
 #include <errno.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -185,4 +187,17 @@ int bd_html_write(bd_strbuf *b, const char *path, char *err, size_t errlen)
         return -1;
     }
     return 0;
+}
+
+int bd_html_page_finish(bd_strbuf *b, const char *dir, char *err, size_t errlen)
+{
+    char path[4096];
+    bd_sb_puts(b, "</main></body></html>\n");
+    if (bd_path_join(path, sizeof path, dir, "report.html")) {
+        free(b->p);
+        b->p = NULL;
+        snprintf(err, errlen, "%s: path too long", dir);
+        return -1;
+    }
+    return bd_html_write(b, path, err, errlen);
 }

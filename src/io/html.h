@@ -45,4 +45,8 @@ extern const char *const bd_html_css;
  * 0, or -1 with a message in err */
 int bd_html_write(bd_strbuf *b, const char *path, char *err, size_t errlen);
 
+/* close a page and write it as DIR/report.html (bd_html_write); 0, or -1
+ * with a message in err */
+int bd_html_page_finish(bd_strbuf *b, const char *dir, char *err, size_t errlen);
+
 #endif

@@ -1113,15 +1113,7 @@ static int write_html(report *r, char *err, size_t errlen)
         bd_sb_puts(&b, "<h2 id=static>Static design calculation</h2>\n");
         html_object(&b, stat, NULL, 0);
     }
-    bd_sb_puts(&b, "</main></body></html>\n");
-    char path[PATH_LEN];
-    if (bd_path_join(path, sizeof path, r->dir, "report.html")) {
-        free(b.p);
-        set_err(err, errlen, "%s: path too long", r->dir);
-        return BD_REPORT_EOUTPUT;
-    }
-    if (bd_html_write(&b, path, err, errlen)) return BD_REPORT_EOUTPUT;
-    return 0;
+    return bd_html_page_finish(&b, r->dir, err, errlen) ? BD_REPORT_EOUTPUT : 0;
 }
 
 /* ---- entry ---- */

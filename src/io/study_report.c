@@ -316,14 +316,7 @@ static int write_html(study *s, const char *const *plots, const char *const *cap
             free(b.p);
             return BD_REPORT_EOUTPUT;
         }
-    bd_sb_puts(&b, "</main></body></html>\n");
-    char path[PATH_LEN];
-    if (bd_path_join(path, sizeof path, s->dir, "report.html")) {
-        free(b.p);
-        snprintf(err, errlen, "%s: path too long", s->dir);
-        return BD_REPORT_EOUTPUT;
-    }
-    return bd_html_write(&b, path, err, errlen) ? BD_REPORT_EOUTPUT : 0;
+    return bd_html_page_finish(&b, s->dir, err, errlen) ? BD_REPORT_EOUTPUT : 0;
 }
 
 int bd_study_report_write(const char *dir, char *err, size_t errlen)

@@ -403,14 +403,7 @@ static int write_html(sweep *s, char *err, size_t errlen)
     }
     bd_sb_puts(&b, "<h2>Cases</h2>\n");
     html_cases(s, &b);
-    bd_sb_puts(&b, "</main></body></html>\n");
-    char path[PATH_LEN];
-    if (bd_path_join(path, sizeof path, s->dir, "report.html")) {
-        free(b.p);
-        snprintf(err, errlen, "%s: path too long", s->dir);
-        return BD_REPORT_EOUTPUT;
-    }
-    return bd_html_write(&b, path, err, errlen) ? BD_REPORT_EOUTPUT : 0;
+    return bd_html_page_finish(&b, s->dir, err, errlen) ? BD_REPORT_EOUTPUT : 0;
 }
 
 int bd_sweep_report_write(const char *dir, const cJSON *root, char *err, size_t errlen)
