@@ -107,7 +107,7 @@ static record run(const char *formulation, const char *extra, const char *loaded
         if (en->kinetic > kmax)
             kmax = en->kinetic;
         if (sim->model->belt == &bd_axial_ops && r.arrival < 0.0 && strcmp(loaded, "false") == 0
-            && !bd_axial_of(sim)->head_free)
+            && !bd_axial_of(sim)->fronts.head_free)
             r.arrival = sim->t;
     }
     double scale = sim->energy.input > kmax ? sim->energy.input : kmax;

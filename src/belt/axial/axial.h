@@ -7,6 +7,7 @@
 #define BD_AXIAL_H
 
 #include "belt/belt.h"
+#include "belt/load_fronts.h"
 #include "laws/belt_pulley_law.h"
 #include "laws/rolling.h"
 
@@ -35,8 +36,6 @@ typedef struct bd_axial_model {
     bd_axial_pulley *pulleys;   /* [pulley_count] */
     int feed_node;      /* node at the feed point, -1 = none */
     double min_mass;    /* kg, lightest node without material */
-    double s_feed;      /* m, path coordinate of the feed point */
-    double load_len;    /* m, feed point → discharge pulley */
 } bd_axial_model;
 
 /* the axial belt's state (behind sim->belt_data) */
@@ -48,12 +47,7 @@ typedef struct bd_axial {
     double *f_const;    /* [n] N, gravity along the path on node i (material phase) */
     double *resist;     /* [n] N, rolling resistance on node i at speed (material) */
     bd_axial_pulley_state *pulleys;   /* [pulley_count] */
-    /* the loaded region [s_feed + d_tail, s_feed + d_head] along the path
-     * (docs/physics.md §11): a free front rides with the belt, a pinned one
-     * stays at the feed point (tail, while feeding) or the discharge (head) */
-    double d_tail, d_head; /* m from the feed point, 0 ≤ d_tail ≤ d_head ≤ load_len */
-    int tail_free, head_free;
-    int e_tail, e_head; /* element holding each front (a search hint) */
+    bd_load_fronts fronts;  /* the loaded region (belt/load_fronts.h) */
 } bd_axial;
 
 static inline bd_axial *bd_axial_of(const bd_sim *sim)

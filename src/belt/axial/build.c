@@ -31,45 +31,9 @@
 /* samples per element of the weight integral */
 #define WEIGHT_SAMPLES 8
 
-/* the region that can carry material, from the feed point to the start of
- * the discharge pulley's wrap (as layout.c), and the part of it loaded at
- * t = 0: all of it, or (initially_loaded: false) none, the head front at the
- * feed point. A free front rides with the belt (axial_step.c). */
-static void init_load(bd_sim *sim)
-{
-    bd_axial_model *am = bd_axial_model_build(sim);
-    const bd_material_def *mat = &sim->model->def->material;
-    bd_axial *ax = bd_axial_of(sim);
-    if (!mat->present)
-        return;
-    bd_path_loaded_region(&sim->model->path, mat, &am->s_feed, &am->load_len);
-    ax->d_tail = 0.0;
-    ax->d_head = mat->initially_loaded ? am->load_len : 0.0;
-    /* an empty belt that is not fed stays empty */
-    ax->head_free = !mat->initially_loaded && mat->feeding;
-    ax->tail_free = !mat->feeding && mat->initially_loaded;
-}
-
-/* the loaded region on the loop, [from, to] with from in [0, L); or with
- * `full` all that can be loaded; 0 when empty */
-static int loaded_zone(const bd_sim *sim, int full, double *from, double *to)
-{
-    const bd_axial_model *am = bd_axial_model_of(sim);
-    const bd_axial *ax = bd_axial_of(sim);
-    double d0 = full ? 0.0 : ax->d_tail, d1 = full ? am->load_len : ax->d_head;
-    if (!sim->model->def->material.present || d1 <= d0)
-        return 0;
-    *from = fmod(am->s_feed + d0, sim->model->path.length);
-    *to = *from + (d1 - d0);
-    return 1;
-}
-
 static double loaded_length(const bd_sim *sim, int full, double a, double b)
 {
-    double from, to;
-    if (!loaded_zone(sim, full, &from, &to))
-        return 0.0;
-    return bd_loop_overlap(a, b, from, to, sim->model->path.length, NULL, NULL);
+    return bd_fronts_loaded_length(sim, &bd_axial_of(sim)->fronts, full, a, b);
 }
 
 /* node path coordinates: pulley nodes at mid-wrap; between two of them
@@ -164,11 +128,7 @@ static void alloc_arrays(bd_sim *sim)
  * (negative when b < a) */
 static double weight_between(const bd_sim *sim, double a, double b)
 {
-    bd_rest_load load = {sim->model->belt_mpl, sim->model->def->material.mass_per_length, 0.0,
-                         0.0, sim->model->gravity};
-    if (!loaded_zone(sim, 0, &load.from, &load.to))
-        load.to = load.from;
-    return bd_rest_weight(&sim->model->path, &load, a, b, WEIGHT_SAMPLES);
+    return bd_fronts_weight(sim, &bd_axial_of(sim)->fronts, a, b, WEIGHT_SAMPLES);
 }
 
 /* the weight over the two halves of every element */
@@ -368,7 +328,7 @@ int bd_axial_build(bd_sim *sim, bd_diag *diag)
         double ds = sim->model->s_node0[j] - sim->model->s_node0[e];
         am->s_len[e] = ds > 0.0 ? ds : ds + L;
     }
-    init_load(sim);
+    bd_fronts_init(sim, &bd_axial_of(sim)->fronts, 0);
     setup_pulleys(sim, pnode);
     free(pnode);
 
@@ -441,8 +401,8 @@ int bd_axial_build(bd_sim *sim, bd_diag *diag)
         if (sim->has_feed)
             am->feed_node = sim->feed.gamma < 0.5 ? sim->feed.element
                                                       : (sim->feed.element + 1) % n;
-        bd_axial_of(sim)->e_tail = sim->feed.element;
-        bd_axial_of(sim)->e_head = sim->feed.element;
+        bd_axial_of(sim)->fronts.e_tail = sim->feed.element;
+        bd_axial_of(sim)->fronts.e_head = sim->feed.element;
     }
     return 0;
 }

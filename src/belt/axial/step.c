@@ -167,26 +167,6 @@ void bd_axial_takeup_geometry(bd_sim *sim)
     }
 }
 
-/* the element holding path point s, searched from *e; and the node whose
- * half elements hold it */
-static int front_node(const bd_sim *sim, double s, int *e)
-{
-    const int n = sim->model->n;
-    const double L = sim->model->path.length, *s0 = sim->model->s_node0,
-                 *len = bd_axial_model_of(sim)->s_len;
-    for (int it = 0; it < n; it++) {
-        double rel = s - s0[*e];
-        rel -= L * floor(rel / L + 0.5);   /* into [−L/2, L/2) */
-        if (rel < 0.0)
-            *e = *e == 0 ? n - 1 : *e - 1;
-        else if (rel >= len[*e])
-            *e = *e + 1 == n ? 0 : *e + 1;
-        else
-            return rel < 0.5 * len[*e] ? *e : (*e + 1 == n ? 0 : *e + 1);
-    }
-    return *e;
-}
-
 /* a node's load after a front moved in it; the material that arrives rides
  * in at belt speed (the node's velocity stays) and brings its kinetic
  * energy ½Δm·v² and the change −ΔW·u of the gravity potential, booked as
@@ -203,46 +183,10 @@ static void reload_node(bd_sim *sim, int i)
         sim->energy.dissipated -= de;
 }
 
-/* a free front moves with the belt, ds/dt = v interpolated between the
- * nodes of its element, within [lo, hi] from the feed point; the nodes it
- * passed through get their new load (at most two: a step crosses at most
- * one station). Returns 1 when it reached hi. */
-static int move_front(bd_sim *sim, double *d, int *e, double lo, double hi)
-{
-    const int n = sim->model->n;
-    const double L = sim->model->path.length, s_feed = bd_axial_model_of(sim)->s_feed;
-    int k0 = front_node(sim, s_feed + *d, e);
-    int j = *e + 1 == n ? 0 : *e + 1;
-    double rel = s_feed + *d - sim->model->s_node0[*e];
-    rel -= L * floor(rel / L);
-    double g = rel / bd_axial_model_of(sim)->s_len[*e];
-    double v = (1.0 - g) * sim->vx[*e] + g * sim->vx[j];
-    double d_new = *d + v * sim->model->dt;
-    d_new = d_new < lo ? lo : (d_new > hi ? hi : d_new);
-    if (d_new == *d)
-        return d_new >= hi;
-    *d = d_new;
-    int k1 = front_node(sim, s_feed + *d, e);
-    /* walk from the node behind to the one ahead */
-    int from = v >= 0.0 ? k0 : k1, to = v >= 0.0 ? k1 : k0;
-    for (int i = from;; i = i + 1 == n ? 0 : i + 1) {
-        reload_node(sim, i);
-        if (i == to)
-            break;
-    }
-    return d_new >= hi;
-}
-
-/* the load fronts (docs/physics.md §11): the head rides with the belt until
- * it reaches the discharge pulley, the tail once feeding has stopped */
+/* the load fronts ride with the belt (belt/load_fronts.c) */
 void bd_axial_material(bd_sim *sim)
 {
-    bd_axial *ax = bd_axial_of(sim);
-    if (ax->head_free &&
-        move_front(sim, &ax->d_head, &ax->e_head, ax->d_tail, bd_axial_model_of(sim)->load_len))
-        ax->head_free = 0;
-    if (ax->tail_free)
-        move_front(sim, &ax->d_tail, &ax->e_tail, 0.0, ax->d_head);
+    bd_fronts_move(sim, &bd_axial_of(sim)->fronts, bd_axial_model_of(sim)->s_len, reload_node);
 }
 
 /* nodes: velocities to t + Δt/2, displacements to t + Δt, with the

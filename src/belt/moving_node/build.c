@@ -11,7 +11,6 @@
 
 #include "base/alloc.h"
 #include "laws/stable_step.h"
-#include "model/rest_weight.h"
 
 #include <math.h>
 #include <stddef.h>
@@ -66,35 +65,14 @@ static void alloc_arrays(bd_sim *sim)
     mm->pulleys = bd_xcalloc(np, sizeof *mm->pulleys);
 }
 
-/* the loaded region on the loop, [from, to] with from in [0, L); 0 when
- * empty (the axial belt's rule: fronts at d_tail, d_head from the feed) */
-static int loaded_zone(const bd_sim *sim, double *from, double *to)
-{
-    const bd_mn_model *mm = bd_mn_model_of(sim);
-    const bd_mn *mn = bd_mn_of(sim);
-    if (!sim->model->def->material.present || mn->d_head <= mn->d_tail)
-        return 0;
-    *from = fmod(mm->s_feed + mn->d_tail, sim->model->path.length);
-    *to = *from + (mn->d_head - mn->d_tail);
-    return 1;
-}
-
 static double loaded_length(const bd_sim *sim, double a, double b)
 {
-    double from, to;
-    if (!loaded_zone(sim, &from, &to))
-        return 0.0;
-    return bd_loop_overlap(a, b, from, to, sim->model->path.length, NULL, NULL);
+    return bd_fronts_loaded_length(sim, &bd_mn_of(sim)->fronts, 0, a, b);
 }
 
-/* weight of belt and material along the path from a to b, ∫ m'·g dy */
 static double weight_between(const bd_sim *sim, double a, double b)
 {
-    bd_rest_load load = {sim->model->belt_mpl, sim->model->def->material.mass_per_length, 0.0,
-                         0.0, sim->model->gravity};
-    if (!loaded_zone(sim, &load.from, &load.to))
-        load.to = load.from;
-    return bd_rest_weight(&sim->model->path, &load, a, b, WEIGHT_SAMPLES);
+    return bd_fronts_weight(sim, &bd_mn_of(sim)->fronts, a, b, WEIGHT_SAMPLES);
 }
 
 /* node i's cell: half of each element beside it, [a, z] */
@@ -321,13 +299,7 @@ int bd_mn_build(bd_sim *sim, bd_diag *diag)
 
     /* the loaded region, as the axial belt's */
     const bd_material_def *mat = &def->material;
-    if (mat->present) {
-        bd_path_loaded_region(&sim->model->path, mat, &mm->s_feed, &mm->load_len);
-        mn->d_tail = 0.0;
-        mn->d_head = mat->initially_loaded ? mm->load_len : 0.0;
-        mn->head_free = !mat->initially_loaded && mat->feeding;
-        mn->tail_free = !mat->feeding && mat->initially_loaded;
-    }
+    bd_fronts_init(sim, &mn->fronts, 0);
 
     /* masses and loads */
     for (int i = 0; i < n; i++) {
@@ -373,6 +345,8 @@ int bd_mn_build(bd_sim *sim, bd_diag *diag)
     if (mat->present && sim->has_feed)
         mm->feed_node = sim->feed.gamma < 0.5 ? sim->feed.element
                                               : bd_mn_next(sim->feed.element, n);
+    if (mat->present)
+        mn->fronts.e_tail = mn->fronts.e_head = sim->feed.element;
     mn->liftoff_first_node = -1;
     mn->idler_lift_first_node = -1;
     return 0;

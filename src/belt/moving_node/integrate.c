@@ -135,25 +135,6 @@ double bd_mn_potential(const bd_sim *sim)
     return bd_mn_elastic_energy(sim) - bd_mn_of(sim)->grav_work;
 }
 
-/* the element holding path point s, searched from *e */
-static int element_at(const bd_sim *sim, double s, int *e)
-{
-    const int n = sim->model->n;
-    const double L = sim->model->path.length, *s0 = sim->model->s_node0,
-                 *len = bd_mn_model_of(sim)->ds0;
-    for (int it = 0; it < n; it++) {
-        double rel = s - s0[*e];
-        rel -= L * floor(rel / L + 0.5);
-        if (rel < 0.0)
-            *e = bd_mn_prev(*e, n);
-        else if (rel >= len[*e])
-            *e = bd_mn_next(*e, n);
-        else
-            return *e;
-    }
-    return *e;
-}
-
 /* a node's load after a front moved through its cell: material arriving
  * at belt speed brings ½Δm·v² (input), leaving takes it (dissipated) */
 static void reload(bd_sim *sim, int i)
@@ -167,47 +148,8 @@ static void reload(bd_sim *sim, int i)
         sim->energy.dissipated -= de;
 }
 
-/* a free front rides with the belt within [lo, hi] from the feed point;
- * the nodes whose cells it crossed get their new load. 1: reached hi */
-static int move_front(bd_sim *sim, double *d, double lo, double hi)
-{
-    const bd_mn_model *mm = bd_mn_model_of(sim);
-    const int n = sim->model->n;
-    const double L = sim->model->path.length;
-    int e = mm->feed_node >= 0 ? mm->feed_node : 0;
-    element_at(sim, mm->s_feed + *d, &e);
-    int j = bd_mn_next(e, n);
-    double rel = mm->s_feed + *d - sim->model->s_node0[e];
-    rel -= L * floor(rel / L);
-    double g = rel / mm->ds0[e];
-    double v = (1.0 - g) * sim->vx[e] + g * sim->vx[j];
-    double d_new = *d + v * sim->model->dt;
-    d_new = d_new < lo ? lo : (d_new > hi ? hi : d_new);
-    if (d_new == *d)
-        return d_new >= hi;
-    int e0 = e;
-    *d = d_new;
-    int e1 = e0;
-    element_at(sim, mm->s_feed + *d, &e1);
-    /* the nodes of every element from the one behind to the one ahead */
-    int from = v >= 0.0 ? e0 : e1, to = v >= 0.0 ? e1 : e0;
-    for (int k = from;; k = bd_mn_next(k, n)) {
-        reload(sim, k);
-        reload(sim, bd_mn_next(k, n));
-        if (k == to)
-            break;
-    }
-    return d_new >= hi;
-}
-
-/* the load fronts: the head rides with the belt until it reaches the
- * discharge pulley, the tail once feeding has stopped (as the axial belt) */
+/* the load fronts ride with the belt (belt/load_fronts.c) */
 void bd_mn_material(bd_sim *sim)
 {
-    bd_mn *mn = bd_mn_of(sim);
-    const bd_mn_model *mm = bd_mn_model_of(sim);
-    if (mn->head_free && move_front(sim, &mn->d_head, mn->d_tail, mm->load_len))
-        mn->head_free = 0;
-    if (mn->tail_free)
-        move_front(sim, &mn->d_tail, 0.0, mn->d_head);
+    bd_fronts_move(sim, &bd_mn_of(sim)->fronts, bd_mn_model_of(sim)->ds0, reload);
 }

@@ -26,6 +26,7 @@
 #define BD_MOVING_NODE_H
 
 #include "belt/belt.h"
+#include "belt/load_fronts.h"
 
 /* what stands at a node */
 enum { BD_MN_FREE = 0,   /* span node between supports: transverse freedom */
@@ -74,7 +75,6 @@ typedef struct bd_mn_model {
     double tension_bound;     /* N, the tension the transverse step allows */
     double wave_speed;        /* m/s, √(EA/m') of the empty belt */
     int feed_node;            /* node at the feed point, −1 = none */
-    double s_feed, load_len;  /* m, the loaded region (as the axial belt) */
 } bd_mn_model;
 
 /* state (behind sim->belt_data) */
@@ -104,8 +104,7 @@ typedef struct bd_mn {
     double *A;                /* [pulley_count²] scratch: the pulleys' system */
     double *b;                /* [pulley_count] scratch */
     double grav_work;         /* J, work of gravity on the flowing belt so far */
-    double d_tail, d_head;    /* m, the loaded region from the feed point */
-    int tail_free, head_free;
+    bd_load_fronts fronts;    /* the loaded region (belt/load_fronts.h) */
     /* stats, said after the run */
     long solve_fallbacks;     /* steps whose contact set did not settle */
     long liftoff_steps;       /* node-steps with an arc node off its pulley */
