@@ -8,8 +8,9 @@
  * stretch ∂v/∂X (the belt speed relative to the nodes plus the mesh's own
  * rate where a takeup carriage moves it).
  *
- * Node i, along the path (seed 003 §3: the material acceleration at a
- * spatial point is ∂v/∂t + v·∂v/∂s):
+ * Node i, along the path (seed 003 §3 eqs 3–4: the material time
+ * derivative at a spatial point, ∂/∂t = d/dt − ṡ·∂/∂s, makes the
+ * acceleration of the belt passing a fixed node ∂v/∂t + v·∂v/∂s):
  *   m_i·∂v_i/∂t = T_i·cos_i − T_{i−1}·cos_{i−1} + W_i − m_i·v_i·∂v/∂s
  *                 − f_r·N_i·sat(v_i/v_0) [idler] − m'_L·v_i² [feed] + F_i [pulley]
  * with ∂v/∂s upwind. Only the elastic part at t goes into fx here; the
@@ -17,7 +18,9 @@
  * are the implicit solve's (solve.c).
  *
  * Node i of a span, across it (the axially moving string, w_tt + 2v·w_st
- * + v²·w_ss = (T/m')·w_ss + ..., in the spatial description):
+ * + v²·w_ss = (T/m')·w_ss + ..., in the spatial description: S. Wickert,
+ * C. D. Mote, J. Appl. Mech. 57 (1990) 738, eq 1; seed 003 eq 4 gives
+ * the same convective terms):
  *   m_i·ẅ_i = T_i·sin_i − T_{i−1}·sin_{i−1} − m_i·v_i²·w_ss − 2·m_i·v_i·ẇ_s
  *             + N_i + W⊥_i + bending,
  * explicit central differences; an idler node rests on its idler (N ≥ 0
@@ -26,6 +29,8 @@
  * An arc node lies on its pulley: the pressure the pulley must give it,
  *   N_i = Σ T·Δθ/2 (its arc elements) − m_arc·v²/R + weight towards the
  *         centre (+ the pull of a sagging span at a tangent point),
+ * the belt on a drum pressing with (T − ρv²)/R per unit length (the
+ * Euler–Eytelwein wrap with seed 004's centrifugal force F_C = ρ·V²),
  * bounds its friction (solve.c); N < 0 is lift-off. */
 #include "belt/moving_node/moving_node.h"
 

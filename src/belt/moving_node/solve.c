@@ -2,7 +2,9 @@
  * whole loop together with every pulley's rotation (docs/physics.md §12).
  *
  * Element e's force over the step is the trapezoidal rule's (Newmark
- * β = 1/4, γ = 1/2: unconditionally stable, no numerical damping):
+ * β = 1/4, γ = 1/2: unconditionally stable, no numerical damping; T. J. R.
+ * Hughes, The Finite Element Method, 2000, §9.1; here in the leapfrog form
+ * m·(x⁺ − 2x + x⁻)/Δt² = −k·(x⁺ + 2x + x⁻)/4):
  *   T*_e = T_e(t)·cos_e + (Δt/4)·k_e·(Δv⁺_e − Δv⁻_e) + c_e·(Δv⁺_e + Δv⁻_e)/2,
  * Δv_e = v_{e+1} − v_e, v⁻ and v⁺ the speeds at t ∓ Δt/2, k_e = EA/ΔX_e.
  * Node i then gives one row of a cyclic tridiagonal system:
@@ -155,7 +157,8 @@ static void run_solve(bd_sim *sim, int first, int count, double dt)
 }
 
 /* no node sticks: the cyclic system of the whole loop (Sherman–Morrison
- * on the two corner entries −a_{n−1}) */
+ * on the two corner entries −a_{n−1}; Numerical Recipes, 2nd ed., §2.7,
+ * "cyclic tridiagonal systems") */
 static void loop_solve(bd_sim *sim, double dt)
 {
     bd_mn *mn = bd_mn_of(sim);
