@@ -53,6 +53,7 @@ static void alloc_arrays(bd_sim *sim)
     mn->A = bd_xcalloc(np * np, sizeof *mn->A);
     mn->b = bd_xcalloc(np, sizeof *mn->b);
     mn->omega = bd_xcalloc(np, sizeof *mn->omega);
+    mn->q_seen = bd_xcalloc(np, sizeof *mn->q_seen);
     mn->frg = bd_xcalloc(3 * n, sizeof *mn->frg);
     mn->frp = bd_xcalloc(3 * n, sizeof *mn->frp);
     mn->run_prev = bd_xcalloc(n, sizeof *mn->run_prev);
@@ -415,6 +416,7 @@ void bd_mn_free(bd_sim *sim)
     free(mn->A);
     free(mn->b);
     free(mn->omega);
+    free(mn->q_seen);
     free(mn->frg);
     free(mn->frp);
     free(mn->run_prev);
@@ -448,7 +450,7 @@ void bd_mn_clone(bd_sim *dst, const bd_sim *src)
     dst->belt_data = mn;
     *mn = *S;
     mn->contact = NULL;
-    mn->Q = mn->A = mn->b = mn->omega = mn->frg = NULL;
+    mn->Q = mn->A = mn->b = mn->omega = mn->frg = mn->q_seen = NULL;
     mn->frp = mn->run_prev = mn->run_next = NULL;
     bd_doubles_dup(mn, S, STATE_DOUBLES, COUNT(STATE_DOUBLES), n);
     mn->contact = bd_xdup(S->contact, n, 1);
@@ -456,6 +458,7 @@ void bd_mn_clone(bd_sim *dst, const bd_sim *src)
     mn->A = bd_xdup(S->A, np * np, sizeof *mn->A);
     mn->b = bd_xdup(S->b, np, sizeof *mn->b);
     mn->omega = bd_xdup(S->omega, np, sizeof *mn->omega);
+    mn->q_seen = bd_xdup(S->q_seen, np, sizeof *mn->q_seen);
     mn->frg = bd_xdup(S->frg, 3 * n, sizeof *mn->frg);
     mn->frp = bd_xdup(S->frp, 3 * n, sizeof *mn->frp);
     mn->run_prev = bd_xdup(S->run_prev, n, sizeof *mn->run_prev);

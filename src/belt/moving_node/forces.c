@@ -50,7 +50,7 @@ static void elements(bd_sim *sim)
         double ds = mm->ds0[e], rate = v[j] - v[e];
         if (mm->eq[e] >= 0) {
             const bd_pulley_body *p = &sim->pulleys[mm->eq[e]];
-            ds += mm->dsq[e] * p->q;
+            ds += mm->dsq[e] * mn->q_seen[mm->eq[e]];
             rate += mm->dsq[e] * p->qdot;
         }
         double l = ds, cs = 1.0, sn = 0.0;

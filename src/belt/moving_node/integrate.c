@@ -71,11 +71,14 @@ void bd_mn_integrate(bd_sim *sim, double *ke_out, double *w_nc_out)
 void bd_mn_takeup_geometry(bd_sim *sim)
 {
     const bd_mn_model *mm = bd_mn_model_of(sim);
-    const bd_mn *mn = bd_mn_of(sim);
+    bd_mn *mn = bd_mn_of(sim);
+    for (int p = 0; p < sim->model->pulley_count; p++)
+        if (sim->pulleys[p].m->movable)
+            mn->q_seen[p] += sim->pulleys[p].q - sim->pulleys[p].q_step_start;
     for (int i = 0; i < sim->model->n; i++) {
         double x = mm->x0[i], y = mm->y0[i];
         if (mm->mover[i] >= 0) {
-            double q = sim->pulleys[mm->mover[i]].q;
+            double q = mn->q_seen[mm->mover[i]];
             x += mm->mx[i] * q;
             y += mm->my[i] * q;
         }
@@ -95,7 +98,7 @@ static double element_length(const bd_sim *sim, int e)
     const bd_mn *mn = bd_mn_of(sim);
     double ds = mm->ds0[e];
     if (mm->eq[e] >= 0)
-        ds += mm->dsq[e] * sim->pulleys[mm->eq[e]].q;
+        ds += mm->dsq[e] * mn->q_seen[mm->eq[e]];
     if (mm->on_arc[e])
         return ds;
     double dw = mn->w[bd_mn_next(e, sim->model->n)] - mn->w[e];

@@ -97,6 +97,10 @@ typedef struct bd_mn {
     int *run_prev, *run_next; /* [n] scratch: a stuck node's stuck neighbours
                                  across the runs beside it */
     double *omega;            /* [pulley_count] scratch: ω⁺ of the solve */
+    double *q_seen;           /* [pulley_count] step (after parts): m, the carriage
+                                 travel the geometry follows, summed step by step
+                                 (the run's own q restarts at 0 after
+                                 stabilization; the belt's lengths must not) */
     double *ca, *cb;          /* [n] the solve's a_e, b_e for coef_dt */
     double coef_dt;           /* s, the step they are for (0: none yet) */
     unsigned char *contact;   /* [n] step (supports): BD_MN_STICK .. OFF */
