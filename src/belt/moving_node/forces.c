@@ -166,6 +166,8 @@ void bd_mn_forces(bd_sim *sim)
             double wss = ((w[j] - w[i]) / lb - (w[i] - w[b]) / la) / (0.5 * (la + lb));
             G = T[i] * mn->sin_e[i] - T[b] * mn->sin_e[b] + mn->f_norm[i] + fb[i]
               - m * vi * vi * wss - 2.0 * m * vi * (wd[j] - wd[b]) / (la + lb);
+            /* the dashpots' share of the pull across is not conservative */
+            Gn = td[i] * mn->sin_e[i] - td[b] * mn->sin_e[b];
             mn->normal[i] = 0.0;
             if (mm->kind[i] == BD_MN_IDLER) {
                 /* rests on its idler when it would otherwise end the step
