@@ -138,7 +138,8 @@ typedef struct bd_probe {
 } bd_probe;
 
 typedef enum bd_time_step_limit {
-    BD_LIMIT_AXIAL = 0, BD_LIMIT_BENDING, BD_LIMIT_USER, BD_LIMIT_TRANSVERSE
+    BD_LIMIT_AXIAL = 0, BD_LIMIT_BENDING, BD_LIMIT_USER, BD_LIMIT_TRANSVERSE,
+    BD_LIMIT_TRANSPORT
 } bd_time_step_limit;
 
 /* What a run costs, estimated before the build and updated after it with

@@ -168,3 +168,28 @@ void bd_drive_take_over(bd_drive *dr, double torque)
     if (dr->def->control == BD_CONTROL_SPEED && k > 0.0)
         dr->integral = clip(torque, dr->def->max_torque) / k;
 }
+
+/* the fastest belt speed a drive asks for, m/s (0: no drive with a speed) */
+double bd_drives_reference_speed(const bd_model *m)
+{
+    double v = 0.0;
+    for (int i = 0; i < m->pulley_count; i++) {
+        const bd_pulley_def *pd = m->pulleys[i].def;
+        if (!pd->has_drive)
+            continue;
+        const bd_drive_def *d = &pd->drive;
+        double vi = 0.0;
+        switch (d->control) {
+        case BD_CONTROL_SPEED:
+            vi = fmax(fabs(d->speed), fabs(d->creep_speed));
+            break;
+        case BD_CONTROL_MOTOR:
+            vi = d->motor.synchronous_speed_rpm * 2.0 * BD_PI / 60.0 / d->motor.gear_ratio
+               * m->pulleys[i].radius;
+            break;
+        case BD_CONTROL_TORQUE: break;
+        }
+        v = fmax(v, vi);
+    }
+    return v;
+}

@@ -31,40 +31,15 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "base/constants.h"
+#include "parts/parts.h"
 
 /* the floor of the speed bound, m/s, and its multiple of the drives' speed */
 #define SPEED_BOUND_FLOOR 50.0
 #define SPEED_BOUND_FACTOR 10.0
 
-/* the fastest belt speed a drive asks for, m/s (0: no drive with a speed) */
-static double drive_reference_speed(const bd_model *m)
-{
-    double v = 0.0;
-    for (int i = 0; i < m->pulley_count; i++) {
-        const bd_pulley_def *pd = m->pulleys[i].def;
-        if (!pd->has_drive)
-            continue;
-        const bd_drive_def *d = &pd->drive;
-        double vi = 0.0;
-        switch (d->control) {
-        case BD_CONTROL_SPEED:
-            vi = fmax(fabs(d->speed), fabs(d->creep_speed));
-            break;
-        case BD_CONTROL_MOTOR:
-            vi = d->motor.synchronous_speed_rpm * 2.0 * BD_PI / 60.0 / d->motor.gear_ratio
-               * m->pulleys[i].radius;
-            break;
-        case BD_CONTROL_TORQUE: break;
-        }
-        v = fmax(v, vi);
-    }
-    return v;
-}
-
 void bd_bounds_prepare(bd_model *m)
 {
-    m->speed_bound = fmax(SPEED_BOUND_FLOOR, SPEED_BOUND_FACTOR * drive_reference_speed(m));
+    m->speed_bound = fmax(SPEED_BOUND_FLOOR, SPEED_BOUND_FACTOR * bd_drives_reference_speed(m));
     m->travel_bound = 0.5 * m->path.length;
 }
 

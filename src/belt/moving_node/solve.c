@@ -46,23 +46,38 @@ typedef struct affine {
  * a step: the wrap elements) has its own modes far above 1/Δt. The
  * trapezoidal rule leaves such modes undamped at the amplification −1, and
  * the explicit transport of strain through the nodes then drives them
- * (measured: an odd-even tension ripple on a driven pulley's slip arc
- * grew ×3 every 0.08 s). They get a numerical dashpot Δt·k/2 on the
- * end-of-step speeds, backward Euler's damping: it takes out what the
- * step cannot resolve and nothing a wave the step resolves carries. */
-static inline double numerical_dashpot(const bd_mn_model *mm, int e, double dt)
+ * (measured: an odd-even tension ripple on a driven pulley's slip arc grew
+ * ×3 every 0.08 s; with a dashpot Δt·k/2 on v⁺ it still grew over 10 s on
+ * a dual drive's tail arc). Such an element takes its tension at the end
+ * of the step instead, T(t) + k·Δt·Δv⁺ (backward Euler: amplification 0
+ * for its own modes, which only carry the quasi-static strain the arc
+ * needs), i.e. the trapezoidal force plus k·Δt·(3Δv⁺ + Δv⁻)/4, booked as
+ * numerical dissipation; a wave the step resolves keeps the trapezoidal
+ * rule. */
+static inline int unresolved(const bd_mn_model *mm, int e, double dt)
 {
-    return mm->ds0[e] < mm->wave_speed * dt ? 0.5 * dt * mm->k[e] : 0.0;
+    return mm->ds0[e] < mm->wave_speed * dt;
+}
+
+/* that extra force's factors on Δv⁺ and Δv⁻ */
+static inline double numerical_a(const bd_mn_model *mm, int e, double dt)
+{
+    return unresolved(mm, e, dt) ? 0.75 * dt * mm->k[e] : 0.0;
+}
+
+static inline double numerical_b(const bd_mn_model *mm, int e, double dt)
+{
+    return unresolved(mm, e, dt) ? 0.25 * dt * mm->k[e] : 0.0;
 }
 
 static inline double a_of(const bd_mn_model *mm, int e, double dt)
 {
-    return 0.25 * dt * mm->k[e] + 0.5 * mm->c[e] + numerical_dashpot(mm, e, dt);
+    return 0.25 * dt * mm->k[e] + 0.5 * mm->c[e] + numerical_a(mm, e, dt);
 }
 
 static inline double b_of(const bd_mn_model *mm, int e, double dt)
 {
-    return -0.25 * dt * mm->k[e] + 0.5 * mm->c[e];
+    return -0.25 * dt * mm->k[e] + 0.5 * mm->c[e] + numerical_b(mm, e, dt);
 }
 
 /* the coefficients, constant over a run: computed by the first step (the
@@ -522,8 +537,8 @@ void bd_mn_solve(bd_sim *sim)
         int b = bd_mn_prev(i, n), j = bd_mn_next(i, n);
         double dmi = 0.5 * (vn[j] - vn[i] + v[j] - v[i]), dmb = 0.5 * (vn[i] - vn[b] + v[i] - v[b]);
         double damp = mm->c[i] * dmi - mm->c[b] * dmb
-                    + numerical_dashpot(mm, i, dt) * (vn[j] - vn[i])
-                    - numerical_dashpot(mm, b, dt) * (vn[i] - vn[b]);
+                    + numerical_a(mm, i, dt) * (vn[j] - vn[i]) + numerical_b(mm, i, dt) * (v[j] - v[i])
+                    - numerical_a(mm, b, dt) * (vn[i] - vn[b]) - numerical_b(mm, b, dt) * (v[i] - v[b]);
         sim->fnx[i] += damp + mn->fr[i];
         sim->fx[i] = sim->mass[i] * (vn[i] - v[i]) / dt;
     }
