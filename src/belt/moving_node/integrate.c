@@ -27,12 +27,23 @@ void bd_mn_integrate(bd_sim *sim, double *ke_out, double *w_nc_out)
         w_nc += sim->fnx[i] * mid;
         grav += mn->f_grav[i] * vn[i];
     }
-    /* the flux through each node, with the strains at t */
+    /* the flux through each node, with the strains at t. Upwind is the
+     * energy-conserving flux, v/λ̄ with λ̄ the mean stretch of the two
+     * elements (for T = EA·ε it makes the nodes' power Σ v·ΔT equal the
+     * elastic energy's rate exactly), plus a numerical diffusion; its
+     * dissipation |v|·ΔT·Δε/(2λ_up) per node is booked (without it a
+     * start from an untensioned belt lost 1.1 kJ in 25 s unbooked) */
     double *flux = mn->cp;   /* scratch after the solve */
+    const double EA = sim->model->EA;
+    double d_up = 0.0;
     for (int i = 0; i < n; i++) {
-        int up = vn[i] >= 0.0 ? bd_mn_prev(i, n) : i;
-        flux[i] = dt * vn[i] * dX[up] / mn->len[up];
+        int b = bd_mn_prev(i, n), up = vn[i] >= 0.0 ? b : i;
+        double lam = mn->len[up] / dX[up];
+        flux[i] = dt * vn[i] / lam;
+        double de = mn->len[i] / dX[i] - mn->len[b] / dX[b];
+        d_up += fabs(vn[i]) * EA * de * de / (2.0 * lam);
     }
+    sim->energy.dissipated += d_up * dt;
     for (int e = 0; e < n; e++)
         dX[e] += flux[e] - flux[bd_mn_next(e, n)];
     for (int i = 0; i < n; i++)
