@@ -108,6 +108,8 @@ static affine surface(const bd_sim *sim, int i)
     return (affine){0.0, mm->pulley[i], R};
 }
 
+/* stuck on its pulley (contact_from_pressure makes every node that is
+ * not on an arc BD_MN_OFF) */
 static int is_stuck(const bd_mn *mn, int i)
 {
     return mn->contact[i] == BD_MN_STICK;
@@ -250,13 +252,6 @@ static void dense_solve(double *A, double *b, int m)
     }
 }
 
-/* the speed of node x, affine in the pulley speeds: a stuck node's is its
- * pulley's surface; a run node's follows the stuck nodes at its run's ends
- * (whose index the walk keeps in run_l, run_r) */
-typedef struct run_ends {
-    affine l, r;
-} run_ends;
-
 /* one pass with the present contact set: the pulley speeds into omega,
  * the node speeds into vnew, each stuck node's friction into fr */
 static void solve_pass(bd_sim *sim, double dt, double *omega, double *fr)
@@ -285,7 +280,7 @@ static void solve_pass(bd_sim *sim, double dt, double *omega, double *fr)
     }
     int s0 = -1;
     for (int i = 0; i < n && s0 < 0; i++)
-        if (mm->kind[i] == BD_MN_ARC && is_stuck(mn, i))
+        if (is_stuck(mn, i))
             s0 = i;
     if (s0 < 0) {
         loop_solve(sim, dt);
@@ -299,7 +294,7 @@ static void solve_pass(bd_sim *sim, double dt, double *omega, double *fr)
     int s = s0;
     do {
         int first = bd_mn_next(s, n), count = 0, e = first;
-        while (!(mm->kind[e] == BD_MN_ARC && is_stuck(mn, e))) {
+        while (!is_stuck(mn, e)) {
             count++;
             e = bd_mn_next(e, n);
         }
@@ -332,7 +327,7 @@ static void solve_pass(bd_sim *sim, double dt, double *omega, double *fr)
             affine add[2];
             int na = 0;
             double cx = 0.0;
-            if (mm->kind[x] == BD_MN_ARC && is_stuck(mn, x)) {
+            if (is_stuck(mn, x)) {
                 add[na++] = surface(sim, x);
             } else {
                 /* x is in a run: the one ending at s (side 0) or the one
@@ -379,7 +374,7 @@ static void solve_pass(bd_sim *sim, double dt, double *omega, double *fr)
         }
         do {
             s = bd_mn_next(s, n);
-        } while (!(mm->kind[s] == BD_MN_ARC && is_stuck(mn, s)));
+        } while (!is_stuck(mn, s));
     } while (s != s0);
 
     dense_solve(A, bv, np);
@@ -400,7 +395,7 @@ static void solve_pass(bd_sim *sim, double dt, double *omega, double *fr)
         fr[s] = f;
         int e = bd_mn_next(s, n);
         int first = e, count = 0;
-        while (!(mm->kind[e] == BD_MN_ARC && is_stuck(mn, e))) {
+        while (!is_stuck(mn, e)) {
             count++;
             e = bd_mn_next(e, n);
         }
