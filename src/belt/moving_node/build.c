@@ -356,6 +356,16 @@ int bd_mn_build(bd_sim *sim, bd_diag *diag)
     return 0;
 }
 
+/* the shortest span element the layout aims at (a span shorter than its
+ * target is one element) */
+static double shortest_span_element(const bd_model_def *def, const bd_path *path)
+{
+    double l = INFINITY;
+    for (int j = 0; j < path->pulley_count; j++)
+        l = fmin(l, fmin(bd_mn_span_target(def, path, j), bd_path_span(path, j)->length));
+    return l;
+}
+
 /* The step: the axial motion is implicit (solve.c), so the step is set by
  * accuracy there: a wave crosses the shortest span target element in no
  * less than a step (as an explicit scheme would need; seed 001 eq 6.1 at
@@ -374,10 +384,7 @@ double bd_mn_stable_step(const bd_sim *sim, bd_time_step_limit *limit)
     const bd_model_def *def = sim->model->def;
     const int n = sim->model->n;
     double c = sqrt(sim->model->EA / sim->model->belt_mpl);
-    double lref = INFINITY;
-    for (int j = 0; j < sim->model->pulley_count; j++)
-        lref = fmin(lref, fmin(bd_mn_span_target(def, &sim->model->path, j),
-                               bd_path_span(&sim->model->path, j)->length));
+    double lref = shortest_span_element(def, &sim->model->path);
     double dt = bd_central_difference_limit(2.0 * c / lref, 0.0);
     *limit = BD_LIMIT_AXIAL;
     double EI = sim->model->EI, Tb = mm->tension_bound;
@@ -490,9 +497,7 @@ void bd_mn_clone(bd_sim *dst, const bd_sim *src)
  * limit, which needs the tensions) */
 void bd_mn_estimate(const bd_model_def *def, const bd_path *path, bd_belt_estimate *out)
 {
-    double lref = INFINITY;
-    for (int j = 0; j < path->pulley_count; j++)
-        lref = fmin(lref, fmin(bd_mn_span_target(def, path, j), bd_path_span(path, j)->length));
+    double lref = shortest_span_element(def, path);
     out->element_length = lref;
     out->nodes = bd_mn_layout_count(def, path);
     out->idlers = 0.0;
