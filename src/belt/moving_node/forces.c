@@ -123,6 +123,36 @@ static double arc_pressure(const bd_sim *sim, int i)
     return N;
 }
 
+/* The convective force m·v·∂v/∂s in a form whose power vanishes over the
+ * loop, as the continuum's does (it only carries kinetic energy along):
+ * element e (nodes a → z, ρ_e its mass per metre) gives
+ *     node a: −(ρ_e/6)·(v_a·v_z + v_z²),   node z: +(ρ_e/6)·(v_a² + v_a·v_z),
+ * whose power v_a·F_a + v_z·F_z is zero; summed at a node between
+ * elements of any lengths it is −m·v·∂v/∂s to first order (the
+ * skew-symmetric form of Burgers' term). Upwinding, which the explicit
+ * transport needs, adds the diffusion κ_e·(v_z − v_a) on a and its
+ * opposite on z with κ_e = ρ_e·|v̄_e|/2: exactly what separates the
+ * one-sided difference from this central one. Its power −κ_e·(v_z − v_a)²
+ * is booked as dissipated. (The one-sided difference alone lost energy
+ * unbooked wherever the speed varies along the belt: a rest start with a
+ * swinging takeup lost 470 J of 23 kJ in 25 s; now 33 J.)
+ * Into to_a[e], to_z[e] the forces on a and z, into diff[e] the diffusion. */
+static void convective(const bd_sim *sim, double *to_a, double *to_z, double *diff)
+{
+    const bd_mn_model *mm = bd_mn_model_of(sim);
+    const int n = sim->model->n;
+    const double *v = sim->vx, *m = sim->mass, *mi = mm->idler_mass, *icell = mm->inv_cell;
+    for (int e = 0; e < n; e++) {
+        int z = bd_mn_next(e, n);
+        double rho = 0.5 * ((m[e] - mi[e]) * icell[e] + (m[z] - mi[z]) * icell[z]);
+        double va = v[e], vz = v[z];
+        double d = 0.25 * rho * fabs(va + vz) * (vz - va);
+        to_a[e] = -rho / 6.0 * (va * vz + vz * vz) + d;
+        to_z[e] = rho / 6.0 * (va * va + va * vz) - d;
+        diff[e] = d;
+    }
+}
+
 void bd_mn_forces(bd_sim *sim)
 {
     const bd_mn_model *mm = bd_mn_model_of(sim);
@@ -133,6 +163,8 @@ void bd_mn_forces(bd_sim *sim)
     bd_tension_extremes(sim);
     double *fb = mn->cp;   /* scratch until the solve */
     bending(sim, fb);
+    double *to_a = mn->qa, *to_z = mn->qb, *diff = mn->p0;   /* the same */
+    convective(sim, to_a, to_z, diff);
 
     const double *v = sim->vx, *wd = sim->vy, *w = mn->w, *T = sim->tension, *td = mn->td;
     for (int i = 0; i < n; i++) {
@@ -153,11 +185,9 @@ void bd_mn_forces(bd_sim *sim)
             F -= d;
             Fn -= d;
         }
-        /* the convective acceleration v·∂v/∂s, upwind */
-        if (vi >= 0.0)
-            F -= m * vi * (vi - v[b]) / mn->len[b];
-        else
-            F -= m * vi * (v[j] - vi) / mn->len[i];
+        /* the convective acceleration v·∂v/∂s (convective(), above) */
+        F += to_a[i] + to_z[b];
+        Fn += diff[i] - diff[b];
         double G = 0.0, Gn = 0.0;
         if (mm->kind[i] == BD_MN_ARC) {
             mn->normal[i] = arc_pressure(sim, i);

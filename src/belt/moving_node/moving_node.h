@@ -60,6 +60,8 @@ typedef struct bd_mn_model {
     double *rolling;          /* idler node: rolling-resistance coefficient */
     double *idler_mass;       /* idler node: rotating mass I/r², kg */
     double *belt_mass;        /* kg of belt in its cell */
+    double *inv_cell;         /* 1/m, over its cell's length (half of each
+                                 element beside it) */
     double *mx, *my;          /* m per m of carriage travel (movable) */
     int *mover;               /* the movable pulley moving it, or −1 */
     double *x0, *y0;          /* m, position at q = 0, w = 0 */
@@ -102,6 +104,7 @@ typedef struct bd_mn {
                                  (the run's own q restarts at 0 after
                                  stabilization; the belt's lengths must not) */
     double *ca, *cb;          /* [n] the solve's a_e, b_e for coef_dt */
+    double *cna, *cnb;        /* [n] their numerical parts (solve.c) */
     double coef_dt;           /* s, the step they are for (0: none yet) */
     unsigned char *contact;   /* [n] step (supports): BD_MN_STICK .. OFF */
     double *Q;                /* [pulley_count] step (wrap): external torque */
