@@ -41,7 +41,8 @@
 #endif
 
 static const char *EXAMPLES[] = {"vertical_loop", "flat_belt_drive", "head_drive",
-                                 "cement_plant", "overland_axial", "vbelt_dol_axial"};
+                                 "cement_plant", "overland_axial", "vbelt_dol_axial",
+                                 "belt_drive_moving_node"};
 
 static int load(const char *name, bd_model_def *def)
 {

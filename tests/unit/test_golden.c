@@ -32,6 +32,7 @@ static const struct {
 } EXAMPLES[] = {
     {"vertical_loop", 5.0},  {"flat_belt_drive", 1.5}, {"head_drive", 1.0},
     {"cement_plant", 0.3},   {"overland_axial", 8.0},  {"vbelt_dol_axial", 6.0},
+    {"belt_drive_moving_node", 3.0},
 };
 #define EXAMPLE_COUNT ((int)(sizeof EXAMPLES / sizeof EXAMPLES[0]))
 
