@@ -165,6 +165,7 @@ int bd_study_record_read(const bd_study *s, bd_study_case *c)
     const cJSON *h = cJSON_GetObjectItemCaseSensitive(o, "model_hash");
     const cJSON *st = cJSON_GetObjectItemCaseSensitive(o, "status");
     const cJSON *res = cJSON_GetObjectItemCaseSensitive(o, "result");
+    const cJSON *msg = cJSON_GetObjectItemCaseSensitive(o, "message");
     int ok = cJSON_IsString(name) && strcmp(name->valuestring, c->name) == 0
              && cJSON_IsString(d) && strcmp(d->valuestring, def) == 0 && cJSON_IsString(h)
              && strcmp(h->valuestring, hash_text(s)) == 0 && cJSON_IsString(st)
@@ -175,6 +176,8 @@ int bd_study_record_read(const bd_study *s, bd_study_case *c)
     else if (ok && strcmp(st->valuestring, "failed") == 0)
         status = BD_RUN_FAILED;
     ok = ok && status >= 0;
+    snprintf(c->message, sizeof c->message, "%s",
+             ok && cJSON_IsString(msg) ? msg->valuestring : "");
     bd_run_result r;
     memset(&r, 0, sizeof r);
     double wall = 0.0;

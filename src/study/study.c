@@ -567,6 +567,7 @@ static void on_done(const bd_job_result *r, void *ctx)
     c->status = r->status;
     c->wall_s = r->wall_s;
     c->res = r->res;
+    snprintf(c->message, sizeof c->message, "%s", r->status == BD_RUN_OK ? "" : r->message);
     if (r->status != BD_RUN_OK && r->status != BD_RUN_INTERRUPTED && r->message[0]) {
         say(R, r->message);
         if (!R->first_failure[0])

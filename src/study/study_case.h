@@ -29,6 +29,7 @@ typedef struct bd_study_case {
     int status;
     double wall_s;
     bd_run_result res;
+    char message[1024];        /* why it did not complete, or "" */
 } bd_study_case;
 
 typedef struct bd_study {

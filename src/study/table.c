@@ -3,7 +3,8 @@
  *
  *   start study  case, curve, start_time_s, delay_s, creep_speed_mps,
  *   sweep        case, one column per varied key (named by the key),
- *   both         status, what the run compares by (bd_run_result), wall_time_s.
+ *   both         status, what the run compares by (bd_run_result), wall_time_s,
+ *                message (why the case did not complete, or empty).
  *
  * Rows are the cases that have a result, in case order whatever order they
  * finished in, so that a parallel run writes a serial run's table. Each
@@ -66,7 +67,7 @@ static int lead_count(const bd_study *s)
 
 static int column_count(const bd_study *s)
 {
-    return lead_count(s) + 1 + NOUTS + 1;
+    return lead_count(s) + 1 + NOUTS + 2;
 }
 
 static const char *const start_lead[] = {"case", "curve", "start_time_s", "delay_s",
@@ -97,8 +98,12 @@ static const char *column_at(const bd_study *s, int i, const char **fmt)
         *fmt = outs[i - 1].fmt;
         return outs[i - 1].name;
     }
-    *fmt = "%.2f";
-    return "wall_time_s";
+    if (i == NOUTS + 1) {
+        *fmt = "%.2f";
+        return "wall_time_s";
+    }
+    *fmt = "%s";
+    return "message";
 }
 
 int bd_study_column(const bd_study *s, const bd_study_case *c, const char *col, double *num,
@@ -113,6 +118,10 @@ int bd_study_column(const bd_study *s, const bd_study_case *c, const char *col, 
     }
     if (strcmp(col, "status") == 0) {
         *text = bd_study_status_word(c->status);
+        return 2;
+    }
+    if (strcmp(col, "message") == 0) {
+        *text = c->message;
         return 2;
     }
     if (strcmp(col, "wall_time_s") == 0) {
@@ -167,6 +176,20 @@ static int is_int_column(const char *name)
     return strcmp(name, "slipped") == 0;
 }
 
+/* a text field, quoted (RFC 4180) when it holds a comma, a quote or a
+ * line break: a failed case's message may */
+static void csv_field(bd_strbuf *b, const char *text)
+{
+    if (!strpbrk(text, ",\"\r\n")) {
+        bd_sb_puts(b, text);
+        return;
+    }
+    bd_sb_puts(b, "\"");
+    for (const char *p = text; *p; p++)
+        bd_sb_printf(b, *p == '"' ? "\"\"" : "%c", *p);
+    bd_sb_puts(b, "\"");
+}
+
 static void csv_text(const bd_study *s, bd_strbuf *out)
 {
     bd_strbuf b = {0};
@@ -187,7 +210,7 @@ static void csv_text(const bd_study *s, bd_strbuf *out)
                 bd_sb_puts(&b, ",");
             int kind = bd_study_column(s, c, name, &v, &text);
             if (kind == 2)
-                bd_sb_puts(&b, text);
+                csv_field(&b, text);
             else if (is_int_column(name))
                 bd_sb_printf(&b, fmt, (int)v);
             else

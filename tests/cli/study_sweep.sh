@@ -118,8 +118,19 @@ else bad "Latin hypercube" "exit $r1 $r2 $r3: $(tail -2 "$work/s1.out")"; fi
 rc=$?
 if [ $rc -eq 1 ] && grep -q "case_002.*time_step" "$work/f.err" \
     && grep -q "^case_001,0.0001,completed," "$work/f/study.csv" \
-    && grep -q "^case_002,0.01,bad input," "$work/f/study.csv"; then
-    ok "a failed case is in the table, the other completes, exit 1"
+    && grep -q "^case_002,0.01,bad input," "$work/f/study.csv" \
+    && python3 - "$work/f" <<'PY'
+import csv, json, sys
+rows = {r["case"]: r for r in csv.DictReader(open(sys.argv[1] + "/study.csv"))}
+cases = {c["case"]: c for c in json.load(open(sys.argv[1] + "/study.json"))["cases"]}
+# the failed case says why in the table (quoted CSV, the same text in the
+# JSON); the completed one has an empty message
+assert "time_step" in rows["case_002"]["message"], rows["case_002"]
+assert cases["case_002"]["message"] == rows["case_002"]["message"]
+assert rows["case_001"]["message"] == "" and cases["case_001"]["message"] == ""
+PY
+then
+    ok "a failed case is in the table with its message, the other completes, exit 1"
 else
     bad "failed case" "exit $rc: $(cat "$work/f/study.csv" "$work/f.err" 2>&1 | head -c 600)"
 fi
