@@ -60,7 +60,7 @@ static int where_number(const char *s, double *x)
     return *s && *end == '\0' ? 0 : -1;
 }
 
-static const char *best_column(const bd_study *s)
+const char *bd_study_best_column(const bd_study *s)
 {
     const char *col = s->opt->best;
     return strncmp(col, "max:", 4) == 0 ? col + 4 : col;
@@ -79,7 +79,7 @@ int bd_study_best_check(const bd_study *s, char *err, size_t errlen)
     if (!o->best)
         return 0;
     bd_study_column_names(s, names, sizeof names);
-    int kind = bd_study_column(s, NULL, best_column(s), &x, &t);
+    int kind = bd_study_column(s, NULL, bd_study_best_column(s), &x, &t);
     if (kind != 1) {
         snprintf(err, errlen, "--best %s: %s; the numeric columns are among: %s", o->best,
                  kind == 2 ? "a text column has no lowest value" : "no such column", names);
@@ -130,7 +130,7 @@ static int meets(const bd_study *s, const bd_study_case *c, const bd_study_where
 
 int bd_study_best_find(const bd_study *s)
 {
-    const char *col = best_column(s);
+    const char *col = bd_study_best_column(s);
     int highest = strncmp(s->opt->best, "max:", 4) == 0, best = -1;
     double best_v = 0.0;
     for (int j = 0; j < s->n; j++) {
@@ -157,7 +157,7 @@ void bd_study_best_describe(const bd_study *s, char *buf, size_t len)
     const bd_study_options *o = s->opt;
     size_t n = (size_t)snprintf(buf, len, "%s %s",
                                 strncmp(o->best, "max:", 4) == 0 ? "highest" : "lowest",
-                                best_column(s));
+                                bd_study_best_column(s));
     for (int i = 0; i < o->nwhere && n < len; i++)
         n += (size_t)snprintf(buf + n, len - n, "%s%s%s%s", i ? " and " : " where ",
                               o->where[i].column, op_text[o->where[i].op], o->where[i].value);

@@ -620,7 +620,7 @@ static int finish(study_run *R, int runner_status, char *err, size_t errlen)
         if (s->best >= 0) {
             const bd_study_case *c = &s->cases[s->best];
             double v = 0.0;
-            const char *t, *col = strncmp(o->best, "max:", 4) == 0 ? o->best + 4 : o->best;
+            const char *t, *col = bd_study_best_column(s);
             bd_study_column(s, c, col, &v, &t);
             size_t n = (size_t)snprintf(line, sizeof line, "best (%s): %s, %s = %.6g", what,
                                         c->name, col, v);

@@ -77,6 +77,8 @@ int bd_study_best_check(const bd_study *s, char *err, size_t errlen);
 int bd_study_best_find(const bd_study *s);
 /* "lowest tight_tension_max_N where slipped=false" */
 void bd_study_best_describe(const bd_study *s, char *buf, size_t len);
+/* the column --best names, without its "max:" */
+const char *bd_study_best_column(const bd_study *s);
 
 /* case_cost.c: the estimated wall time of a run of def over duration s,
  * in seconds of this machine (relative: it orders the cases) */

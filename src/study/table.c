@@ -279,9 +279,7 @@ static char *json_text(const bd_study *s)
         cJSON_AddStringToObject(b, "asked", what);
         if (s->best >= 0) {
             double v = 0.0;
-            const char *text, *col = s->opt->best;
-            if (strncmp(col, "max:", 4) == 0)
-                col += 4;
+            const char *text, *col = bd_study_best_column(s);
             cJSON_AddStringToObject(b, "case", s->cases[s->best].name);
             if (bd_study_column(s, &s->cases[s->best], col, &v, &text) == 1)
                 bd_json_add_number(b, "value", v);
