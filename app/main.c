@@ -1,4 +1,6 @@
 /* beltdyn: the command line (spec/cli.md). Only the public API is used. */
+#include <dirent.h>
+#include <errno.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -69,7 +71,7 @@ static int usage(FILE *f)
     fprintf(f,
             "usage: beltdyn check MODEL.yaml\n"
             "       beltdyn static MODEL.yaml [--json]\n"
-            "       beltdyn run MODEL.yaml [-o DIR] [--quiet] [--hdf5]\n"
+            "       beltdyn run MODEL.yaml [-o DIR] [--quiet] [--hdf5] [--force]\n"
             "       beltdyn report DIR\n"
             "       beltdyn study MODEL.yaml [-o DIR] [--curves LIST] [--times LIST]\n"
             "                     [--delays LIST] [--after S] [-j N] [--resume] [--force]\n"
@@ -83,7 +85,9 @@ static int usage(FILE *f)
             "  static  design-standard tensions (DIN 22101, ISO 5048, CEMA)\n"
             "  run     transient simulation; writes summary.json, history.csv,\n"
             "          tension.csv and envelope.csv into DIR (default ./out);\n"
-            "          --hdf5 also writes the tension field to DIR/tension.h5\n"
+            "          --hdf5 also writes the tension field to DIR/tension.h5;\n"
+            "          a DIR that is not empty must hold an earlier run (whose\n"
+            "          report and plots are then removed), else --force\n"
             "  report  plots and report.html from a finished run's DIR, or the\n"
             "          comparison of a study's DIR (start curves, or a sweep's\n"
             "          outputs against its keys and their sensitivity ranking)\n"
@@ -185,10 +189,94 @@ static int cmd_static(int argc, char **argv)
     return 0;
 }
 
+/* the files a run writes (cli.md): a directory holding one of them holds
+ * a run */
+static const char *const run_files[] = {"summary.json", "history.csv", "tension.csv",
+                                        "envelope.csv"};
+#define RUN_FILE_COUNT ((int)(sizeof run_files / sizeof run_files[0]))
+
+/* what -o DIR holds: 1 nothing (or it does not exist), 2 an earlier run,
+ * 0 something else, -1 it is not a directory we can read */
+static int run_dir_state(const char *dir)
+{
+    DIR *d = opendir(dir);
+    if (!d)
+        return errno == ENOENT ? 1 : -1;
+    int empty = 1, run = 0;
+    struct dirent *e;
+    while ((e = readdir(d)) != NULL) {
+        if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
+            continue;
+        empty = 0;
+        for (int k = 0; k < RUN_FILE_COUNT; k++)
+            run = run || strcmp(e->d_name, run_files[k]) == 0;
+    }
+    closedir(d);
+    return empty ? 1 : (run ? 2 : 0);
+}
+
+/* an earlier run's report, plots and HDF5 file describe that run, not the
+ * new one: removed before it starts (the run files are rewritten) */
+static void remove_stale(const char *dir)
+{
+    char path[4096];
+    snprintf(path, sizeof path, "%s/report.html", dir);
+    remove(path);
+    snprintf(path, sizeof path, "%s/tension.h5", dir);
+    remove(path);
+    snprintf(path, sizeof path, "%s/plots", dir);
+    DIR *d = opendir(path);
+    if (!d)
+        return;
+    struct dirent *e;
+    while ((e = readdir(d)) != NULL) {
+        size_t n = strlen(e->d_name);
+        if (n > 4 && (strcmp(e->d_name + n - 4, ".png") == 0 || strcmp(e->d_name + n - 4, ".svg") == 0)) {
+            char f[4400];
+            snprintf(f, sizeof f, "%s/%s", path, e->d_name);
+            remove(f);
+        }
+    }
+    closedir(d);
+    rmdir(path);   /* only if nothing else is in it */
+}
+
+/* the end-of-run summary on a terminal (cli.md): the peak tension, where
+ * and when, its safety factor, slip, takeup travel, warnings */
+static void print_summary(const bd_sim *sim, const bd_model_def *def, FILE *f)
+{
+    bd_run_result r;
+    bd_sim_result(sim, &r);
+    fprintf(f, "peak belt tension %.2f kN at s = %.1f m, t = %.2f s", r.tension_max_N / 1e3,
+            r.tension_max_s_m, r.tension_max_t_s);
+    if (def->belt.rated_tension > 0.0 && r.tension_max_N > 0.0)
+        fprintf(f, ", safety factor %.2f against the rated %.0f kN",
+                def->belt.rated_tension / r.tension_max_N, def->belt.rated_tension / 1e3);
+    fprintf(f, "\nlowest belt tension %.2f kN\n", r.tension_min_N / 1e3);
+    if (r.drives > 0) {
+        if (r.slipped)
+            fprintf(f, "drive slip: yes, from t = %.2f s, longest %.2f s, up to %.3f m/s\n",
+                    r.slip_t_s, r.slip_longest_s, r.slip_speed_max_mps);
+        else
+            fprintf(f, "drive slip: no\n");
+        if (r.torque_max_Nm >= 1e4)
+            fprintf(f, "peak drive torque %.1f kN·m\n", r.torque_max_Nm / 1e3);
+        else
+            fprintf(f, "peak drive torque %.4g N·m\n", r.torque_max_Nm);
+    }
+    for (int p = 0; p < bd_sim_pulley_count(sim); p++) {
+        bd_takeup_state tk;
+        if (bd_sim_takeup(sim, p, &tk) == 0)
+            fprintf(f, "takeup '%s': travel %.3f to %.3f m\n", def->pulleys[p].name,
+                    tk.travel_min_m, tk.travel_max_m);
+    }
+    fprintf(f, "warnings: %d\n", bd_sim_warning_count(sim));
+}
+
 static int cmd_run(int argc, char **argv)
 {
     const char *path = NULL, *dir = "out";
-    int quiet = 0, hdf5 = 0;
+    int quiet = 0, hdf5 = 0, force = 0;
     for (int i = 0; i < argc; i++) {
         if (strcmp(argv[i], "-o") == 0 && i + 1 < argc)
             dir = argv[++i];
@@ -196,6 +284,8 @@ static int cmd_run(int argc, char **argv)
             quiet = 1;
         else if (strcmp(argv[i], "--hdf5") == 0)
             hdf5 = 1;
+        else if (strcmp(argv[i], "--force") == 0)
+            force = 1;
         else if (!path && argv[i][0] != '-')
             path = argv[i];
         else
@@ -208,6 +298,21 @@ static int cmd_run(int argc, char **argv)
     int rc = load_model(path, &def, &sim);
     if (rc != 0)
         return rc;
+    /* cli.md: never into a directory that holds something else */
+    int state = run_dir_state(dir);
+    if (state < 0 || (state == 0 && !force)) {
+        if (state < 0)
+            fprintf(stderr, "beltdyn: '%s' is not a directory that can be read\n", dir);
+        else
+            fprintf(stderr, "beltdyn: '%s' is not empty and holds no run (no summary.json, "
+                    "history.csv, tension.csv or envelope.csv): give another -o DIR, or "
+                    "--force to write into it\n", dir);
+        bd_sim_free(sim);
+        bd_model_def_free(&def);
+        return 2;
+    }
+    if (state != 1)
+        remove_stale(dir);
     struct sigaction sa;
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = on_sigint;
@@ -222,6 +327,9 @@ static int cmd_run(int argc, char **argv)
     rc = bd_sim_run(sim, &opt, err, sizeof err);
     if (rc != BD_RUN_OK)
         fprintf(stderr, "beltdyn: %s%s\n", rc == BD_RUN_FAILED ? "error: " : "", err);
+    if ((rc == BD_RUN_OK || rc == BD_RUN_FAILED || rc == BD_RUN_INTERRUPTED) && !quiet
+        && isatty(STDOUT_FILENO))
+        print_summary(sim, &def, stdout);
     bd_sim_free(sim);
     bd_model_def_free(&def);
     return rc;
@@ -437,6 +545,10 @@ int main(int argc, char **argv)
         return cmd_report(argc - 2, argv + 2);
     if (strcmp(cmd, "study") == 0)
         return cmd_study(argc - 2, argv + 2);
+    if (strcmp(cmd, "--version") == 0) {
+        printf("beltdyn %s\n", bd_version());
+        return 0;
+    }
     if (strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0 || strcmp(cmd, "help") == 0) {
         usage(stdout);
         return 0;

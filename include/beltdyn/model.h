@@ -26,6 +26,9 @@ typedef struct bd_diag {
     char **lines;       /* [count + warning_count] owned strings */
 } bd_diag;
 
+/* the library's version, "MAJOR.MINOR.PATCH" */
+const char *bd_version(void);
+
 void bd_diag_init(bd_diag *d);
 void bd_diag_free(bd_diag *d);
 /* append "FILE:LINE:COL: error: MSG" (printf-style MSG) */

@@ -124,6 +124,7 @@ typedef struct bd_run_result {
     double slip_speed_max_mps;     /* largest |surface − belt| speed */
     double travel_range_m;         /* largest (max − min) over the takeups */
     double tension_max_N, tension_min_N;  /* anywhere in the belt */
+    double tension_max_t_s, tension_max_s_m;  /* when and where the largest was */
 } bd_run_result;
 
 void bd_sim_result(const bd_sim *sim, bd_run_result *r);

@@ -1,0 +1,66 @@
+#!/usr/bin/env bash
+# The run command's directory contract and its terminal summary (cli.md):
+# `--version` prints the version and exits 0; `run -o DIR` refuses a DIR
+# that holds something other than a run (exit 2, nothing written) unless
+# --force; into an earlier run's DIR it writes anew and removes that run's
+# report and plots, which no longer describe the outputs; on a terminal it
+# ends with a summary (peak tension, where and when, slip, torque, takeup,
+# warnings), and not when stdout is a file (nor with --quiet: cli_run_outputs).
+set -u
+: "${BELTDYN:?BELTDYN must name the built beltdyn}"
+EXAMPLES="${EXAMPLES:-$(cd "$(dirname "$0")/../../examples" && pwd)}"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+passed=0
+failed=0
+ok() { echo "ok   $1"; passed=$((passed + 1)); }
+bad() { echo "FAIL $1: $2"; failed=$((failed + 1)); }
+model="$EXAMPLES/flat_belt_drive.yaml"
+
+out=$("$BELTDYN" --version)
+rc=$?
+if [ $rc -eq 0 ] && echo "$out" | grep -Eq '^beltdyn [0-9]+\.[0-9]+\.[0-9]+$'; then
+    ok "--version: $out"
+else bad "--version" "exit $rc: $out"; fi
+
+mkdir -p "$tmp/other" && echo notes >"$tmp/other/notes.txt"
+"$BELTDYN" run "$model" -o "$tmp/other" --quiet >"$tmp/o.out" 2>"$tmp/o.err"
+rc=$?
+if [ $rc -eq 2 ] && grep -q "not empty and holds no run" "$tmp/o.err" \
+    && [ "$(ls "$tmp/other")" = "notes.txt" ]; then
+    ok "a DIR holding something else is refused (exit 2), nothing written"
+else bad "refusal" "exit $rc: $(ls "$tmp/other") $(cat "$tmp/o.err")"; fi
+
+"$BELTDYN" run "$model" -o "$tmp/other" --quiet --force >/dev/null 2>&1
+rc=$?
+if [ $rc -eq 0 ] && [ -f "$tmp/other/summary.json" ] && [ -f "$tmp/other/notes.txt" ]; then
+    ok "--force writes into it, leaving its other files"
+else bad "--force" "exit $rc: $(ls "$tmp/other")"; fi
+
+"$BELTDYN" run "$model" -o "$tmp/run" --quiet >/dev/null 2>&1 && "$BELTDYN" report "$tmp/run" >/dev/null 2>&1
+if [ -f "$tmp/run/report.html" ] && ls "$tmp/run/plots/"*.png >/dev/null 2>&1; then
+    "$BELTDYN" run "$model" -o "$tmp/run" --quiet >/dev/null 2>&1
+    rc=$?
+    if [ $rc -eq 0 ] && [ -f "$tmp/run/summary.json" ] && [ ! -e "$tmp/run/report.html" ] \
+        && [ ! -e "$tmp/run/plots" ]; then
+        ok "a second run into a run's DIR: written anew, the stale report and plots removed"
+    else bad "rerun" "exit $rc: $(ls "$tmp/run")"; fi
+else bad "rerun" "the first run and report did not write report.html and plots"; fi
+
+"$BELTDYN" run "$model" -o "$tmp/file" --quiet >"$tmp/file.out" 2>/dev/null
+if [ ! -s "$tmp/file.out" ]; then ok "no summary when stdout is not a terminal"
+else bad "summary to a file" "$(head -3 "$tmp/file.out")"; fi
+
+if command -v script >/dev/null 2>&1; then
+    script -qec "\"$BELTDYN\" run \"$model\" -o \"$tmp/tty\"" /dev/null >"$tmp/tty.out" 2>&1
+    rc=$?
+    if [ $rc -eq 0 ] && grep -q "peak belt tension .* kN at s = .* m, t = .* s" "$tmp/tty.out" \
+        && grep -q "drive slip: " "$tmp/tty.out" && grep -q "warnings: [0-9]" "$tmp/tty.out"; then
+        ok "on a terminal: $(tr -d '\r' <"$tmp/tty.out" | grep -v "^ *t = " | tr '\n' ';' | head -c 200)"
+    else bad "terminal summary" "exit $rc: $(head -c 400 "$tmp/tty.out")"; fi
+else
+    echo "skipped: no script(1) to make a terminal"
+fi
+
+echo "$passed passed, $failed failed"
+[ $failed -eq 0 ]
