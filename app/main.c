@@ -217,28 +217,32 @@ static int run_dir_state(const char *dir)
 
 /* an earlier run's report, plots and HDF5 file describe that run, not the
  * new one: removed before it starts (the run files are rewritten) */
-static void remove_stale(const char *dir)
+static void remove_in(const char *dir, const char *name)
 {
     char path[4096];
-    snprintf(path, sizeof path, "%s/report.html", dir);
-    remove(path);
-    snprintf(path, sizeof path, "%s/tension.h5", dir);
-    remove(path);
-    snprintf(path, sizeof path, "%s/plots", dir);
-    DIR *d = opendir(path);
+    int n = snprintf(path, sizeof path, "%s/%s", dir, name);
+    if (n > 0 && (size_t)n < sizeof path)   /* never a name cut short */
+        remove(path);
+}
+
+static void remove_stale(const char *dir)
+{
+    remove_in(dir, "report.html");
+    remove_in(dir, "tension.h5");
+    char plots[4096];
+    int n = snprintf(plots, sizeof plots, "%s/plots", dir);
+    DIR *d = n > 0 && (size_t)n < sizeof plots ? opendir(plots) : NULL;
     if (!d)
         return;
     struct dirent *e;
     while ((e = readdir(d)) != NULL) {
-        size_t n = strlen(e->d_name);
-        if (n > 4 && (strcmp(e->d_name + n - 4, ".png") == 0 || strcmp(e->d_name + n - 4, ".svg") == 0)) {
-            char f[4400];
-            snprintf(f, sizeof f, "%s/%s", path, e->d_name);
-            remove(f);
-        }
+        size_t len = strlen(e->d_name);
+        if (len > 4 && (strcmp(e->d_name + len - 4, ".png") == 0
+                        || strcmp(e->d_name + len - 4, ".svg") == 0))
+            remove_in(plots, e->d_name);
     }
     closedir(d);
-    rmdir(path);   /* only if nothing else is in it */
+    rmdir(plots);   /* only if nothing else is in it */
 }
 
 /* the end-of-run summary on a terminal (cli.md): the peak tension, where

@@ -13,7 +13,8 @@
  * acceleration of the belt passing a fixed node ∂v/∂t + v·∂v/∂s):
  *   m_i·∂v_i/∂t = T_i·cos_i − T_{i−1}·cos_{i−1} + W_i − m_i·v_i·∂v/∂s
  *                 − f_r·N_i·sat(v_i/v_0) [idler] − m'_L·v_i² [feed] + F_i [pulley]
- * with ∂v/∂s upwind. Only the elastic part at t goes into fx here; the
+ * with m·v·∂v/∂s in skew-symmetric form plus its upwind diffusion
+ * (convective(), below). Only the elastic part at t goes into fx here; the
  * dashpots, the elastic increment over the step and the pulley friction
  * are the implicit solve's (solve.c).
  *
