@@ -253,9 +253,13 @@ static void print_summary(const bd_sim *sim, const bd_model_def *def, FILE *f)
     bd_sim_result(sim, &r);
     fprintf(f, "peak belt tension %.2f kN at s = %.1f m, t = %.2f s", r.tension_max_N / 1e3,
             r.tension_max_s_m, r.tension_max_t_s);
-    if (def->belt.rated_tension > 0.0 && r.tension_max_N > 0.0)
-        fprintf(f, ", safety factor %.2f against the rated %.0f kN",
-                def->belt.rated_tension / r.tension_max_N, def->belt.rated_tension / 1e3);
+    if (def->belt.rated_tension > 0.0 && r.tension_max_N > 0.0) {
+        double sf = def->belt.rated_tension / r.tension_max_N;
+        fprintf(f, ",\n  safety factor %.2f against the rated %.0f kN (%s: at least %.3g in "
+                "starts and stops)", sf, def->belt.rated_tension / 1e3,
+                sf >= def->design.safety_factor.starting ? "pass" : "FAIL",
+                def->design.safety_factor.starting);
+    }
     fprintf(f, "\nlowest belt tension %.2f kN\n", r.tension_min_N / 1e3);
     if (r.drives > 0) {
         if (r.slipped)

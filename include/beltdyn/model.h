@@ -214,6 +214,12 @@ typedef struct bd_cema_def {
     double Kx_extra;/* reserved: user override of Kx, N/m; <0 = compute */
 } bd_cema_def;
 
+/* allowable belt tension = belt.rated_tension / factor: in steady running
+ * (the static calculation) and during starts and stops (a run's peak) */
+typedef struct bd_safety_factor_def {
+    double running, starting;
+} bd_safety_factor_def;
+
 typedef struct bd_design_def {
     int present;
     bd_standard standard;
@@ -222,6 +228,7 @@ typedef struct bd_design_def {
     double speed;      /* m/s design speed; 0 = the drive's speed */
     double sag_ratio;  /* admissible h/a */
     bd_cema_def cema;
+    bd_safety_factor_def safety_factor;
     bd_mark mark;
 } bd_design_def;
 

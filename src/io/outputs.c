@@ -263,6 +263,11 @@ static int write_summary(bd_outputs *o, const bd_sim *sim, double wall, const ch
                             bd_time_step_limit_name(sim->model->limit_kind));
     if (def->belt.rated_tension > 0.0)
         bd_json_add_number(root, "rated_tension_N", def->belt.rated_tension);
+    /* design.safety_factor; the run's peak is judged by the starting one */
+    bd_json_add_number(root, "safety_factor_running", def->design.safety_factor.running);
+    bd_json_add_number(root, "safety_factor_starting", def->design.safety_factor.starting);
+    if (def->belt.rated_tension > 0.0 && sim->tension_max > 0.0)
+        bd_json_add_number(root, "peak_safety_factor", def->belt.rated_tension / sim->tension_max);
     cJSON *ten = cJSON_AddObjectToObject(root, "tension");
     bd_json_add_number(ten, "max_N", sim->tension_max);
     bd_json_add_number(ten, "max_time_s", sim->tension_max_t);

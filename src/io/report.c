@@ -22,7 +22,9 @@
 #define MAX_GROUP BD_PLOT_MAX_SERIES
 #define FIG_W 1200
 #define FIG_H 700
-#define SAFETY_FACTOR_DEFAULT 6.7
+/* a summary.json from before design.safety_factor: its default for starts
+ * and stops, which a run's peak is judged by */
+#define SAFETY_FACTOR_DEFAULT 4.8
 #define MAX_LABELS 128
 
 /* ---- small helpers ---- */
@@ -424,8 +426,9 @@ static int plot_envelope(report *r, char *err, size_t errlen)
         double allow_N = r->rated_N / r->safety_factor;
         fmt_num(v, sizeof v, allow_N / u.scale);
         fmt_num(v2, sizeof v2, r->rated_N / u.scale);
-        snprintf(allow, LABEL_LEN, "allowable %s %s = rated %s %s / safety factor %.3g%s", v,
-                 u.name, v2, u.name, r->safety_factor, r->sf_default ? " (default)" : "");
+        snprintf(allow, LABEL_LEN, "allowable in starts and stops %s %s = rated %s %s / "
+                 "safety factor %.3g%s", v, u.name, v2, u.name, r->safety_factor,
+                 r->sf_default ? " (default)" : "");
         bd_plot_add_hline(a, allow_N / u.scale, allow, (bd_rgb){0.80, 0.0, 0.0}, 1);
     }
     if (isfinite(r->t_min_sag_N)) {
@@ -946,7 +949,8 @@ static void headline(report *r, bd_strbuf *b)
         snprintf(v, sizeof v, "%s %s", num, u.name);
         int n = snprintf(d, sizeof d, "at t = %.3g s, s = %.1f m", r->tmax.t, r->tmax.s);
         if (isfinite(allow) && n > 0 && (size_t)n < sizeof d)
-            snprintf(d + n, sizeof d - (size_t)n, "; %.0f %% of allowable (rated / %.3g%s)",
+            snprintf(d + n, sizeof d - (size_t)n, "; %.0f %% of the allowable in starts and "
+                     "stops (rated / %.3g%s)",
                      100.0 * r->tmax.value / allow, r->safety_factor,
                      r->sf_default ? ", default" : "");
         card(b, isfinite(allow) ? (r->tmax.value > allow ? "bad" : "ok") : NULL,
@@ -1161,7 +1165,9 @@ static int read_summary(report *r, char *err, size_t errlen)
     /* design limits: top level, else from the static table */
     const cJSON *stat = cJSON_GetObjectItemCaseSensitive(r->summary, "static");
     r->rated_N = json_num(r->summary, "rated_tension_N");
-    r->safety_factor = json_num(r->summary, "safety_factor");
+    r->safety_factor = json_num(r->summary, "safety_factor_starting");
+    if (!(r->safety_factor > 0.0))
+        r->safety_factor = json_num(r->summary, "safety_factor");   /* older outputs */
     r->t_min_sag_N = json_num(r->summary, "T_min_sag_N");
     if (!isfinite(r->t_min_sag_N)) r->t_min_sag_N = json_num(stat, "T_min_sag_N");
     if (!isfinite(r->rated_N)) r->rated_N = json_num(stat, "rated_tension_N");

@@ -122,6 +122,15 @@ int bd_sim_run(bd_sim *sim, const bd_run_options *opt, char *err, size_t errlen)
         bd_sim_warn(sim, "the belt is in compression (lowest tension %.0f N at t = %.3f s, "
                     "s = %.2f m): raise the takeup force", sim->tension_min, sim->tension_min_t,
                     sim->tension_min_s);
+    /* the peak against the allowable during starts and stops
+     * (design.safety_factor.starting) */
+    const bd_model_def *def = sim->model->def;
+    double allow = def->belt.rated_tension / def->design.safety_factor.starting;
+    if (def->belt.rated_tension > 0.0 && sim->tension_max > allow && !stabilize_ended)
+        bd_sim_warn(sim, "belt strength: peak tension %.0f N at t = %.3f s, s = %.2f m exceeds "
+                    "the allowable during starts and stops, rated %.0f N / safety factor %.3g "
+                    "= %.0f N", sim->tension_max, sim->tension_max_t, sim->tension_max_s,
+                    def->belt.rated_tension, def->design.safety_factor.starting, allow);
     const char *word = status == BD_RUN_OK ? "completed"
                      : status == BD_RUN_FAILED ? "failed" : "interrupted";
     if (bd_outputs_close(&out, sim, bd_wall_seconds() - wall0, word) && status == BD_RUN_OK) {

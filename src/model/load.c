@@ -885,6 +885,12 @@ static void design_post(ctx *c, const fieldset *fs, yaml_node_t *const *found, b
     ((bd_design_def *)base)->mark = at;
 }
 
+static const field safety_fields[] = {
+    POS("running", bd_safety_factor_def, running, 0),
+    POS("starting", bd_safety_factor_def, starting, 0),
+};
+FIELDSET(safety_fs, safety_fields, NULL);
+
 static const char *const standard_names[] = {"din22101", "iso5048", "cema", NULL};
 static const field design_fields[] = {
     ENUM("standard", bd_design_def, standard, 0, standard_names, NULL),
@@ -893,6 +899,7 @@ static const field design_fields[] = {
     POS("speed", bd_design_def, speed, 0),
     POS("sag_ratio", bd_design_def, sag_ratio, 0),
     MAP("cema", bd_design_def, cema, 0, &cema_fs),
+    MAP("safety_factor", bd_design_def, safety_factor, 0, &safety_fs),
 };
 FIELDSET(design_fs, design_fields, design_post);
 

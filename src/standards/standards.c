@@ -388,10 +388,17 @@ static void checks(bd_std_ctx *c)
         bd_std_warn(r, "slack belt: the tension falls to %.0f N (compression) on the path; "
                        "raise the takeup force", r->T_min_N);
 
-    /* belt strength */
+    /* belt strength: the steady-running tension against the rated one
+     * over the running safety factor (design.safety_factor) */
     if (m->belt.rated_tension > 0.0 && r->T_max_N > m->belt.rated_tension)
         bd_std_warn(r, "belt overloaded: maximum tension %.0f N exceeds the rated tension %.0f N",
                     r->T_max_N, m->belt.rated_tension);
+    else if (m->belt.rated_tension > 0.0
+             && r->T_max_N > m->belt.rated_tension / m->design.safety_factor.running)
+        bd_std_warn(r, "belt strength: maximum tension %.0f N exceeds the allowable in steady "
+                       "running, rated %.0f N / safety factor %.3g = %.0f N",
+                    r->T_max_N, m->belt.rated_tension, m->design.safety_factor.running,
+                    m->belt.rated_tension / m->design.safety_factor.running);
 
     /* regenerative */
     if (Te < 0.0) {

@@ -11,10 +11,7 @@ set -u
 EXAMPLES="${EXAMPLES:-$(cd "$(dirname "$0")/../../examples" && pwd)}"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-passed=0
-failed=0
-ok() { echo "ok   $1"; passed=$((passed + 1)); }
-bad() { echo "FAIL $1: $2"; failed=$((failed + 1)); }
+. "$(dirname "$0")/lib/tally.sh"
 model="$EXAMPLES/flat_belt_drive.yaml"
 
 out=$("$BELTDYN" --version)
@@ -62,5 +59,4 @@ else
     echo "skipped: no script(1) to make a terminal"
 fi
 
-echo "$passed passed, $failed failed"
-[ $failed -eq 0 ]
+tally

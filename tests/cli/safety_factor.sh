@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# design.safety_factor (model-format.md): the allowable belt tension is
+# belt.rated_tension / factor, the running one for the static calculation's
+# steady tensions, the starting one for a run's peak. examples/head_drive
+# (rated 100 kN; static maximum 15.16 kN, above 100/6.7 = 14.93 kN; the
+# start's peak 21.7 kN, above 100/4.8 = 20.83 kN) warns in both, and says
+# it in summary.json (safety_factor_running, _starting, peak_safety_factor
+# = rated / peak); with {running: 6, starting: 4} neither warns. A factor
+# that is not a positive number is a model error with its line and column.
+set -u
+: "${BELTDYN:?BELTDYN must name the built beltdyn}"
+EXAMPLES="${EXAMPLES:-$(cd "$(dirname "$0")/../../examples" && pwd)}"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/lib/tally.sh"
+
+sed -e 's/^\(  duration:\).*/\1 5/' "$EXAMPLES/head_drive.yaml" >"$tmp/default.yaml"
+grep -q '^design:' "$tmp/default.yaml" || { echo "FAIL head_drive has no design section"; exit 1; }
+sed -e 's/^design:/design:\n  safety_factor: {running: 6, starting: 4}/' "$tmp/default.yaml" >"$tmp/lower.yaml"
+sed -e 's/^design:/design:\n  safety_factor: {running: 0, starting: 4}/' "$tmp/default.yaml" >"$tmp/bad.yaml"
+
+"$BELTDYN" static "$tmp/default.yaml" --json >"$tmp/s1.json" 2>/dev/null
+"$BELTDYN" static "$tmp/lower.yaml" --json >"$tmp/s2.json" 2>/dev/null
+# the warnings that name WORDS in the default model's and the lower one's
+# JSON (a file's own warnings, or summary.json's): one with TEXT, none
+warned() {
+    python3 - "$1" "$2" "$3" "$4" <<'PY'
+import json, sys
+a, b = (json.load(open(p)) for p in sys.argv[1:3])
+words, text = sys.argv[3:]
+wa = [w for w in a["warnings"] if words in w]
+wb = [w for w in b["warnings"] if words in w]
+assert len(wa) == 1 and text in wa[0], a["warnings"]
+assert not wb, b["warnings"]
+PY
+}
+if warned "$tmp/s1.json" "$tmp/s2.json" "allowable in steady running" "/ safety factor 6.7 = 14925 N"
+then ok "static: above rated/6.7 warns, with running: 6 it does not"
+else bad "static" "$(cat "$tmp/s1.json" | head -c 600)"; fi
+
+"$BELTDYN" run "$tmp/default.yaml" -o "$tmp/r1" --quiet >/dev/null 2>"$tmp/r1.err"
+rc1=$?
+"$BELTDYN" run "$tmp/lower.yaml" -o "$tmp/r2" --quiet >/dev/null 2>"$tmp/r2.err"
+rc2=$?
+if [ $rc1 -eq 0 ] && [ $rc2 -eq 0 ] && python3 - "$tmp/r1/summary.json" "$tmp/r2/summary.json" <<'PY' \
+    && warned "$tmp/r1/summary.json" "$tmp/r2/summary.json" "allowable during starts and stops" \
+              "safety factor 4.8 = 20833 N"
+import json, sys
+a, b = (json.load(open(p)) for p in sys.argv[1:])
+assert a["safety_factor_running"] == 6.7 and a["safety_factor_starting"] == 4.8, a
+assert b["safety_factor_running"] == 6 and b["safety_factor_starting"] == 4, b
+peak = a["tension"]["max_N"]
+assert abs(a["peak_safety_factor"] - 100000 / peak) < 1e-9 * 100000 / peak, a
+assert 100000 / 4.8 < peak < 100000 / 4.0, peak   # the case the test is built on
+PY
+then ok "run: the peak against rated/4.8 warns, against rated/4 not; the factors in summary.json"
+else bad "run" "exit $rc1 $rc2: $(head -c 400 "$tmp/r1.err")"; fi
+
+"$BELTDYN" check "$tmp/bad.yaml" >/dev/null 2>"$tmp/bad.err"
+rc=$?
+if [ $rc -eq 2 ] && grep -q "bad.yaml:[0-9]*:[0-9]*: error: design.safety_factor.running: expected a number > 0" "$tmp/bad.err"; then
+    ok "a factor of 0 is a model error: $(cat "$tmp/bad.err")"
+else bad "bad factor" "exit $rc: $(cat "$tmp/bad.err")"; fi
+
+tally
