@@ -229,6 +229,7 @@ typedef struct bd_design_def {
     double sag_ratio;  /* admissible h/a */
     bd_cema_def cema;
     bd_safety_factor_def safety_factor;
+    double efficiency;  /* coupling × gearbox, 0 < η ≤ 1: motor power = Te·v/η */
     bd_mark mark;
 } bd_design_def;
 

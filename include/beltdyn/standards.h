@@ -40,6 +40,7 @@ typedef struct bd_static_result {
     double main_N, secondary_N, slope_N, total_N;
     double effective_tension_N; /* N, Te = T1 - T2 over all drives; < 0 regenerative */
     double power_kW;            /* kW, Te * speed at the drive pulley(s) */
+    double motor_power_kW;      /* kW, power_kW / design.efficiency */
     double speed_mps;           /* m/s design speed (0: unknown, no power) */
     int regenerative;           /* 1 when Te < 0: the drive brakes */
     /* the drive: the first pulley with `drive`; Te is shared equally among

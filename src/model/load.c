@@ -900,6 +900,7 @@ static const field design_fields[] = {
     POS("sag_ratio", bd_design_def, sag_ratio, 0),
     MAP("cema", bd_design_def, cema, 0, &cema_fs),
     MAP("safety_factor", bd_design_def, safety_factor, 0, &safety_fs),
+    NUM("efficiency", bd_design_def, efficiency, GT, 0.0, 1.0),
 };
 FIELDSET(design_fs, design_fields, design_post);
 

@@ -198,6 +198,7 @@ bd_design_def bd_design_default(void)
     d.sag_ratio = 0.01;
     d.safety_factor.running = 6.7;
     d.safety_factor.starting = 4.8;
+    d.efficiency = 1.0;
     d.cema.Kt = 1.0;
     d.cema.Ai = 0.0;
     d.cema.Kx_extra = -1.0;

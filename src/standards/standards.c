@@ -595,6 +595,7 @@ int bd_static_compute(const bd_model_def *m, bd_static_result *out, bd_diag *dia
     out->speed_mps = c.speed;
     /* power at the drive pulley(s): P = Te·v (cli.md) */
     out->power_kW = out->effective_tension_N * c.speed / 1000.0;
+    out->motor_power_kW = out->power_kW / m->design.efficiency;
     out->drive_pulley = c.drive;
     out->drive_count = c.drive_count;
     {
@@ -654,6 +655,7 @@ void bd_static_print_table(const bd_static_result *r, const bd_model_def *m, FIL
     fprintf(f, "%-34s %14.1f%s\n", "effective tension Te (N)", r->effective_tension_N,
             r->regenerative ? "  regenerative" : "");
     fprintf(f, "%-34s %14.3f\n", "power at the drive (kW)", r->power_kW);
+    fprintf(f, "%-34s %14.3f\n", "motor power, / efficiency (kW)", r->motor_power_kW);
     fprintf(f, "%-34s %14.1f\n", "T1 tight side (N)", r->T1_N);
     fprintf(f, "%-34s %14.1f\n", "T2 slack side (N)", r->T2_N);
     fprintf(f, "%-34s %14.1f\n", "T2 minimum for no slip (N)", r->T2_min_slip_N);
@@ -706,6 +708,7 @@ char *bd_static_to_json(const bd_static_result *r, const bd_model_def *m)
     bd_json_add_number(res, "total", r->total_N);
     bd_json_add_number(o, "effective_tension_N", r->effective_tension_N);
     bd_json_add_number(o, "power_kW", r->power_kW);
+    bd_json_add_number(o, "motor_power_kW", r->motor_power_kW);
     bd_json_add_number(o, "T1_N", r->T1_N);
     bd_json_add_number(o, "T2_N", r->T2_N);
     bd_json_add_number(o, "T2_min_slip_N", r->T2_min_slip_N);

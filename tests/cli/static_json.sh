@@ -60,5 +60,17 @@ for h in 'effective tension Te (N)' 'power at the drive (kW)' 'length (m)' 'T st
     printf '%s' "$table" | grep -qF "$h" || { echo "FAIL table: no '$h'"; fail=1; }
 done
 
+# motor power = power at the drive / design.efficiency (1 by default)
+tmp_eff=$(mktemp)
+trap 'rm -f "$tmp_eff"' EXIT
+sed 's/^design:/design:\n  efficiency: 0.9/' "$DATA/static_horizontal.yaml" >"$tmp_eff"
+grep -q 'efficiency: 0.9' "$tmp_eff" || { echo "FAIL could not set the efficiency"; fail=1; }
+for f in "$DATA/static_horizontal.yaml:1" "$tmp_eff:0.9"; do
+    out=$("$BELTDYN" static "${f%:*}" --json)
+    p=$(num "$out" power_kW) mp=$(num "$out" motor_power_kW)
+    python3 -c "import sys; p, mp, e = map(float, sys.argv[1:]); sys.exit(abs(mp - p / e) > 1e-12 * p)" \
+        "$p" "$mp" "${f##*:}" || { echo "FAIL efficiency ${f##*:}: power $p, motor $mp"; fail=1; }
+done
+
 [ $fail -eq 0 ] && echo "static_json: ok"
 exit $fail
