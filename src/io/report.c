@@ -937,6 +937,31 @@ static void history_range(const char *dir, const char *column, double *lo, doubl
     bd_csv_free(&c);
 }
 
+/* the run's warnings and the static design's (summary.json "static"), one
+ * count for the card and the list */
+static const cJSON *static_warnings(const report *r)
+{
+    const cJSON *stat = cJSON_GetObjectItemCaseSensitive(r->summary, "static");
+    return cJSON_GetObjectItemCaseSensitive(stat, "warnings");
+}
+
+static int warning_count(const report *r)
+{
+    const cJSON *warn = cJSON_GetObjectItemCaseSensitive(r->summary, "warnings");
+    return cJSON_GetArraySize(warn) + cJSON_GetArraySize(static_warnings(r));
+}
+
+static void warning_items(bd_strbuf *b, const cJSON *list, const char *prefix)
+{
+    const cJSON *w;
+    cJSON_ArrayForEach(w, list) {
+        bd_sb_puts(b, "<li>");
+        bd_sb_puts(b, prefix);
+        html_value(b, w);
+        bd_sb_puts(b, "</li>\n");
+    }
+}
+
 static void headline(report *r, bd_strbuf *b)
 {
     char v[128], d[LABEL_LEN], lab[160];
@@ -1041,10 +1066,9 @@ static void headline(report *r, bd_strbuf *b)
         card(b, be > 0.01 ? "bad" : "ok", "energy balance error", v,
              "largest over the run, relative");
     }
-    const cJSON *warn = cJSON_GetObjectItemCaseSensitive(r->summary, "warnings");
-    int nw = cJSON_GetArraySize(warn);
+    int nw = warning_count(r);
     snprintf(v, sizeof v, "%d", nw);
-    snprintf(lab, sizeof lab, "%s", nw ? "see the list below" : "none");
+    snprintf(lab, sizeof lab, "%s", nw ? "the run's and the static design's, listed below" : "none");
     card(b, nw ? "bad" : "ok", "warnings", v, lab);
     bd_sb_puts(b, "</div>\n");
 }
@@ -1073,17 +1097,13 @@ static int write_html(report *r, char *err, size_t errlen)
 
     headline(r, &b);
 
-    /* warnings */
+    /* warnings: the run's, then the static design's */
     const cJSON *warn = cJSON_GetObjectItemCaseSensitive(r->summary, "warnings");
     bd_sb_puts(&b, "<h2 id=warnings>Warnings</h2>\n");
-    if (cJSON_GetArraySize(warn) > 0) {
-        const cJSON *w;
+    if (warning_count(r) > 0) {
         bd_sb_puts(&b, "<ul class=warn>\n");
-        cJSON_ArrayForEach(w, warn) {
-            bd_sb_puts(&b, "<li>");
-            html_value(&b, w);
-            bd_sb_puts(&b, "</li>\n");
-        }
+        warning_items(&b, warn, "");
+        warning_items(&b, static_warnings(r), "static design: ");
         bd_sb_puts(&b, "</ul>\n");
     } else {
         bd_sb_puts(&b, "<p class=none>No warnings.</p>\n");

@@ -167,7 +167,7 @@ static int write_fake(const char *dir, fake_opts o)
                 "    \"T2_min_slip_N\": 42000, \"T_min_sag_N\": 22000, \"takeup_force_N\": 100000,\n"
                 "    \"spans\": [{\"from\": \"DRIVE\", \"length_m\": 990, \"T_start_N\": 50000, \"T_end_N\": 35000},\n"
                 "              {\"from\": \"TAIL\", \"length_m\": 990, \"T_start_N\": 35000, \"T_end_N\": 120000}],\n"
-                "    \"warnings\": []},\n"
+                "    \"warnings\": [\"drive slips: pulley 'DRIVE' (static check)\"]},\n"
                 "  \"warnings\": [\"belt lifts off idler 12 at t = 2.31 s\", \"tension below T_min_sag at s = 1000 m\"]\n");
     } else {
         fprintf(fs, "  \"warnings\": []\n");
@@ -339,6 +339,10 @@ static void test_full_report(void)
         if (!strstr(h, want_peak)) fprintf(stderr, "report.html lacks '%s'\n", want_peak);
         CHECK(strstr(h, "Static design calculation") != NULL);
         CHECK(strstr(h, "belt lifts off idler 12") != NULL);
+        /* the static design's warnings are listed and counted with the
+         * run's (issue 15: a red card beside "warnings 0") */
+        CHECK(strstr(h, "static design: drive slips: pulley ") != NULL);
+        CHECK(strstr(h, "warnings</div><div class=v>3</div>") != NULL);
         CHECK(strstr(h, "takeup travel") != NULL);
         CHECK(strstr(h, "drive peak torque") != NULL);
         /* nothing from outside */
