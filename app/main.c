@@ -278,7 +278,23 @@ static void print_summary(const bd_sim *sim, const bd_model_def *def, FILE *f)
             fprintf(f, "takeup '%s': travel %.3f to %.3f m\n", def->pulleys[p].name,
                     tk.travel_min_m, tk.travel_max_m);
     }
-    fprintf(f, "warnings: %d\n", bd_sim_warning_count(sim));
+    /* counted as the report counts them: the run's and the static
+     * design's (summary.json "static") */
+    int static_warnings = 0;
+    if (def->design.present) {
+        bd_diag quiet;
+        bd_diag_init(&quiet);
+        bd_static_result st;
+        if (bd_static_compute(def, &st, &quiet) == 0) {
+            static_warnings = st.warning_count;
+            bd_static_free(&st);
+        }
+        bd_diag_free(&quiet);
+    }
+    fprintf(f, "warnings: %d", bd_sim_warning_count(sim) + static_warnings);
+    if (static_warnings > 0)
+        fprintf(f, " (%d of them the static design's: beltdyn static)", static_warnings);
+    fprintf(f, "\n");
 }
 
 static int cmd_run(int argc, char **argv)
