@@ -536,9 +536,13 @@ static int fill_panel(report *r, bd_plot_axes *a, const bd_csv *h, const group *
     return 1;
 }
 
-/* mark the largest value (or largest magnitude) over a panel's series */
+/* mark the largest value (or largest magnitude) over a panel's series.
+ * The curves are sampled at the output interval; where summary.json has
+ * the series' peak from every step (in.SERIES.key, in base units, scale
+ * the panel's unit), the label gives that value, the one the cards show,
+ * so that card and plot agree (issue 15) */
 static void mark_extreme(report *r, bd_plot_axes *a, const char *what, const char *unit_name,
-                         int magnitude)
+                         int magnitude, const char *in, const char *key, double scale)
 {
     int bs = -1;
     size_t bi = 0;
@@ -557,12 +561,22 @@ static void mark_extreme(report *r, bd_plot_axes *a, const char *what, const cha
     if (bs < 0) return;
     const bd_plot_series *s = &a->series[bs];
     char num[64], *label = lbl(r);
-    fmt_num(num, sizeof num, s->y[bi]);
+    double value = s->y[bi];
+    const char *at = "at";
+    if (in && s->label) {
+        const cJSON *g = cJSON_GetObjectItemCaseSensitive(r->summary, in);
+        double exact = json_num(cJSON_GetObjectItemCaseSensitive(g, s->label), key);
+        if (isfinite(exact) && scale > 0.0) {
+            value = magnitude ? copysign(exact / scale, s->y[bi]) : exact / scale;
+            at = "near";   /* the step's own peak, by the sample that shows it */
+        }
+    }
+    fmt_num(num, sizeof num, value);
     if (a->nseries > 1)
-        snprintf(label, LABEL_LEN, "%s %s %s at t = %.3g s (%.40s)", what, num, unit_name, s->x[bi],
-                 s->label ? s->label : "");
+        snprintf(label, LABEL_LEN, "%s %s %s %s t = %.3g s (%.40s)", what, num, unit_name, at,
+                 s->x[bi], s->label ? s->label : "");
     else
-        snprintf(label, LABEL_LEN, "%s %s %s at t = %.3g s", what, num, unit_name, s->x[bi]);
+        snprintf(label, LABEL_LEN, "%s %s %s %s t = %.3g s", what, num, unit_name, at, s->x[bi]);
     bd_plot_add_marker(a, s->x[bi], s->y[bi], label);
 }
 
@@ -600,7 +614,7 @@ static int plot_history(report *r, char *err, size_t errlen)
             fill_panel(r, &f.panel[1], &h, &g, 1, "Belt speed v", "m/s", yl[1], LABEL_LEN, 0, &u[1]) < 0)
             goto oom;
         f.panel[0].include_zero = 1;
-        mark_extreme(r, &f.panel[0], "peak", u[0].name, 0);
+        mark_extreme(r, &f.panel[0], "peak", u[0].name, 0, "probes", "tension_max_N", u[0].scale);
         if (f.panel[1].nseries == 0) f.npanels = 1, f.panel[0].xlabel = "Time t [s]";
         if ((rc = write_plot(r, &f, "probes",
                              "Belt tension and speed against time at the probes of the model.", err,
@@ -619,7 +633,7 @@ static int plot_history(report *r, char *err, size_t errlen)
         if (fill_panel(r, &f.panel[0], &h, &g, 0, "Pulley speed ω", "rad/s", yl[2], LABEL_LEN, 0, &u[2]) < 0 ||
             fill_panel(r, &f.panel[1], &h, &g, 1, "Drive torque M", "N·m", yl[3], LABEL_LEN, 0, &u[3]) < 0)
             goto oom;
-        mark_extreme(r, &f.panel[1], "peak", u[3].name, 1);
+        mark_extreme(r, &f.panel[1], "peak", u[3].name, 1, "pulleys", "torque_max_Nm", u[3].scale);
         if (f.panel[0].nseries == 0) f.panel[0] = f.panel[1], memset(&f.panel[1], 0, sizeof f.panel[1]);
         if (f.panel[1].nseries == 0) f.npanels = 1;
         f.panel[f.npanels - 1].xlabel = "Time t [s]";
@@ -641,7 +655,7 @@ static int plot_history(report *r, char *err, size_t errlen)
         f.panel[0].include_zero = 1;
         if (fill_panel(r, &f.panel[0], &h, &g, 0, "Takeup travel x", "m", yl[4], LABEL_LEN, 1, &u[4]) < 0)
             goto oom;
-        mark_extreme(r, &f.panel[0], "largest", u[4].name, 1);
+        mark_extreme(r, &f.panel[0], "largest", u[4].name, 1, NULL, NULL, 0.0);
         if ((rc = write_plot(r, &f, "takeups",
                              "Takeup carriage travel against time (legend: lowest … highest).", err,
                              errlen)))
