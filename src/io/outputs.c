@@ -291,6 +291,7 @@ static int write_summary(bd_outputs *o, const bd_sim *sim, double wall, const ch
         bd_json_add_number(p, "omega_final_rad_s", pb->omega);
         if (def->pulleys[i].has_drive) {
             const bd_drive_monitor *m = &pb->mon;
+            bd_json_add_number(p, "radius_m", def->pulleys[i].radius);
             bd_json_add_number(p, "torque_max_Nm", pb->torque_max_abs);
             bd_json_add_number(p, "tight_tension_max_N", m->tight_max);
             bd_json_add_number(p, "tight_tension_max_time_s", m->tight_max_t);

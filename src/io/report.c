@@ -580,6 +580,50 @@ static void mark_extreme(report *r, bd_plot_axes *a, const char *what, const cha
     bd_plot_add_marker(a, s->x[bi], s->y[bi], label);
 }
 
+/* a drive's radius from summary.json, NaN when it is not there */
+static double drive_radius(const report *r, const char *name)
+{
+    const cJSON *p = cJSON_GetObjectItemCaseSensitive(r->summary, "pulleys");
+    return json_num(cJSON_GetObjectItemCaseSensitive(p, name), "radius_m");
+}
+
+/* the drives' surface speed ω·R in m/s (1), or 0 when a radius is
+ * unknown (an older summary.json: the caller plots ω), −1 out of memory */
+static int drive_speed_panel(report *r, bd_plot_axes *a, const bd_csv *h, const group *g,
+                             char *ylabel)
+{
+    for (int i = 0; i < g->n; i++)
+        if (g->col[i][0] >= 0 && !(drive_radius(r, g->name[i]) > 0.0)) return 0;
+    snprintf(ylabel, LABEL_LEN, "Belt speed at the drive ω·R [m/s]");
+    a->ylabel = ylabel;
+    for (int i = 0, k = 0; i < g->n; i++) {
+        if (g->col[i][0] < 0) continue;
+        double *y = own(r, scaled(h->col[g->col[i][0]], h->nrows, 1.0 / drive_radius(r, g->name[i])));
+        if (!y) return -1;
+        bd_plot_add_series(a, h->col[0], y, h->nrows, g->name[i], bd_plot_palette(k++));
+    }
+    return a->nseries > 0;
+}
+
+/* the power each drive delivers to its pulley, M·ω in kW (negative:
+ * braking); 0 when a drive lacks its speed or torque column */
+static int drive_power_panel(report *r, bd_plot_axes *a, const bd_csv *h, const group *g,
+                             char *ylabel)
+{
+    snprintf(ylabel, LABEL_LEN, "Drive power M·ω [kW]");
+    a->ylabel = ylabel;
+    for (int i = 0, k = 0; i < g->n; i++) {
+        int cw = g->col[i][0], cm = g->col[i][1];
+        if (cw < 0 || cm < 0) continue;
+        double *y = own(r, malloc((h->nrows ? h->nrows : 1) * sizeof *y));
+        if (!y) return -1;
+        for (size_t q = 0; q < h->nrows; q++)
+            y[q] = h->col[cw][q] * h->col[cm][q] / 1000.0;
+        bd_plot_add_series(a, h->col[0], y, h->nrows, g->name[i], bd_plot_palette(k++));
+    }
+    return 0;
+}
+
 static int plot_history(report *r, char *err, size_t errlen)
 {
     char path[PATH_LEN];
@@ -630,17 +674,28 @@ static int plot_history(report *r, char *err, size_t errlen)
         bd_plot_figure_init(&f, title[1], FIG_W, FIG_H + 100);
         f.npanels = 2;
         f.share_x = 1;
-        if (fill_panel(r, &f.panel[0], &h, &g, 0, "Pulley speed ω", "rad/s", yl[2], LABEL_LEN, 0, &u[2]) < 0 ||
-            fill_panel(r, &f.panel[1], &h, &g, 1, "Drive torque M", "N·m", yl[3], LABEL_LEN, 0, &u[3]) < 0)
+        int speed_ok = drive_speed_panel(r, &f.panel[0], &h, &g, yl[2]);
+        if (speed_ok < 0 ||
+            (!speed_ok && fill_panel(r, &f.panel[0], &h, &g, 0, "Pulley speed ω", "rad/s", yl[2],
+                                     LABEL_LEN, 0, &u[2]) < 0) ||
+            fill_panel(r, &f.panel[1], &h, &g, 1, "Drive torque M", "N·m", yl[3], LABEL_LEN, 0, &u[3]) < 0 ||
+            drive_power_panel(r, &f.panel[2], &h, &g, lbl(r)) < 0)
             goto oom;
         mark_extreme(r, &f.panel[1], "peak", u[3].name, 1, "pulleys", "torque_max_Nm", u[3].scale);
-        if (f.panel[0].nseries == 0) f.panel[0] = f.panel[1], memset(&f.panel[1], 0, sizeof f.panel[1]);
-        if (f.panel[1].nseries == 0) f.npanels = 1;
+        mark_extreme(r, &f.panel[2], "peak", "kW", 1, NULL, NULL, 0.0);
+        /* the panels that have curves, top to bottom */
+        int np = 0;
+        for (int k = 0; k < 3; k++)
+            if (f.panel[k].nseries > 0) f.panel[np++] = f.panel[k];
+        f.npanels = np > 0 ? np : 1;
+        if (f.npanels == 3) f.height = FIG_H + 300;
         f.panel[f.npanels - 1].xlabel = "Time t [s]";
         f.panel[f.npanels - 1].include_zero = 1;
         if ((rc = write_plot(r, &f, "drives",
-                             "Angular speed and torque of the drive pulleys against time.", err,
-                             errlen)))
+                             speed_ok ? "Belt speed at the drive pulleys (ω·R), their torque and "
+                                        "the power they deliver (M·ω) against time."
+                                      : "Angular speed, torque and power (M·ω) of the drive "
+                                        "pulleys against time.", err, errlen)))
             goto done;
     }
 

@@ -152,8 +152,10 @@ static int write_fake(const char *dir, fake_opts o)
             "\"tension_final_N\": 4e4, \"speed_final_mps\": 4.5}},\n",
             o.minimal ? "minimal & <test>" : "CV-01 overland (fake run)", duration, o.nelem + 1,
             belt_L, gmax, gmax_t, gmax_s, gmin, gmin_t, gmin_s);
-    fprintf(fs, "  \"pulleys\": {\"DRIVE\": {\"omega_final_rad_s\": 9.0, \"torque_max_Nm\": %.1f}",
-            tq_max);
+    /* the full run gives the drive's radius (its plot then shows ω·R),
+     * the minimal one does not (ω, as an older summary.json) */
+    fprintf(fs, "  \"pulleys\": {\"DRIVE\": {\"omega_final_rad_s\": 9.0, \"torque_max_Nm\": %.1f%s}",
+            tq_max, o.minimal ? "" : ", \"radius_m\": 0.5");
     if (!o.minimal)
         fprintf(fs, ",\n              \"TAKEUP\": {\"travel_min_m\": %.4f, \"travel_max_m\": %.4f}",
                 tu_min, tu_max);
@@ -295,7 +297,7 @@ static void test_full_report(void)
         int w, h;
         int min_colours;
     } want[] = {{"tension_surface", 1200, 800, 100}, {"envelope", 1200, 700, 6},
-                {"probes", 1200, 800, 4},             {"drives", 1200, 800, 4},
+                {"probes", 1200, 800, 4},             {"drives", 1200, 1000, 4},   /* 3 panels */
                 {"takeups", 1200, 700, 3},            {"energy", 1200, 800, 6}};
     for (size_t i = 0; i < sizeof want / sizeof want[0]; i++) {
         char png[4096], svg[4096];
@@ -339,6 +341,8 @@ static void test_full_report(void)
         if (!strstr(h, want_peak)) fprintf(stderr, "report.html lacks '%s'\n", want_peak);
         CHECK(strstr(h, "Static design calculation") != NULL);
         CHECK(strstr(h, "belt lifts off idler 12") != NULL);
+        /* the drives: belt speed ω·R and power M·ω besides the torque */
+        CHECK(strstr(h, "Belt speed at the drive pulleys (ω·R), their torque and the power") != NULL);
         /* the static design's warnings are listed and counted with the
          * run's (issue 15: a red card beside "warnings 0") */
         CHECK(strstr(h, "static design: drive slips: pulley ") != NULL);
@@ -383,6 +387,8 @@ static void test_minimal_report(void)
     char *h = slurp(p, NULL);
     CHECK(h && strstr(h, "minimal &amp; &lt;test&gt;"));  /* escaped */
     CHECK(h && strstr(h, "No warnings"));
+    /* no radius in its summary.json: the drive's speed stays ω */
+    CHECK(h && strstr(h, "Angular speed, torque and power (M·ω) of the drive pulleys"));
     free(h);
     rm_rf(dir);
 }
