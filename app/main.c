@@ -335,8 +335,8 @@ static int cmd_run(int argc, char **argv)
         bd_model_def_free(&def);
         return 2;
     }
-    if (state != 1)
-        remove_stale(dir);
+    if (state == 2)
+        remove_stale(dir);   /* an earlier run's; with --force a foreign DIR keeps its files */
     struct sigaction sa;
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = on_sigint;

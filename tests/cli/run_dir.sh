@@ -28,10 +28,12 @@ if [ $rc -eq 2 ] && grep -q "not empty and holds no run" "$tmp/o.err" \
     ok "a DIR holding something else is refused (exit 2), nothing written"
 else bad "refusal" "exit $rc: $(ls "$tmp/other") $(cat "$tmp/o.err")"; fi
 
+echo "mine" >"$tmp/other/report.html"
 "$BELTDYN" run "$model" -o "$tmp/other" --quiet --force >/dev/null 2>&1
 rc=$?
-if [ $rc -eq 0 ] && [ -f "$tmp/other/summary.json" ] && [ -f "$tmp/other/notes.txt" ]; then
-    ok "--force writes into it, leaving its other files"
+if [ $rc -eq 0 ] && [ -f "$tmp/other/summary.json" ] && [ -f "$tmp/other/notes.txt" ] \
+    && [ "$(cat "$tmp/other/report.html")" = "mine" ]; then
+    ok "--force writes into it, leaving its other files (even one named report.html)"
 else bad "--force" "exit $rc: $(ls "$tmp/other")"; fi
 
 "$BELTDYN" run "$model" -o "$tmp/run" --quiet >/dev/null 2>&1 && "$BELTDYN" report "$tmp/run" >/dev/null 2>&1
