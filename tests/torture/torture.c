@@ -36,7 +36,9 @@
  *   may outlast that, and then force and speed are the means over the
  *   later half of the extended run, which average the swing over many
  *   periods: said on the line, not a failure of its own.
- * - steady drive force within 3 % (discrete) or 1 % (axial) of the law: the
+ * - steady drive force within 3 % (discrete) or 1 % (axial, moving_node:
+ *   issue 12 asks the same of it, its idler nodes carry their own support
+ *   force with no polygon) of the law: the
  *   discrete belt sags between idlers and runs over them as a polygon, so
  *   the weight each idler carries fluctuates with the node passage and is
  *   averaged over the window; the axial belt carries its idlers' resistance
@@ -91,7 +93,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "torture: --count must be at least 1\n");
         return 2;
     }
-    double tol_force = strcmp(gen.formulation, "axial") == 0 ? 0.01 : 0.03;
+    double tol_force = strcmp(gen.formulation, "discrete") == 0 ? 0.03 : 0.01;
     static char yaml[1 << 16];
     bd_gen_info info;
     if (print) {
