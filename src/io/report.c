@@ -799,9 +799,9 @@ static const char *key_split(char *base, size_t len, const char *key)
 {
     static const struct {
         const char *sfx, *unit;
-    } units[] = {{"_rad_s", "rad/s"}, {"_mps", "m/s"}, {"_Nm", "N·m"}, {"_kW", "kW"},
-                 {"_N", "N"},         {"_J", "J"},     {"_s", "s"},    {"_m", "m"},
-                 {"_rel", "relative"}};
+    } units[] = {{"_rad_s", "rad/s"}, {"_mps2", "m/s²"}, {"_mps", "m/s"}, {"_Nm", "N·m"},
+                 {"_kW", "kW"},       {"_N", "N"},        {"_J", "J"},     {"_s", "s"},
+                 {"_m", "m"},         {"_deg", "°"},      {"_rel", "relative"}};
     const char *unit_name = NULL;
     size_t n = strlen(key);
     for (size_t i = 0; i < sizeof units / sizeof units[0]; i++)
@@ -839,7 +839,10 @@ static void html_value(bd_strbuf *b, const cJSON *v)
 {
     char num[64];
     if (cJSON_IsNumber(v)) {
-        fmt_num(num, sizeof num, v->valuedouble);
+        /* rounding left in a sum that is zero (a level span's slope
+         * resistance, 1.6e-12 N) reads as 0 */
+        double x = fabs(v->valuedouble) < 1e-9 ? 0.0 : v->valuedouble;
+        fmt_num(num, sizeof num, x);
         bd_sb_puts(b, num);
     } else if (cJSON_IsString(v)) {
         bd_sb_html(b, v->valuestring);
