@@ -99,11 +99,11 @@ void bd_pulleys_advance(bd_sim *sim, double *ke, double *w_nc);
 void bd_idlers_advance(bd_sim *sim, double *ke, double *w_nc);
 
 /* drive.c */
-/* tune the speed loop of drive d on pulley p for the inertia it moves */
 /* the fastest belt speed a drive asks for, m/s (0: no drive with a speed):
  * speed drives' speed or creep speed, motors' synchronous speed at the
  * pulley */
 double bd_drives_reference_speed(const bd_model *m);
+/* tune the speed loop of drive d on pulley p for the inertia it moves */
 void bd_drive_prepare(bd_sim *sim, bd_drive *d, const bd_pulley_body *p,
                       double reflected_inertia);
 /* the drive's torque on pulley p when the shaft turns at omega (rad/s);

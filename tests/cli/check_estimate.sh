@@ -2,8 +2,8 @@
 # `beltdyn check` estimates nodes, memory and run time before it builds
 # (issue 10 item 8, src/sim/estimate.c):
 # 1. examples/head_drive.yaml with 1 µm and 10 µm elements (1.1e8 and 1.1e7
-#    nodes; runs of centuries and of years) is refused in under 2 s with
-#    exit 2 and an error naming belt.element_length, the nodes, the memory
+#    nodes; runs of centuries and of years) is refused before anything is
+#    built (item 2 shows it under a memory limit) with exit 2 and an error naming belt.element_length, the nodes, the memory
 #    and the physical memory. (Before, 1e-6 built for minutes in 15 GB and
 #    1e-5 for 17 s in 1.5 GB.)
 # 2. Under a 1 GB address-space limit the 10 µm model (about 1.9 GB) is

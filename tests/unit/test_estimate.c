@@ -12,8 +12,9 @@
  *    leaves out the load's mass and the rolling resistance's damping, which
  *    move the step both ways). The run-time estimate is what `check`
  *    prints: positive and finite.
- * 2. head_drive with 1 µm elements is refused by bd_sim_create in well
- *    under a second (no layout of 10⁸ nodes), the error naming
+ * 2. head_drive with 1 µm elements is refused by bd_sim_create before
+ *    any layout of its 10⁸ nodes (the estimate's message, not an
+ *    allocation failure; the time it took is printed), the error naming
  *    belt.element_length, the nodes and the memory.
  * 3. The jump out of a failed allocation (base/alloc.c) still frees and
  *    reports: a compiled model of 220 000 nodes, then a new run on it (about

@@ -1,5 +1,5 @@
 /* The moving-node belt: building it from the model (model-format.md
- * `formulation: moving_node`; docs/physics.md §12).
+ * `formulation: moving_node`; docs/physics.md §14).
  *
  * Nodes come from layout.c. The belt starts at its at-rest tension
  * T(s) = T_c + W(s), W the weight of belt and material integrated along
@@ -32,7 +32,6 @@ static const size_t STATE_DOUBLES[] = {
     offsetof(bd_mn, cp),     offsetof(bd_mn, fr),     offsetof(bd_mn, ca),
     offsetof(bd_mn, cb),     offsetof(bd_mn, cna),    offsetof(bd_mn, cnb)};
 static const size_t MODEL_DOUBLES[] = {
-    offsetof(bd_mn_model, tx),         offsetof(bd_mn_model, ty),
     offsetof(bd_mn_model, nx),         offsetof(bd_mn_model, ny),
     offsetof(bd_mn_model, arc_len),
     offsetof(bd_mn_model, rolling),    offsetof(bd_mn_model, idler_mass),
@@ -111,7 +110,7 @@ void bd_mn_node_load(bd_sim *sim, int i)
 /* the stretches of span next to a movable pulley that move with it: from
  * its tangent point back (in) or on (out) to the first idler or arc node;
  * their nodes follow the carriage in proportion, their elements change
- * length by dsq·q (docs/physics.md §12) */
+ * length by dsq·q (docs/physics.md §14) */
 static int setup_movers(bd_sim *sim, bd_diag *diag)
 {
     bd_mn_model *mm = bd_mn_model_build(sim);
@@ -208,7 +207,10 @@ static void wrap_pulls(bd_sim *sim)
 }
 
 /* the tension level T_c: the takeup carriage's force balance along its
- * axis, pull + wrap_pull − Σ_e (T_c + W_e)·dsq_e = 0; or the installed
+ * axis, pull + wrap_pull − Σ_e (T_c + W_e)·dsq_e = 0 (virtual work of a
+ * carriage displacement on the stretches beside it, physics.md §14
+ * "Takeups"; model-format.md's T = force/((u_in − u_out)·a) when the
+ * weights W_e vanish); or the installed
  * tension without a takeup (model-format.md `initial_tension`) */
 static int tension_level(bd_sim *sim, const double *W_mid, double *Tc, bd_diag *diag)
 {
@@ -384,7 +386,8 @@ static double mean_span_element(const bd_model_def *def, const bd_path *path)
  * ≤ 0.12 %). The transverse motion is explicit: a
  * free node between elements l_a, l_b at the tension bound has
  * ω² ≤ 2·T·(1/l_a + 1/l_b)/m, plus 16·EI/(m·l⁴)·l per unit mass for
- * bending; a carriage ω² ≤ Σ k_e·dsq_e·(|dsq_e| + 2)/M as the axial belt's.
+ * bending (Gershgorin bounds of the string's and the bending stencil's
+ * rows, derived here; 16 = 1 + 4 + 6 + 4 + 1 of the five-point row); a carriage ω² ≤ Σ k_e·dsq_e·(|dsq_e| + 2)/M as the axial belt's.
  * And the belt may pass no more than TRANSPORT_CFL of an element per step
  * at 1.2 × the fastest drive speed (at least 1 m/s): the strain carried
  * through the nodes is explicit (upwind), and with the implicit solve its
@@ -395,7 +398,7 @@ double bd_mn_stable_step(const bd_sim *sim, bd_time_step_limit *limit)
     const bd_mn_model *mm = bd_mn_model_of(sim);
     const bd_model_def *def = sim->model->def;
     const int n = sim->model->n;
-    double c = sqrt(sim->model->EA / sim->model->belt_mpl);
+    double c = mm->wave_speed;
     double lref = mean_span_element(def, &sim->model->path);
     double dt = bd_central_difference_limit(2.0 * c / lref, 0.0);
     *limit = BD_LIMIT_AXIAL;

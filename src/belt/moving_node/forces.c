@@ -1,4 +1,4 @@
-/* The moving-node belt's forces at t (docs/physics.md §12).
+/* The moving-node belt's forces at t (docs/physics.md §14).
  *
  * Element e (node e → e+1) in the material description (Kelvin–Voigt,
  * seed 001 eq 4.1 per unit unstretched length; seed 003 §5):
@@ -71,7 +71,8 @@ static void elements(bd_sim *sim)
 }
 
 /* bending (EI > 0): the discrete energy Σ ½·EI·κ_i²·h_i over the span
- * nodes, κ_i the second difference of w; its forces −∂U/∂w into out */
+ * nodes, κ_i the second difference of w (Euler–Bernoulli, U = ∫½EI·w''²;
+ * discretized here); its forces −∂U/∂w into out */
 static void bending(const bd_sim *sim, double *out)
 {
     const bd_mn_model *mm = bd_mn_model_of(sim);
@@ -133,7 +134,9 @@ static double arc_pressure(const bd_sim *sim, int i)
  * skew-symmetric form of Burgers' term). Upwinding, which the explicit
  * transport needs, adds the diffusion κ_e·(v_z − v_a) on a and its
  * opposite on z with κ_e = ρ_e·|v̄_e|/2: exactly what separates the
- * one-sided difference from this central one. Its power −κ_e·(v_z − v_a)²
+ * one-sided difference from this central one (the kinetic-energy-
+ * conserving form of the convective term: Y. Morinishi, T. S. Lund, O. V.
+ * Vasilyev, P. Moin, J. Comput. Phys. 143 (1998) 90). Its power −κ_e·(v_z − v_a)²
  * is booked as dissipated. (The one-sided difference alone lost energy
  * unbooked wherever the speed varies along the belt: a rest start with a
  * swinging takeup lost 470 J of 23 kJ in 25 s; now 33 J.)
@@ -202,7 +205,9 @@ void bd_mn_forces(bd_sim *sim)
             mn->normal[i] = 0.0;
             if (mm->kind[i] == BD_MN_IDLER) {
                 /* rests on its idler when it would otherwise end the step
-                 * below it: the support takes it to w = 0 */
+                 * below it: the support takes it to w = 0 (derived here:
+                 * the unilateral constraint w ≥ 0 met at the step's end,
+                 * N = m·(−w/Δt − ẇ)/Δt − G; physics.md §14) */
                 double wd_new = wd[i] + dt * G / m;
                 if (w[i] + dt * wd_new < 0.0) {
                     double N = m * (-w[i] / dt - wd[i]) / dt - G;
@@ -220,7 +225,9 @@ void bd_mn_forces(bd_sim *sim)
             }
         }
         if (i == mm->feed_node && sim->has_feed && vi > 0.0) {
-            /* the material landing is accelerated to belt speed */
+            /* the material landing is accelerated to belt speed: the
+             * momentum flux ṁ·v with ṁ = m'_L·v (derived here; the axial
+             * belt's feed force, physics.md §11) */
             double f = -sim->model->material_mpl * vi * vi;
             F += f;
             Fn += f;

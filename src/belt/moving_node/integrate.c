@@ -1,5 +1,5 @@
 /* The moving-node belt: the step's update, the material flowing through
- * the nodes, the load fronts, and the energies (docs/physics.md §12). */
+ * the nodes, the load fronts, and the energies (docs/physics.md §14). */
 #include "belt/moving_node/moving_node.h"
 
 #include <math.h>

@@ -181,8 +181,6 @@ static void put_node(bd_sim *sim, int i, double s, int kind, int pulley, int set
     bd_path_point(path, s, p, t);
     mm->x0[i] = p[0];
     mm->y0[i] = p[1];
-    mm->tx[i] = t[0];
-    mm->ty[i] = t[1];
     if (kind == BD_MN_ARC) {
         const bd_path_segment *arc = bd_path_arc(path, pulley);
         double dx = arc->centre[0] - p[0], dy = arc->centre[1] - p[1], r = hypot(dx, dy);

@@ -1,4 +1,4 @@
-/* The moving-node belt (docs/physics.md §12; seed 003's spatial
+/* The moving-node belt (docs/physics.md §14; seed 003's spatial
  * description applied to a conveyor belt).
  *
  * Its nodes are points fixed in space where the physics is: the tangent
@@ -53,7 +53,6 @@ typedef struct bd_mn_model {
     /* nodes [n] */
     unsigned char *kind;      /* BD_MN_FREE, _IDLER, _ARC */
     int *pulley;              /* arc node: its pulley, else −1 */
-    double *tx, *ty;          /* unit path tangent (direction of travel) */
     double *nx, *ny;          /* span: unit normal (w > 0 away from the
                                  idlers); arc: unit normal to the centre */
     double *arc_len;          /* arc node: m of arc it stands for */

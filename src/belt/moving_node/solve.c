@@ -1,5 +1,5 @@
 /* The moving-node belt's axial motion over one step, implicit along the
- * whole loop together with every pulley's rotation (docs/physics.md §12).
+ * whole loop together with every pulley's rotation (docs/physics.md §14).
  *
  * Element e's force over the step is the trapezoidal rule's (Newmark
  * β = 1/4, γ = 1/2: unconditionally stable, no numerical damping; T. J. R.
