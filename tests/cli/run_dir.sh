@@ -4,8 +4,9 @@
 # that holds something other than a run (exit 2, nothing written) unless
 # --force; into an earlier run's DIR it writes anew and removes that run's
 # report and plots, which no longer describe the outputs; on a terminal it
-# ends with a summary (peak tension, where and when, slip, torque, takeup,
-# warnings), and not when stdout is a file (nor with --quiet: cli_run_outputs).
+# ends with a summary (peak tension, where and when, its safety factor
+# against the starting one, slip, torque, takeup, warnings), and not when
+# stdout is a file (nor with --quiet: cli_run_outputs).
 set -u
 : "${BELTDYN:?BELTDYN must name the built beltdyn}"
 EXAMPLES="${EXAMPLES:-$(cd "$(dirname "$0")/../../examples" && pwd)}"
@@ -46,16 +47,20 @@ if [ -f "$tmp/run/report.html" ] && ls "$tmp/run/plots/"*.png >/dev/null 2>&1; t
     else bad "rerun" "exit $rc: $(ls "$tmp/run")"; fi
 else bad "rerun" "the first run and report did not write report.html and plots"; fi
 
-"$BELTDYN" run "$model" -o "$tmp/file" --quiet >"$tmp/file.out" 2>/dev/null
+"$BELTDYN" run "$model" -o "$tmp/file" >"$tmp/file.out" 2>/dev/null
 if [ ! -s "$tmp/file.out" ]; then ok "no summary when stdout is not a terminal"
 else bad "summary to a file" "$(head -3 "$tmp/file.out")"; fi
 
 if command -v script >/dev/null 2>&1; then
-    script -qec "\"$BELTDYN\" run \"$model\" -o \"$tmp/tty\"" /dev/null >"$tmp/tty.out" 2>&1
+    # head_drive for 5 s: rated 100 kN, its start's peak 21.7 kN, below
+    # rated/4.8 (tests/cli/safety_factor.sh)
+    sed -e 's/^\(  duration:\).*/\1 5/' "$EXAMPLES/head_drive.yaml" >"$tmp/hd5.yaml"
+    script -qec "\"$BELTDYN\" run \"$tmp/hd5.yaml\" -o \"$tmp/tty\"" /dev/null >"$tmp/tty.out" 2>&1
     rc=$?
     if [ $rc -eq 0 ] && grep -q "peak belt tension .* kN at s = .* m, t = .* s" "$tmp/tty.out" \
+        && grep -q "safety factor 4\.[0-9]* against the rated 100 kN (FAIL: at least 4.8" "$tmp/tty.out" \
         && grep -q "drive slip: " "$tmp/tty.out" && grep -q "warnings: [0-9]" "$tmp/tty.out"; then
-        ok "on a terminal: $(tr -d '\r' <"$tmp/tty.out" | grep -v "^ *t = " | tr '\n' ';' | head -c 200)"
+        ok "on a terminal: $(tr '\r' '\n' <"$tmp/tty.out" | grep -E '^(peak|  safety|drive|warnings)' | tr '\n' ';')"
     else bad "terminal summary" "exit $rc: $(head -c 400 "$tmp/tty.out")"; fi
 else
     echo "skipped: no script(1) to make a terminal"
