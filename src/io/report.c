@@ -839,10 +839,7 @@ static void html_value(bd_strbuf *b, const cJSON *v)
 {
     char num[64];
     if (cJSON_IsNumber(v)) {
-        /* rounding left in a sum that is zero (a level span's slope
-         * resistance, 1.6e-12 N) reads as 0 */
-        double x = fabs(v->valuedouble) < 1e-9 ? 0.0 : v->valuedouble;
-        fmt_num(num, sizeof num, x);
+        fmt_num(num, sizeof num, v->valuedouble);
         bd_sb_puts(b, num);
     } else if (cJSON_IsString(v)) {
         bd_sb_html(b, v->valuestring);

@@ -286,12 +286,17 @@ static int build_sections(bd_std_ctx *c)
             cut[1] = feed_at;
             parts = 2;
         }
+        /* the span's rise per metre: the path's tangent carries the
+         * rounding of its trigonometry (~1e-16 on a level span), which
+         * summed into F_St read as 1.6e-12 N; a slope below 1e-9 (1 µm per
+         * km) is level */
+        double rise = fabs(sp->dir[1]) < 1e-9 ? 0.0 : sp->dir[1];
         for (int q = 0; q < parts; q++) {
             bd_std_section *s = &c->sec[ns++];
             double frac = cut[q + 1] - cut[q];
             s->span = i;
             s->length = sp->length * frac;
-            s->lift = sp->dir[1] * s->length;
+            s->lift = rise * s->length;
             s->cos_delta = fabs(sp->dir[0]);
             /* the feed span carries material only behind the feed point */
             int load_here = loaded[i] && !(i == feed && (feed_at >= 1.0 || (parts == 2 && q == 0)));
@@ -305,8 +310,8 @@ static int build_sections(bd_std_ctx *c)
         os->pulley = i;
         os->to = (i + 1) % n;
         os->length_m = sp->length;
-        os->lift_m = sp->dir[1] * sp->length;
-        os->slope_rad = atan2(sp->dir[1], fabs(sp->dir[0]));
+        os->lift_m = rise * sp->length;
+        os->slope_rad = atan2(rise, fabs(sp->dir[0]));
         os->idler_spacing_m = spacing;
         os->mR_kg_per_m = mR;
         os->loaded = loaded[i];
@@ -567,6 +572,7 @@ int bd_static_compute(const bd_model_def *m, bd_static_result *out, bd_diag *dia
     /* results per span and in total */
     out->T_max_N = -INFINITY;
     out->T_min_N = INFINITY;
+    double slope_abs = 0.0;
     for (int k = 0; k < c.nsec; k++) {
         const bd_std_section *s = &c.sec[k];
         bd_static_span *os = &out->spans[s->span];
@@ -585,9 +591,14 @@ int bd_static_compute(const bd_model_def *m, bd_static_result *out, bd_diag *dia
         out->main_N += s->main;
         out->secondary_N += s->secondary;
         out->slope_N += s->slope;
+        slope_abs += fabs(s->slope);
         out->T_max_N = fmax(out->T_max_N, fmax(s->T0, s->T1));
         out->T_min_N = fmin(out->T_min_N, fmin(s->T0, s->T1));
     }
+    /* rises and falls that cancel (a takeup loop's two vertical spans)
+     * leave the rounding of their sum: below 1e-12 of the terms it is 0 */
+    if (fabs(out->slope_N) <= 1e-12 * slope_abs)
+        out->slope_N = 0.0;
     out->total_N = out->main_N + out->secondary_N + out->slope_N;
     /* eq 2.5 (F_S = 0) / eq 2.1: Te = F_H + F_N + F_St */
     out->effective_tension_N = out->total_N;

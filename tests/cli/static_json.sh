@@ -5,6 +5,7 @@
 set -u
 : "${BELTDYN:?BELTDYN must name the built beltdyn}"
 DATA="${TEST_DATA:-$(cd "$(dirname "$0")/../data" && pwd)}"
+EXAMPLES="${EXAMPLES:-$(cd "$(dirname "$0")/../../examples" && pwd)}"
 fail=0
 
 # not wired yet: skip (exit 0) so the test turns real once it is
@@ -58,6 +59,14 @@ check static_sag.yaml               4139.1451   12142.3785  8003.2334   'sag:'
 table=$("$BELTDYN" static "$DATA/static_horizontal.yaml")
 for h in 'effective tension Te (N)' 'power at the drive (kW)' 'length (m)' 'T start (N)' 'T end (N)'; do
     printf '%s' "$table" | grep -qF "$h" || { echo "FAIL table: no '$h'"; fail=1; }
+done
+
+# a level conveyor has no slope resistance, exactly (not the rounding of
+# its path's trigonometry, 1.6e-12 N before), and head_drive's takeup loop,
+# whose rise and fall cancel, none either
+for f in "$DATA/static_horizontal.yaml" "$EXAMPLES/head_drive.yaml"; do
+    out=$("$BELTDYN" static "$f" --json)
+    [ "$(num "$out" slope)" = "0" ] || { echo "FAIL $f: slope $(num "$out" slope), want 0"; fail=1; }
 done
 
 # motor power = power at the drive / design.efficiency (1 by default)
