@@ -279,21 +279,10 @@ static void print_summary(const bd_sim *sim, const bd_model_def *def, FILE *f)
                     tk.travel_min_m, tk.travel_max_m);
     }
     /* counted as the report counts them: the run's and the static
-     * design's (summary.json "static") */
-    int static_warnings = 0;
-    if (def->design.present) {
-        bd_diag quiet;
-        bd_diag_init(&quiet);
-        bd_static_result st;
-        if (bd_static_compute(def, &st, &quiet) == 0) {
-            static_warnings = st.warning_count;
-            bd_static_free(&st);
-        }
-        bd_diag_free(&quiet);
-    }
-    fprintf(f, "warnings: %d", bd_sim_warning_count(sim) + static_warnings);
-    if (static_warnings > 0)
-        fprintf(f, " (%d of them the static design's: beltdyn static)", static_warnings);
+     * design's that summary.json holds */
+    fprintf(f, "warnings: %d", bd_sim_warning_count(sim) + r.static_warnings);
+    if (r.static_warnings > 0)
+        fprintf(f, " (%d of them the static design's: beltdyn static)", r.static_warnings);
     fprintf(f, "\n");
 }
 

@@ -125,6 +125,9 @@ typedef struct bd_run_result {
     double travel_range_m;         /* largest (max − min) over the takeups */
     double tension_max_N, tension_min_N;  /* anywhere in the belt */
     double tension_max_t_s, tension_max_s_m;  /* when and where the largest was */
+    int static_warnings;           /* the static design's warnings that
+                                      bd_sim_run wrote into summary.json
+                                      (its failure counts as one) */
 } bd_run_result;
 
 void bd_sim_result(const bd_sim *sim, bd_run_result *r);

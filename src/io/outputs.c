@@ -221,8 +221,9 @@ static int write_envelope(bd_outputs *o, const bd_sim *sim)
 /* the model's design-standard calculation (cli.md `static --json`) as
  * "static", with its T_min_sag_N also at the top level; a warning instead
  * when it cannot be computed */
-static void add_static(cJSON *root, cJSON *warnings, const bd_model_def *def)
+static int add_static(cJSON *root, cJSON *warnings, const bd_model_def *def)
 {
+    int count = 1;   /* the failure's message, unless it computes */
     bd_diag diag;
     bd_diag_init(&diag);
     bd_static_result res;
@@ -231,8 +232,10 @@ static void add_static(cJSON *root, cJSON *warnings, const bd_model_def *def)
         char *text = bd_static_to_json(&res, def);
         st = text ? cJSON_Parse(text) : NULL;
         free(text);
-        if (st)
+        if (st) {
             bd_json_add_number(root, "T_min_sag_N", res.T_min_sag_N);
+            count = res.warning_count;
+        }
         bd_static_free(&res);
     }
     if (st) {
@@ -244,6 +247,7 @@ static void add_static(cJSON *root, cJSON *warnings, const bd_model_def *def)
         cJSON_AddItemToArray(warnings, cJSON_CreateString(msg));
     }
     bd_diag_free(&diag);
+    return count;
 }
 
 static int write_summary(bd_outputs *o, const bd_sim *sim, double wall, const char *status)
@@ -328,7 +332,7 @@ static int write_summary(bd_outputs *o, const bd_sim *sim, double wall, const ch
     for (int i = 0; i < sim->warning_count; i++)
         cJSON_AddItemToArray(w, cJSON_CreateString(sim->warnings[i]));
     if (def->design.present)
-        add_static(root, w, def);
+        o->static_warnings = add_static(root, w, def);
     char *text = cJSON_Print(root);
     cJSON_Delete(root);
     FILE *f = open_part(o, BD_OUT_SUMMARY, "summary.json", o->err, sizeof o->err);

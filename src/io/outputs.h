@@ -23,6 +23,8 @@ typedef struct bd_outputs {
     double *env_max;       /* [bins] N */
     double *env_min;       /* [bins] N */
     long rows;
+    int static_warnings;   /* summary.json's static-design warnings, and its
+                              own failure as one (set by bd_outputs_close) */
     char err[2048];
 } bd_outputs;
 

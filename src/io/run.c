@@ -133,7 +133,9 @@ int bd_sim_run(bd_sim *sim, const bd_run_options *opt, char *err, size_t errlen)
                     def->belt.rated_tension, def->design.safety_factor.starting, allow);
     const char *word = status == BD_RUN_OK ? "completed"
                      : status == BD_RUN_FAILED ? "failed" : "interrupted";
-    if (bd_outputs_close(&out, sim, bd_wall_seconds() - wall0, word) && status == BD_RUN_OK) {
+    int closed = bd_outputs_close(&out, sim, bd_wall_seconds() - wall0, word);
+    sim->static_warnings = out.static_warnings;
+    if (closed && status == BD_RUN_OK) {
         snprintf(err, errlen, "could not write the outputs in '%s'", opt->out_dir);
         return BD_RUN_FAILED;
     }

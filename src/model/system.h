@@ -274,6 +274,8 @@ struct bd_sim {
     char fail_msg[512];
     char **warnings;       /* [warning_count] said after the run */
     int warning_count;
+    int static_warnings;   /* the static design's warnings in summary.json
+                              (io/outputs.c), counted with them */
 };
 
 /* the inertia the wrap coupling solves pulley p with: its own and the

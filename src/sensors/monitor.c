@@ -163,6 +163,7 @@ void bd_sim_result(const bd_sim *sim, bd_run_result *r)
     r->tension_min_N = sim->tension_min;
     r->tension_max_t_s = sim->tension_max_t;
     r->tension_max_s_m = sim->tension_max_s;
+    r->static_warnings = sim->static_warnings;
     for (int i = 0; i < sim->model->pulley_count; i++) {
         const bd_pulley_body *p = &sim->pulleys[i];
         if (p->m->movable && p->travel_max - p->travel_min > r->travel_range_m)
