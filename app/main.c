@@ -1,6 +1,4 @@
 /* beltdyn: the command line (spec/cli.md). Only the public API is used. */
-#include <dirent.h>
-#include <errno.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -189,62 +187,6 @@ static int cmd_static(int argc, char **argv)
     return 0;
 }
 
-/* the files a run writes (cli.md): a directory holding one of them holds
- * a run */
-static const char *const run_files[] = {"summary.json", "history.csv", "tension.csv",
-                                        "envelope.csv"};
-#define RUN_FILE_COUNT ((int)(sizeof run_files / sizeof run_files[0]))
-
-/* what -o DIR holds: 1 nothing (or it does not exist), 2 an earlier run,
- * 0 something else, -1 it is not a directory we can read */
-static int run_dir_state(const char *dir)
-{
-    DIR *d = opendir(dir);
-    if (!d)
-        return errno == ENOENT ? 1 : -1;
-    int empty = 1, run = 0;
-    struct dirent *e;
-    while ((e = readdir(d)) != NULL) {
-        if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
-            continue;
-        empty = 0;
-        for (int k = 0; k < RUN_FILE_COUNT; k++)
-            run = run || strcmp(e->d_name, run_files[k]) == 0;
-    }
-    closedir(d);
-    return empty ? 1 : (run ? 2 : 0);
-}
-
-/* an earlier run's report, plots and HDF5 file describe that run, not the
- * new one: removed before it starts (the run files are rewritten) */
-static void remove_in(const char *dir, const char *name)
-{
-    char path[4096];
-    int n = snprintf(path, sizeof path, "%s/%s", dir, name);
-    if (n > 0 && (size_t)n < sizeof path)   /* never a name cut short */
-        remove(path);
-}
-
-static void remove_stale(const char *dir)
-{
-    remove_in(dir, "report.html");
-    remove_in(dir, "tension.h5");
-    char plots[4096];
-    int n = snprintf(plots, sizeof plots, "%s/plots", dir);
-    DIR *d = n > 0 && (size_t)n < sizeof plots ? opendir(plots) : NULL;
-    if (!d)
-        return;
-    struct dirent *e;
-    while ((e = readdir(d)) != NULL) {
-        size_t len = strlen(e->d_name);
-        if (len > 4 && (strcmp(e->d_name + len - 4, ".png") == 0
-                        || strcmp(e->d_name + len - 4, ".svg") == 0))
-            remove_in(plots, e->d_name);
-    }
-    closedir(d);
-    rmdir(plots);   /* only if nothing else is in it */
-}
-
 /* the end-of-run summary on a terminal (cli.md): the peak tension, where
  * and when, its safety factor, slip, takeup travel, warnings */
 static void print_summary(const bd_sim *sim, const bd_model_def *def, FILE *f)
@@ -312,20 +254,13 @@ static int cmd_run(int argc, char **argv)
     if (rc != 0)
         return rc;
     /* cli.md: never into a directory that holds something else */
-    int state = run_dir_state(dir);
-    if (state < 0 || (state == 0 && !force)) {
-        if (state < 0)
-            fprintf(stderr, "beltdyn: '%s' is not a directory that can be read\n", dir);
-        else
-            fprintf(stderr, "beltdyn: '%s' is not empty and holds no run (no summary.json, "
-                    "history.csv, tension.csv or envelope.csv): give another -o DIR, or "
-                    "--force to write into it\n", dir);
+    char err[1024] = "";
+    if (bd_run_dir_prepare(dir, force, err, sizeof err) != BD_RUN_OK) {
+        fprintf(stderr, "beltdyn: %s\n", err);
         bd_sim_free(sim);
         bd_model_def_free(&def);
         return 2;
     }
-    if (state == 2)
-        remove_stale(dir);   /* an earlier run's; with --force a foreign DIR keeps its files */
     struct sigaction sa;
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = on_sigint;
@@ -336,7 +271,6 @@ static int cmd_run(int argc, char **argv)
     opt.interrupted = &interrupted;
     opt.hdf5 = hdf5;
     opt.message = show_warning;
-    char err[1024] = "";
     rc = bd_sim_run(sim, &opt, err, sizeof err);
     if (rc != BD_RUN_OK)
         fprintf(stderr, "beltdyn: %s%s\n", rc == BD_RUN_FAILED ? "error: " : "", err);

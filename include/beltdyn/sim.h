@@ -102,6 +102,13 @@ void bd_sim_report_events(bd_sim *sim);
 /* the whole run with outputs; returns one of BD_RUN_*; message in err */
 int bd_sim_run(bd_sim *sim, const bd_run_options *opt, char *err, size_t errlen);
 
+/* make ready the directory a run is to write (cli.md): an empty or missing
+ * one is used as it is; one holding an earlier run loses that run's
+ * report, plots and tension.h5, which would no longer describe the
+ * outputs; one holding anything else is refused (BD_RUN_BAD_INPUT and a
+ * message in err) unless force, and then keeps its files. BD_RUN_OK. */
+int bd_run_dir_prepare(const char *dir, int force, char *err, size_t errlen);
+
 /* what a start study compares (monitor.c), over the run so far. The
  * tight side is a point of the belt just before a drive pulley's wrap, the
  * slack side one just after it; with several drives, the extreme over

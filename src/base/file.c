@@ -1,9 +1,12 @@
 #include "base/file.h"
 
+#include <dirent.h>
 #include <errno.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
 
 int bd_read_file(const char *path, char **text, size_t *len)
 {
@@ -57,4 +60,27 @@ int bd_path_join(char *out, size_t cap, const char *dir, const char *name)
         return -1;
     }
     return 0;
+}
+
+int bd_dir_state(const char *path, const char *const *marks, int count)
+{
+    struct stat st;
+    if (stat(path, &st) != 0)
+        return errno == ENOENT ? BD_DIR_EMPTY : BD_DIR_BAD;
+    if (!S_ISDIR(st.st_mode))
+        return BD_DIR_BAD;
+    DIR *d = opendir(path);
+    if (!d)
+        return BD_DIR_BAD;
+    int empty = 1, marked = 0;
+    struct dirent *e;
+    while ((e = readdir(d)) != NULL) {
+        if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
+            continue;
+        empty = 0;
+        for (int k = 0; k < count; k++)
+            marked = marked || strcmp(e->d_name, marks[k]) == 0;
+    }
+    closedir(d);
+    return empty ? BD_DIR_EMPTY : (marked ? BD_DIR_MARKED : BD_DIR_OTHER);
 }

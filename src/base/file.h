@@ -22,4 +22,11 @@ int bd_read_file(const char *path, char **text, size_t *len);
  * then ""): a path too long is an error, never a file name cut short */
 int bd_path_join(char *out, size_t cap, const char *dir, const char *name);
 
+/* what directory `path` holds (an output directory before it is written):
+ * BD_DIR_EMPTY (nothing, or it does not exist), BD_DIR_MARKED (one of the
+ * `count` names in `marks`: an earlier output of that kind), BD_DIR_OTHER
+ * (something else), BD_DIR_BAD (not a directory that can be read) */
+enum { BD_DIR_EMPTY = 1, BD_DIR_MARKED = 2, BD_DIR_OTHER = 0, BD_DIR_BAD = -1 };
+int bd_dir_state(const char *path, const char *const *marks, int count);
+
 #endif

@@ -4,14 +4,17 @@
  * complete; an interrupted or failed run still renames its CSVs, which are
  * valid up to the last complete row. */
 #include "io/outputs.h"
+#include "base/file.h"
 #include "base/json_util.h"
 
 #include <cjson/cJSON.h>
+#include <dirent.h>
 #include <errno.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "beltdyn/standards.h"
 #include "io/hdf5_out.h"
@@ -371,4 +374,52 @@ int bd_outputs_close(bd_outputs *o, const bd_sim *sim, double wall, const char *
     free(o->env_min);
     o->env_max = o->env_min = NULL;
     return bad;
+}
+
+/* ---- the run's directory (cli.md) ---- */
+
+/* the files a run writes: a directory holding one holds a run */
+static const char *const run_files[] = {"summary.json", "history.csv", "tension.csv",
+                                        "envelope.csv"};
+
+/* dir/name removed, never a name cut short */
+static void remove_in(const char *dir, const char *name)
+{
+    char path[2048];
+    if (bd_path_join(path, sizeof path, dir, name) == 0)
+        remove(path);
+}
+
+int bd_run_dir_prepare(const char *dir, int force, char *err, size_t errlen)
+{
+    err[0] = '\0';
+    int state = bd_dir_state(dir, run_files, (int)(sizeof run_files / sizeof run_files[0]));
+    if (state == BD_DIR_BAD) {
+        snprintf(err, errlen, "'%s' is not a directory that can be read", dir);
+        return BD_RUN_BAD_INPUT;
+    }
+    if (state == BD_DIR_OTHER && !force) {
+        snprintf(err, errlen, "'%s' is not empty and holds no run (no summary.json, history.csv, "
+                 "tension.csv or envelope.csv): give another -o DIR, or --force to write into it",
+                 dir);
+        return BD_RUN_BAD_INPUT;
+    }
+    if (state != BD_DIR_MARKED)
+        return BD_RUN_OK;   /* with --force a foreign DIR keeps its files */
+    remove_in(dir, "report.html");
+    remove_in(dir, "tension.h5");
+    char plots[2048];
+    DIR *d = bd_path_join(plots, sizeof plots, dir, "plots") == 0 ? opendir(plots) : NULL;
+    if (!d)
+        return BD_RUN_OK;
+    struct dirent *e;
+    while ((e = readdir(d)) != NULL) {
+        size_t len = strlen(e->d_name);
+        if (len > 4 && (strcmp(e->d_name + len - 4, ".png") == 0
+                        || strcmp(e->d_name + len - 4, ".svg") == 0))
+            remove_in(plots, e->d_name);
+    }
+    closedir(d);
+    rmdir(plots);   /* only if nothing else is in it */
+    return BD_RUN_OK;
 }

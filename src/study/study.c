@@ -27,7 +27,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include <dirent.h>
 
 #include "base/clock.h"
 #include "base/file.h"
@@ -413,41 +412,17 @@ static int setup(study_run *R, char *err, size_t errlen)
 
 /* ---- the output directory (the gatherer) ---- */
 
-/* 1 empty or missing, 0 it has something, -1 not a directory */
-static int dir_state(const char *path, int *has_study)
-{
-    *has_study = 0;
-    struct stat st;
-    if (stat(path, &st) != 0)
-        return 1;
-    if (!S_ISDIR(st.st_mode))
-        return -1;
-    DIR *d = opendir(path);
-    if (!d)
-        return -1;
-    int empty = 1;
-    struct dirent *e;
-    while ((e = readdir(d)) != NULL) {
-        if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
-            continue;
-        empty = 0;
-        if (strcmp(e->d_name, "study.json") == 0)
-            *has_study = 1;
-    }
-    closedir(d);
-    return empty;
-}
-
 static int prepare_dir(study_run *R, char *err, size_t errlen)
 {
     bd_study *s = &R->s;
     const bd_study_options *o = s->opt;
-    int has_study, state = dir_state(o->out_dir, &has_study);
-    if (state < 0) {
+    static const char *const mark[1] = {"study.json"};
+    int state = bd_dir_state(o->out_dir, mark, 1);
+    if (state == BD_DIR_BAD) {
         snprintf(err, errlen, "'%s' is not a directory", o->out_dir);
         return BD_RUN_BAD_INPUT;
     }
-    if (state == 0 && !has_study && !o->force) {
+    if (state == BD_DIR_OTHER && !o->force) {
         snprintf(err, errlen, "'%s' is not empty and holds no study (no study.json): give "
                  "another -o DIR, or --force to write into it", o->out_dir);
         return BD_RUN_BAD_INPUT;
