@@ -39,25 +39,30 @@ void bd_setup_probes_and_feed(bd_sim *sim)
     }
 }
 
-int bd_idler_set_layout(bd_sim *sim, int k, double *spacing)
+int bd_idler_count(const bd_model_def *def, const bd_path *path, int k, double *spacing)
 {
-    const bd_model_def *def = sim->model->def;
     const bd_idler_set_def *set = &def->idler_sets[k];
-    const bd_path_segment *sp = bd_path_span(&sim->model->path, set->span);
-    sim->own->idlers_per_set[k] = 0;
+    const bd_path_segment *sp = bd_path_span(path, set->span);
     *spacing = set->spacing;
-    if (fabs(sp->dir[0]) < 1e-6) {
-        bd_sim_warn(sim, "idlers on span '%s': the span is vertical; no idlers placed",
-                    def->pulleys[set->span].name);
+    if (fabs(sp->dir[0]) < 1e-6)
         return 0;
-    }
     /* the closest spacing to the given one that fits the span evenly
      * (documented in docs/model-format.md) */
     int count = (int)lround(sp->length / set->spacing) - 1;
     if (count < 0)
         count = 0;
-    sim->own->idlers_per_set[k] = count;
     *spacing = sp->length / (count + 1);
+    return count;
+}
+
+int bd_idler_set_layout(bd_sim *sim, int k, double *spacing)
+{
+    const bd_model_def *def = sim->model->def;
+    int count = bd_idler_count(def, &sim->model->path, k, spacing);
+    sim->own->idlers_per_set[k] = count;
+    if (fabs(bd_path_span(&sim->model->path, def->idler_sets[k].span)->dir[0]) < 1e-6)
+        bd_sim_warn(sim, "idlers on span '%s': the span is vertical; no idlers placed",
+                    def->pulleys[def->idler_sets[k].span].name);
     return count;
 }
 

@@ -29,14 +29,14 @@ double bd_mn_span_target(const bd_model_def *def, const bd_path *path, int span)
 {
     if (def->belt.span_element_length > 0.0)
         return def->belt.span_element_length;
-    const bd_path_segment *sp = bd_path_span(path, span);
     for (int k = 0; k < def->idler_set_count; k++) {
-        const bd_idler_set_def *set = &def->idler_sets[k];
-        if (set->span != span || fabs(sp->dir[0]) < 1e-6)
+        double a;
+        if (def->idler_sets[k].span != span
+            || fabs(bd_path_span(path, span)->dir[0]) < 1e-6)
             continue;
-        /* the spacing the idlers get (bd_idler_set_layout) */
-        int count = (int)lround(sp->length / set->spacing) - 1;
-        return count > 0 ? sp->length / (count + 1) : set->spacing;
+        /* the spacing the idlers get; the given one on a span too short
+         * for any */
+        return bd_idler_count(def, path, k, &a) > 0 ? a : def->idler_sets[k].spacing;
     }
     return 1.0;
 }
@@ -60,10 +60,10 @@ static int span_points(const bd_model_def *def, const bd_path *path, int j, hard
     hard_point *hp = bd_xcalloc((size_t)cap, sizeof *hp);
     int m = 0;
     for (int k = 0; k < def->idler_set_count; k++) {
-        const bd_idler_set_def *set = &def->idler_sets[k];
-        if (set->span != j || fabs(sp->dir[0]) < 1e-6)
+        double a;
+        if (def->idler_sets[k].span != j)
             continue;
-        int count = (int)lround(len / set->spacing) - 1;
+        int count = bd_idler_count(def, path, k, &a);
         for (int c = 0; c < count; c++)
             hp[m++] = (hard_point){(c + 1) * len / (count + 1), k};
     }
