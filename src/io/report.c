@@ -606,7 +606,7 @@ static int drive_speed_panel(report *r, bd_plot_axes *a, const bd_csv *h, const 
 }
 
 /* the power each drive delivers to its pulley, M·ω in kW (negative:
- * braking); 0 when a drive lacks its speed or torque column */
+ * braking), for the drives with both columns; 0, or −1 out of memory */
 static int drive_power_panel(report *r, bd_plot_axes *a, const bd_csv *h, const group *g,
                              char *ylabel)
 {

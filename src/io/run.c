@@ -123,7 +123,8 @@ int bd_sim_run(bd_sim *sim, const bd_run_options *opt, char *err, size_t errlen)
                     "s = %.2f m): raise the takeup force", sim->tension_min, sim->tension_min_t,
                     sim->tension_min_s);
     /* the peak against the allowable during starts and stops
-     * (design.safety_factor.starting) */
+     * (design.safety_factor.starting: DIN 22101's belt-strength check for
+     * the non-steady states; model-format.md) */
     const bd_model_def *def = sim->model->def;
     double allow = def->belt.rated_tension / def->design.safety_factor.starting;
     if (def->belt.rated_tension > 0.0 && sim->tension_max > allow && !stabilize_ended)

@@ -196,6 +196,9 @@ bd_design_def bd_design_default(void)
     d.C = 0.0;
     d.speed = 0.0;
     d.sag_ratio = 0.01;
+    /* the belt-strength check of DIN 22101 (steady running, and the
+     * non-steady states: starts and stops); these defaults are
+     * spec/model-format.md's */
     d.safety_factor.running = 6.7;
     d.safety_factor.starting = 4.8;
     d.efficiency = 1.0;

@@ -393,8 +393,9 @@ static void checks(bd_std_ctx *c)
         bd_std_warn(r, "slack belt: the tension falls to %.0f N (compression) on the path; "
                        "raise the takeup force", r->T_min_N);
 
-    /* belt strength: the steady-running tension against the rated one
-     * over the running safety factor (design.safety_factor) */
+    /* belt strength (DIN 22101's belt-strength check, steady state): the
+     * steady-running tension against the rated one over the running
+     * safety factor (design.safety_factor, model-format.md) */
     if (m->belt.rated_tension > 0.0 && r->T_max_N > m->belt.rated_tension)
         bd_std_warn(r, "belt overloaded: maximum tension %.0f N exceeds the rated tension %.0f N",
                     r->T_max_N, m->belt.rated_tension);
@@ -606,6 +607,8 @@ int bd_static_compute(const bd_model_def *m, bd_static_result *out, bd_diag *dia
     out->speed_mps = c.speed;
     /* power at the drive pulley(s): P = Te·v (cli.md) */
     out->power_kW = out->effective_tension_N * c.speed / 1000.0;
+    /* motor power P_M = P_T/η (cli.md `static --json`; DIN 22101's drive
+     * power over the transmission efficiency) */
     out->motor_power_kW = out->power_kW / m->design.efficiency;
     out->drive_pulley = c.drive;
     out->drive_count = c.drive_count;

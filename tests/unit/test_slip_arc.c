@@ -19,6 +19,7 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "base/constants.h"
 #include "beltdyn/model.h"
 #include "beltdyn/sim.h"
 #include "belt/moving_node/moving_node.h"
@@ -75,8 +76,8 @@ static void check_slip_arc(bd_sim *sim, double t)
     }
     double T1 = sim->tension[bd_mn_prev(first, n)], T2 = sim->tension[last];
     double v = sim->vx[first], Fc = 10.0 * v * v;
-    double want = log((T1 - Fc) / (T2 - Fc)) / mu * 180.0 / 3.14159265358979323846;
-    double got = slip / R * 180.0 / 3.14159265358979323846;
+    double want = log((T1 - Fc) / (T2 - Fc)) / mu / BD_DEG;
+    double got = slip / R / BD_DEG;
     printf("t %.1f s: T1 %.0f N, T2 %.0f N, slip arc %.2f deg, ln(T1/T2)/mu = %.2f deg\n", t, T1, T2,
            got, want);
     CHECK(runs == 1 && !prev_stuck && backwards);

@@ -16,7 +16,6 @@
 #include <math.h>
 #include <stddef.h>
 #include <stdlib.h>
-#include <string.h>
 
 /* the belt's passage per step through an element, at most (stable_step) */
 #define TRANSPORT_CFL 0.5

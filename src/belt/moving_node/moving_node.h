@@ -90,8 +90,10 @@ typedef struct bd_mn {
     double *normal;           /* [n] step (forces): N, pulley or idler support */
     double *vnew;             /* [n] step (supports): v at t + Δt/2 */
     double *rhs;              /* [n] scratch of the solve */
-    double *p0, *qa, *qb;     /* [n] scratch of the solve */
-    double *cp;               /* [n] scratch: the Thomas sweep */
+    double *p0, *qa, *qb;     /* [n] scratch of the solve (qa, qb also of
+                                 forces: the convective term) */
+    double *cp;               /* [n] scratch: the Thomas sweep (also of
+                                 forces: bending; of integrate: the flux) */
     double *fr;               /* [n] step (supports): N, pulley friction on node i */
     double *frg;              /* [3n] scratch: a stuck node's friction per pulley speed */
     int *frp;                 /* [3n] scratch: ... and which pulleys */

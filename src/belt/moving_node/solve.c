@@ -100,8 +100,6 @@ static void coefs(bd_sim *sim, double dt)
     }
 }
 
-
-
 /* the speed of a stuck node's pulley surface: R·ω⁺, known when held */
 static affine surface(const bd_sim *sim, int i)
 {
