@@ -26,10 +26,11 @@
 #include "beltdyn/sim.h"
 #include "testlib.h"
 
-static const char *model =
+/* the model, with its belt line (the formulation and its mesh) */
+static const char *model_fmt =
     "name: sag\n"
-    "belt: {mass_per_length: 20, axial_stiffness: 2.0e6, damping_ratio: 0.05,\n"
-    "       initial_tension: 20000, element_length: 0.025}\n"
+    "belt: {%s, mass_per_length: 20, axial_stiffness: 2.0e6, damping_ratio: 0.05,\n"
+    "       initial_tension: 20000}\n"
     "pulleys:\n"
     "  - {name: tail, x: 0, y: 0, radius: 0.3, wrap: cw, mass: 100}\n"
     "  - {name: head, x: 30, y: 0, radius: 0.3, wrap: cw, mass: 100}\n"
@@ -38,17 +39,39 @@ static const char *model =
     "  - {span: head, spacing: 3.0}\n"
     "simulation: {stabilize: true}\n";
 
-static const char *model_mn =
-    "name: sag\n"
-    "belt: {formulation: moving_node, mass_per_length: 20, axial_stiffness: 2.0e6,\n"
-    "       damping_ratio: 0.05, initial_tension: 20000, span_element_length: 0.075}\n"
-    "pulleys:\n"
-    "  - {name: tail, x: 0, y: 0, radius: 0.3, wrap: cw, mass: 100}\n"
-    "  - {name: head, x: 30, y: 0, radius: 0.3, wrap: cw, mass: 100}\n"
-    "idlers:\n"
-    "  - {span: tail, spacing: 1.5}\n"
-    "  - {span: head, spacing: 3.0}\n"
-    "simulation: {stabilize: true}\n";
+/* the model with that belt, relaxed and run to 2 s */
+static void settled(const char *belt, bd_model_def *def, bd_sim **sim)
+{
+    char text[1024];
+    snprintf(text, sizeof text, model_fmt, belt);
+    bd_test_make_sim(text, def, sim);
+    char err[600];
+    CHECK(bd_sim_stabilize(*sim, NULL, err, sizeof err) == BD_RUN_OK && err[0] == '\0');
+    CHECK(bd_test_run_to(*sim, 2.0) == 0);
+}
+
+/* the carry strand's deepest node below the line (x0, y0)–(x1, y1): its
+ * depth, and the tension and x there */
+static double deepest_below(const bd_sim *sim, double x0, double y0, double x1, double y1,
+                            double *tension, double *x_at)
+{
+    double sag = 0.0;
+    *tension = 0.0;
+    *x_at = 0.0;
+    bd_node_state nd;
+    for (int j = 0; j < bd_sim_node_count(sim); j++) {
+        bd_sim_node(sim, j, &nd);
+        if (nd.x_m <= x0 || nd.x_m >= x1 || nd.y_m < -0.1)
+            continue;   /* the carry strand only, between the two ends */
+        double base = y0 + (y1 - y0) * (nd.x_m - x0) / (x1 - x0);
+        if (base - nd.y_m > sag) {
+            sag = base - nd.y_m;
+            *tension = nd.tension_N;
+            *x_at = nd.x_m;
+        }
+    }
+    return sag;
+}
 
 /* the moving-node belt: the deepest node below the carry strand's line
  * (tangent point to tangent point; its idler nodes lie on it) */
@@ -56,27 +79,12 @@ static void moving_node_sag(void)
 {
     bd_model_def def;
     bd_sim *sim;
-    bd_test_make_sim(model_mn, &def, &sim);
-    char err[600];
-    CHECK(bd_sim_stabilize(sim, NULL, err, sizeof err) == BD_RUN_OK && err[0] == '\0');
-    CHECK(bd_test_run_to(sim, 2.0) == 0);
+    settled("formulation: moving_node, span_element_length: 0.075", &def, &sim);
     int per_set;
-    double a, p0[2], p1[2];
+    double a, p0[2], p1[2], tension, x_at;
     bd_sim_idler_set(sim, 0, &per_set, &a);
     bd_sim_span_ends(sim, 0, p0, p1);
-    double sag = 0.0, tension = 0.0, x_at = 0.0;
-    bd_node_state nd;
-    for (int j = 0; j < bd_sim_node_count(sim); j++) {
-        bd_sim_node(sim, j, &nd);
-        if (nd.x_m <= p0[0] || nd.x_m >= p1[0] || nd.y_m < -0.1)
-            continue;   /* the carry strand only */
-        double line = p0[1] + (p1[1] - p0[1]) * (nd.x_m - p0[0]) / (p1[0] - p0[0]);
-        if (line - nd.y_m > sag) {
-            sag = line - nd.y_m;
-            tension = nd.tension_N;
-            x_at = nd.x_m;
-        }
-    }
+    double sag = deepest_below(sim, p0[0], p0[1], p1[0], p1[1], &tension, &x_at);
     double want = 20.0 * 9.81 * a * a / (8.0 * tension);
     printf("moving_node sag: %.4f mm at x = %.3f m between idlers %.3f m apart at %.0f N "
            "(formula %.4f mm)\n", 1e3 * sag, x_at, a, tension, 1e3 * want);
@@ -91,10 +99,7 @@ int main(void)
     moving_node_sag();
     bd_model_def def;
     bd_sim *sim;
-    bd_test_make_sim(model, &def, &sim);
-    char err[600];
-    CHECK(bd_sim_stabilize(sim, NULL, err, sizeof err) == BD_RUN_OK && err[0] == '\0');
-    CHECK(bd_test_run_to(sim, 2.0) == 0);
+    settled("element_length: 0.025", &def, &sim);
     /* the carry bay in the middle of the span: idlers k and k+1 */
     int per_set;
     double a;
@@ -106,18 +111,8 @@ int main(void)
     double x0 = i0.x_m, y0 = i0.y_m + i0.radius_m;
     double x1 = i1.x_m, y1 = i1.y_m + i1.radius_m;
     CHECK_REL(x1 - x0, a, 1e-9);
-    double sag = 0.0, tension = 0.0;
-    bd_node_state nd;
-    for (int j = 0; j < bd_sim_node_count(sim); j++) {
-        bd_sim_node(sim, j, &nd);
-        if (nd.x_m <= x0 || nd.x_m >= x1 || nd.y_m < -0.1)
-            continue;   /* the carry strand only, between the two idlers */
-        double base = y0 + (y1 - y0) * (nd.x_m - x0) / (x1 - x0);
-        if (base - nd.y_m > sag) {
-            sag = base - nd.y_m;
-            tension = nd.tension_N;
-        }
-    }
+    double tension, x_at;
+    double sag = deepest_below(sim, x0, y0, x1, y1, &tension, &x_at);
     double want = 20.0 * 9.81 * a * a / (8.0 * tension);
     printf("sag: %.3f mm between idlers %.3f m apart at %.0f N (formula %.3f mm)\n", 1e3 * sag, a,
            tension, 1e3 * want);
