@@ -48,12 +48,9 @@ static void elements(bd_sim *sim)
     const double EA = sim->model->EA, *v = sim->vx, *w = mn->w;
     for (int e = 0; e < n; e++) {
         int j = bd_mn_next(e, n);
-        double ds = mm->ds0[e], rate = v[j] - v[e];
-        if (mm->eq[e] >= 0) {
-            const bd_pulley_body *p = &sim->pulleys[mm->eq[e]];
-            ds += mm->dsq[e] * mn->q_seen[mm->eq[e]];
-            rate += mm->dsq[e] * p->qdot;
-        }
+        double ds = bd_mn_element_ds(mm, mn, e), rate = v[j] - v[e];
+        if (mm->eq[e] >= 0)
+            rate += mm->dsq[e] * sim->pulleys[mm->eq[e]].qdot;
         double l = ds, cs = 1.0, sn = 0.0;
         if (!mm->on_arc[e]) {
             double dw = w[j] - w[e];
@@ -88,7 +85,7 @@ static void bending(const bd_sim *sim, double *out)
             continue;
         int b = bd_mn_prev(i, n), j = bd_mn_next(i, n);
         double la = mm->ds0[b], lb = mm->ds0[i], h = 0.5 * (la + lb);
-        double M = EI * ((w[j] - w[i]) / lb - (w[i] - w[b]) / la) / h;
+        double M = EI * ((w[j] - w[i]) / lb - (w[i] - w[b]) / la) / h;   /* EI·κ_i */
         out[j] -= M / lb;
         out[i] += M * (1.0 / la + 1.0 / lb);
         out[b] -= M / la;

@@ -107,9 +107,7 @@ static double element_length(const bd_sim *sim, int e)
 {
     const bd_mn_model *mm = bd_mn_model_of(sim);
     const bd_mn *mn = bd_mn_of(sim);
-    double ds = mm->ds0[e];
-    if (mm->eq[e] >= 0)
-        ds += mm->dsq[e] * mn->q_seen[mm->eq[e]];
+    double ds = bd_mn_element_ds(mm, mn, e);
     if (mm->on_arc[e])
         return ds;
     double dw = mn->w[bd_mn_next(e, sim->model->n)] - mn->w[e];
@@ -135,7 +133,7 @@ double bd_mn_elastic_energy(const bd_sim *sim)
             int b = bd_mn_prev(i, n), j = bd_mn_next(i, n);
             double la = mm->ds0[b], lb = mm->ds0[i], h = 0.5 * (la + lb);
             double kap = ((mn->w[j] - mn->w[i]) / lb - (mn->w[i] - mn->w[b]) / la) / h;
-            e += 0.5 * EI * kap * kap * h;
+            e += 0.5 * EI * kap * kap * h;   /* κ as forces.c's bending() */
         }
     return e;
 }

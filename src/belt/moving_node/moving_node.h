@@ -148,6 +148,16 @@ static inline int bd_mn_prev(int i, int n)
     return i == 0 ? n - 1 : i - 1;
 }
 
+/* element e's length along its path now: at q = 0, plus its share of
+ * the carriage travel the belt has seen (forces.c, integrate.c) */
+static inline double bd_mn_element_ds(const bd_mn_model *mm, const bd_mn *mn, int e)
+{
+    double ds = mm->ds0[e];
+    if (mm->eq[e] >= 0)
+        ds += mm->dsq[e] * mn->q_seen[mm->eq[e]];
+    return ds;
+}
+
 /* layout.c: the nodes on the path */
 void bd_mn_layout_fill(bd_sim *sim);
 int bd_mn_layout_count(const bd_model_def *def, const bd_path *path);
