@@ -34,6 +34,10 @@ assert len(wa) == 1 and text in wa[0], a["warnings"]
 assert not wb, b["warnings"]
 PY
 }
+# the case the test is built on: rated/6.7 < T_max < rated/6
+python3 -c "import json, sys; t = json.load(open(sys.argv[1]))['T_max_N']; \
+sys.exit(not 100000 / 6.7 < t < 100000 / 6)" "$tmp/s1.json" \
+    || bad "static case" "T_max not between rated/6.7 and rated/6: $(grep T_max_N "$tmp/s1.json")"
 if warned "$tmp/s1.json" "$tmp/s2.json" "allowable in steady running" "/ safety factor 6.7 = 14925 N"
 then ok "static: above rated/6.7 warns, with running: 6 it does not"
 else bad "static" "$(cat "$tmp/s1.json" | head -c 600)"; fi
