@@ -139,6 +139,15 @@ typedef struct bd_takeup_def {
     bd_mark mark;         /* the `takeup` key */
 } bd_takeup_def;
 
+/* a corner of a span's route: the belt runs straight from corner to
+ * corner and round a circular arc of `radius` at each (0: a sharp corner,
+ * the belt bent over the idler standing there). Routes come from a
+ * `profile` layout and from idler `curve`s (model-format.md). */
+typedef struct bd_route_vertex {
+    double x, y;      /* m, where the two straight legs meet */
+    double radius;    /* m, vertical-curve radius; 0 = sharp */
+} bd_route_vertex;
+
 typedef struct bd_pulley_def {
     char name[BD_NAME_MAX];
     double x, y;              /* m, centre */
@@ -154,6 +163,8 @@ typedef struct bd_pulley_def {
     bd_drive_def drive;
     int has_takeup;
     bd_takeup_def takeup;
+    int route_count;          /* corners of the span leaving this pulley */
+    bd_route_vertex *route;   /* [route_count] in travel order, owned */
     bd_mark mark;             /* the list entry */
 } bd_pulley_def;
 
@@ -165,6 +176,15 @@ typedef struct bd_idler_set_def {
     double rotating_mass;      /* kg of one set's rotating parts */
     double rolling_resistance; /* force per normal force, - */
     bd_friction friction;      /* belt-idler */
+    /* a vertical curve on part of the span (`curve`): the idlers between
+     * fractions curve_from and curve_to stand on a circular arc of
+     * curve_radius through the span's points there, below the straight
+     * span (concave) or above it (convex) */
+    int has_curve;
+    double curve_radius;       /* m */
+    double curve_from, curve_to;
+    int curve_convex;
+    bd_mark curve_mark;
     bd_mark mark;
 } bd_idler_set_def;
 
@@ -269,6 +289,8 @@ typedef struct bd_model_def {
     bd_material_def material;
     bd_design_def design;
     bd_simulation_def simulation;
+    int from_profile;        /* pulleys and idlers laid out from `profile` */
+    bd_mark profile_mark;
 } bd_model_def;
 
 /* defaults, as model-format.md lists them */

@@ -237,6 +237,7 @@ void bd_model_def_free(bd_model_def *m)
     for (int i = 0; m->pulleys && i < m->pulley_count; i++) {
         table_free(&m->pulleys[i].drive.torque);
         table_free(&m->pulleys[i].takeup.force);
+        free(m->pulleys[i].route);
     }
     free(m->pulleys);
     free(m->idler_sets);

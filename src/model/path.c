@@ -32,6 +32,206 @@ static double turn_angle(const double din[2], const double dout[2], int w)
     return a;
 }
 
+/* a circle (centre c, radius r, sense w) and a point v: the direction of
+ * the belt line leaving the circle towards v (to_point) or arriving at it
+ * from v, and where it touches the circle (the common-tangent rule above
+ * with a zero radius at v). 0 = ok, 1 = v lies inside the circle */
+static int point_tangent(const double c[2], double r, int w, const double v[2], int to_point,
+                         double d[2], double touch[2], double *len)
+{
+    double dx = v[0] - c[0], dy = v[1] - c[1];
+    if (!to_point) {
+        dx = -dx;
+        dy = -dy;
+    }
+    double L = hypot(dx, dy), k = to_point ? -w * r : w * r;
+    if (L <= fabs(k) * (1.0 + 1e-12))
+        return 1;
+    double theta = atan2(dy, dx) - asin(k / L);
+    d[0] = cos(theta);
+    d[1] = sin(theta);
+    touch[0] = c[0] + w * r * d[1];
+    touch[1] = c[1] - w * r * d[0];
+    *len = sqrt(L * L - k * k);
+    return 0;
+}
+
+/* the corners of span i: its pulley's route, or those of the idler
+ * curves on it (a curve between fractions a < b of the straight span is
+ * the fillet at the corner v where the arc's tangents at the span's
+ * points A and B meet; A and B are sharp corners), written to *out (NULL
+ * when none) */
+static int span_corners(const bd_model_def *m, int i, const double p0[2], const double d[2],
+                        double len, bd_route_vertex **out)
+{
+    const bd_pulley_def *a = &m->pulleys[i];
+    *out = NULL;
+    if (a->route_count > 0) {
+        *out = malloc((size_t)a->route_count * sizeof **out);
+        if (*out)
+            memcpy(*out, a->route, (size_t)a->route_count * sizeof **out);
+        return a->route_count;
+    }
+    int curves = 0;
+    for (int k = 0; k < m->idler_set_count; k++)
+        curves += m->idler_sets[k].span == i && m->idler_sets[k].has_curve;
+    if (curves == 0)
+        return 0;
+    bd_route_vertex *v = malloc((size_t)(3 * curves) * sizeof *v);
+    if (!v)
+        return 0;
+    /* the lower side of the span: where the idlers stand */
+    double down[2] = {d[1], -d[0]};
+    if (down[1] > 0.0) {
+        down[0] = -down[0];
+        down[1] = -down[1];
+    }
+    int n = 0;
+    /* in order of `from` (the loader refuses overlapping curves) */
+    for (int done = 0; done < curves; done++) {
+        const bd_idler_set_def *best = NULL;
+        double last = n > 0 ? (v[n - 1].x - p0[0]) * d[0] + (v[n - 1].y - p0[1]) * d[1] : -1.0;
+        for (int k = 0; k < m->idler_set_count; k++) {
+            const bd_idler_set_def *st = &m->idler_sets[k];
+            if (st->span != i || !st->has_curve || st->curve_from * len <= last)
+                continue;
+            if (!best || st->curve_from < best->curve_from)
+                best = st;
+        }
+        if (!best)
+            break;
+        double ua = best->curve_from * len, ub = best->curve_to * len, c = ub - ua;
+        double R = best->curve_radius, half = asin(fmin(1.0, c / (2.0 * R)));
+        double sag = 0.5 * c * tan(half) * (best->curve_convex ? -1.0 : 1.0);
+        double um = 0.5 * (ua + ub);
+        v[n++] = (bd_route_vertex){p0[0] + ua * d[0], p0[1] + ua * d[1], 0.0};
+        v[n++] = (bd_route_vertex){p0[0] + um * d[0] + sag * down[0],
+                                   p0[1] + um * d[1] + sag * down[1], R};
+        v[n++] = (bd_route_vertex){p0[0] + ub * d[0], p0[1] + ub * d[1], 0.0};
+    }
+    *out = v;
+    return n;
+}
+
+/* pieces of a routed span from pulley a to pulley b through corners v[k]:
+ * the legs, rounded at each corner by its radius; appended to pieces
+ * (capacity 2k+1 free). Sets the span's ends and end directions. 0 = ok */
+static int route_pieces(const bd_model_def *m, int i, const bd_route_vertex *v, int k,
+                        bd_path_piece *out, int *count, double ps[2], double ds[2],
+                        double pe[2], double de[2], bd_diag *diag)
+{
+    const bd_pulley_def *a = &m->pulleys[i];
+    const bd_pulley_def *b = &m->pulleys[(i + 1) % m->pulley_count];
+    double ca[2] = {a->x, a->y}, cb[2] = {b->x, b->y};
+    double (*D)[2] = malloc((size_t)(k + 1) * sizeof *D);
+    double *leg = malloc((size_t)(k + 1) * sizeof *leg), *t = malloc((size_t)(k + 2) * sizeof *t);
+    int bad = 0;
+    if (!D || !leg || !t) {
+        free(D), free(leg), free(t);
+        return 1;
+    }
+    double v0[2] = {v[0].x, v[0].y}, vk[2] = {v[k - 1].x, v[k - 1].y};
+    if (point_tangent(ca, a->radius, a->wrap, v0, 1, D[0], ps, &leg[0])
+        || point_tangent(cb, b->radius, b->wrap, vk, 0, D[k], pe, &leg[k])) {
+        bd_diag_error(diag, m->source, a->mark,
+                      "pulleys[%d] '%s': the route of the span to '%s' has a corner inside a "
+                      "pulley", i, a->name, b->name);
+        free(D), free(leg), free(t);
+        return 1;
+    }
+    for (int j = 1; j < k; j++) {
+        double dx = v[j].x - v[j - 1].x, dy = v[j].y - v[j - 1].y, l = hypot(dx, dy);
+        if (l <= 0.0) {
+            bd_diag_error(diag, m->source, a->mark,
+                          "pulleys[%d] '%s': two corners of the span's route coincide", i, a->name);
+            free(D), free(leg), free(t);
+            return 1;
+        }
+        D[j][0] = dx / l;
+        D[j][1] = dy / l;
+        leg[j] = l;
+    }
+    /* fillet j (at corner j-1) cuts t[j] off both legs it joins */
+    t[0] = t[k + 1] = 0.0;
+    for (int j = 1; j <= k; j++) {
+        const double *din = D[j - 1], *dout = D[j];
+        double turn = atan2(din[0] * dout[1] - din[1] * dout[0], din[0] * dout[0] + din[1] * dout[1]);
+        t[j] = v[j - 1].radius * tan(0.5 * fabs(turn));
+    }
+    for (int j = 0; j <= k; j++) {
+        if (t[j] + t[j + 1] > leg[j] * (1.0 + 1e-9) + 1e-9) {
+            bd_diag_error(diag, m->source, a->mark,
+                          "pulleys[%d] '%s': a vertical curve of the span to '%s' does not fit "
+                          "between its neighbours (it needs %.4g m of a %.4g m straight); "
+                          "use a smaller radius", i, a->name, b->name, t[j] + t[j + 1], leg[j]);
+            bad = 1;
+        }
+    }
+    int n = 0;
+    double at[2] = {ps[0], ps[1]};
+    for (int j = 0; j <= k; j++) {
+        double l = fmax(0.0, leg[j] - t[j] - t[j + 1]);
+        out[n++] = (bd_path_piece){.is_arc = 0, .length = l, .p0 = {at[0], at[1]},
+                                   .dir = {D[j][0], D[j][1]}};
+        at[0] += l * D[j][0];
+        at[1] += l * D[j][1];
+        if (j == k || t[j + 1] <= 0.0)
+            continue;
+        const double *din = D[j], *dout = D[j + 1];
+        double cr = din[0] * dout[1] - din[1] * dout[0];
+        double turn = atan2(cr, din[0] * dout[0] + din[1] * dout[1]);
+        double sigma = turn >= 0.0 ? 1.0 : -1.0, R = v[j].radius;
+        bd_path_piece *arc = &out[n++];
+        *arc = (bd_path_piece){.is_arc = 1, .radius = R, .sweep = turn, .length = R * fabs(turn),
+                               .p0 = {at[0], at[1]}};
+        arc->centre[0] = at[0] - sigma * R * din[1];
+        arc->centre[1] = at[1] + sigma * R * din[0];
+        arc->angle0 = atan2(at[1] - arc->centre[1], at[0] - arc->centre[0]);
+        at[0] = arc->centre[0] + R * cos(arc->angle0 + turn);
+        at[1] = arc->centre[1] + R * sin(arc->angle0 + turn);
+    }
+    ds[0] = D[0][0];
+    ds[1] = D[0][1];
+    de[0] = D[k][0];
+    de[1] = D[k][1];
+    *count = n;
+    free(D), free(leg), free(t);
+    return bad;
+}
+
+/* the point of a piece at distance u from its start, and the tangent */
+static void piece_point(const bd_path_piece *g, double u, double p[2], double tangent[2])
+{
+    if (!g->is_arc) {
+        p[0] = g->p0[0] + u * g->dir[0];
+        p[1] = g->p0[1] + u * g->dir[1];
+        tangent[0] = g->dir[0];
+        tangent[1] = g->dir[1];
+        return;
+    }
+    double sense = g->sweep >= 0.0 ? 1.0 : -1.0;
+    double ang = g->angle0 + sense * u / g->radius;
+    double c = cos(ang), sn = sin(ang);
+    p[0] = g->centre[0] + g->radius * c;
+    p[1] = g->centre[1] + g->radius * sn;
+    tangent[0] = -sense * sn;
+    tangent[1] = sense * c;
+}
+
+/* distance along a piece of the point nearest (x, y), not clamped to it */
+static double piece_project(const bd_path_piece *g, double x, double y)
+{
+    if (!g->is_arc)
+        return (x - g->p0[0]) * g->dir[0] + (y - g->p0[1]) * g->dir[1];
+    double sense = g->sweep >= 0.0 ? 1.0 : -1.0;
+    double rel = sense * (atan2(y - g->centre[1], x - g->centre[0]) - g->angle0);
+    while (rel < -BD_PI)
+        rel += BD_TWO_PI;
+    while (rel >= BD_PI)
+        rel -= BD_TWO_PI;
+    return rel * g->radius;
+}
+
 int bd_path_build(const bd_model_def *m, bd_path *path, bd_diag *diag)
 {
     int n = m->pulley_count;
@@ -39,18 +239,16 @@ int bd_path_build(const bd_model_def *m, bd_path *path, bd_diag *diag)
     if (n < 2)
         return 1;
     double (*dir)[2] = calloc((size_t)n, sizeof *dir);
+    double (*dir1)[2] = calloc((size_t)n, sizeof *dir1);
+    double (*ps)[2] = calloc((size_t)n, sizeof *ps);
+    double (*pe)[2] = calloc((size_t)n, sizeof *pe);
     double *span_len = calloc((size_t)n, sizeof *span_len);
+    int *pfirst = calloc((size_t)n, sizeof *pfirst), *pcount = calloc((size_t)n, sizeof *pcount);
     path->segments = calloc((size_t)(2 * n), sizeof *path->segments);
-    if (!dir || !span_len || !path->segments) {
-        free(dir);
-        free(span_len);
-        bd_path_free(path);
-        return 1;
-    }
-    int bad = 0;
+    int bad = !dir || !dir1 || !ps || !pe || !span_len || !pfirst || !pcount || !path->segments;
 
     /* no two pulleys may overlap, neighbours or not */
-    for (int i = 0; i < n; i++)
+    for (int i = 0; !bad && i < n; i++)
         for (int j = i + 1; j < n; j++) {
             const bd_pulley_def *a = &m->pulleys[i], *b = &m->pulleys[j];
             double gap = hypot(b->x - a->x, b->y - a->y) - a->radius - b->radius;
@@ -61,15 +259,10 @@ int bd_path_build(const bd_model_def *m, bd_path *path, bd_diag *diag)
                 bad = 1;
             }
         }
-    if (bad) {
-        free(dir);
-        free(span_len);
-        bd_path_free(path);
-        return 1;
-    }
 
-    /* spans: common tangent from pulley i to pulley i+1 */
-    for (int i = 0; i < n; i++) {
+    /* spans: common tangent from pulley i to pulley i+1, then through the
+     * corners of its route when it has one */
+    for (int i = 0; !bad && i < n; i++) {
         const bd_pulley_def *a = &m->pulleys[i];
         const bd_pulley_def *b = &m->pulleys[(i + 1) % n];
         double dx = b->x - a->x, dy = b->y - a->y;
@@ -85,13 +278,39 @@ int bd_path_build(const bd_model_def *m, bd_path *path, bd_diag *diag)
         }
         double phi = atan2(dy, dx);
         double theta = phi - asin(k / L);
-        dir[i][0] = cos(theta);
-        dir[i][1] = sin(theta);
+        dir[i][0] = dir1[i][0] = cos(theta);
+        dir[i][1] = dir1[i][1] = sin(theta);
         span_len[i] = sqrt(L * L - k * k);
+        double na[2] = {dir[i][1], -dir[i][0]};
+        ps[i][0] = a->x + a->wrap * a->radius * na[0];
+        ps[i][1] = a->y + a->wrap * a->radius * na[1];
+        pe[i][0] = ps[i][0] + span_len[i] * dir[i][0];
+        pe[i][1] = ps[i][1] + span_len[i] * dir[i][1];
+        bd_route_vertex *v;
+        int nv = span_corners(m, i, ps[i], dir[i], span_len[i], &v);
+        if (nv == 0)
+            continue;
+        bd_path_piece *grown =
+            realloc(path->pieces, (size_t)(path->piece_count + 2 * nv + 1) * sizeof *grown);
+        if (!grown) {
+            free(v);
+            bad = 1;
+            continue;
+        }
+        path->pieces = grown;
+        int made = 0;
+        bad |= route_pieces(m, i, v, nv, path->pieces + path->piece_count, &made, ps[i], dir[i],
+                            pe[i], dir1[i], diag);
+        free(v);
+        pfirst[i] = path->piece_count;
+        pcount[i] = made;
+        path->piece_count += made;
+        span_len[i] = 0.0;
+        for (int q = 0; q < made; q++)
+            span_len[i] += path->pieces[pfirst[i] + q].length;
     }
     if (bad) {
-        free(dir);
-        free(span_len);
+        free(dir), free(dir1), free(ps), free(pe), free(span_len), free(pfirst), free(pcount);
         bd_path_free(path);
         return 1;
     }
@@ -100,27 +319,29 @@ int bd_path_build(const bd_model_def *m, bd_path *path, bd_diag *diag)
     path->segment_count = 2 * n;
     double s = 0.0;
     for (int i = 0; i < n; i++) {
-        const bd_pulley_def *a = &m->pulleys[i];
         int j = (i + 1) % n;
         const bd_pulley_def *b = &m->pulleys[j];
-        double na[2] = {dir[i][1], -dir[i][0]};
 
         bd_path_segment *sp = &path->segments[2 * i];
         sp->kind = BD_SEGMENT_SPAN;
         sp->pulley = i;
         sp->s0 = s;
         sp->length = span_len[i];
-        sp->dir[0] = dir[i][0];
-        sp->dir[1] = dir[i][1];
-        sp->p0[0] = a->x + a->wrap * a->radius * na[0];
-        sp->p0[1] = a->y + a->wrap * a->radius * na[1];
-        sp->p1[0] = sp->p0[0] + span_len[i] * dir[i][0];
-        sp->p1[1] = sp->p0[1] + span_len[i] * dir[i][1];
-        s += sp->length;
+        memcpy(sp->dir, dir[i], sizeof sp->dir);
+        memcpy(sp->dir1, dir1[i], sizeof sp->dir1);
+        memcpy(sp->p0, ps[i], sizeof sp->p0);
+        memcpy(sp->p1, pe[i], sizeof sp->p1);
+        sp->piece_first = pfirst[i];
+        sp->piece_count = pcount[i];
+        for (int q = 0; q < pcount[i]; q++) {
+            path->pieces[pfirst[i] + q].s0 = s;
+            s += path->pieces[pfirst[i] + q].length;
+        }
+        s = sp->s0 + sp->length;
 
         /* arc of pulley j: from the end of span i to the start of span j */
         bd_path_segment *arc = &path->segments[2 * i + 1];
-        double wrap = turn_angle(dir[i], dir[j], b->wrap);
+        double wrap = turn_angle(dir1[i], dir[j], b->wrap);
         arc->kind = BD_SEGMENT_ARC;
         arc->pulley = j;
         arc->s0 = s;
@@ -139,30 +360,41 @@ int bd_path_build(const bd_model_def *m, bd_path *path, bd_diag *diag)
         s += arc->length;
     }
     path->length = s;
-    free(dir);
-    free(span_len);
+    free(dir), free(dir1), free(ps), free(pe), free(span_len), free(pfirst), free(pcount);
 
     /* no span may run through a pulley it does not leave or reach: the
      * common tangents above do not look at the others (a snub placed
      * across the carry strand laid the belt through it, and the discrete
-     * belt's static layout diverged at its first step) */
+     * belt's static layout diverged at its first step). Measured on the
+     * straight pieces; a vertical curve is hundreds of metres round */
     for (int i = 0; i < n; i++) {
         const bd_path_segment *sp = &path->segments[2 * i];
         int j = (i + 1) % n;
-        for (int k = 0; k < n; k++) {
-            if (k == i || k == j)
-                continue;
-            const bd_pulley_def *c = &m->pulleys[k];
-            double t = (c->x - sp->p0[0]) * sp->dir[0] + (c->y - sp->p0[1]) * sp->dir[1];
-            t = t < 0.0 ? 0.0 : (t > sp->length ? sp->length : t);
-            double d = hypot(sp->p0[0] + t * sp->dir[0] - c->x, sp->p0[1] + t * sp->dir[1] - c->y);
-            if (d < c->radius * (1.0 - 1e-9)) {
-                bd_diag_error(diag, m->source, c->mark,
-                              "pulleys[%d] '%s': the belt span from '%s' to '%s' runs through "
-                              "it (%.4g m from its centre, radius %.4g m); move the pulley or "
-                              "change a wrap direction", k, c->name, m->pulleys[i].name,
-                              m->pulleys[j].name, d, c->radius);
-                bad = 1;
+        int pieces = sp->piece_count > 0 ? sp->piece_count : 1;
+        for (int q = 0; q < pieces; q++) {
+            const double *p0 = sp->p0, *d = sp->dir;
+            double len = sp->length;
+            if (sp->piece_count > 0) {
+                const bd_path_piece *g = &path->pieces[sp->piece_first + q];
+                if (g->is_arc)
+                    continue;
+                p0 = g->p0, d = g->dir, len = g->length;
+            }
+            for (int k = 0; k < n; k++) {
+                if (k == i || k == j)
+                    continue;
+                const bd_pulley_def *c = &m->pulleys[k];
+                double t = (c->x - p0[0]) * d[0] + (c->y - p0[1]) * d[1];
+                t = t < 0.0 ? 0.0 : (t > len ? len : t);
+                double dd = hypot(p0[0] + t * d[0] - c->x, p0[1] + t * d[1] - c->y);
+                if (dd < c->radius * (1.0 - 1e-9)) {
+                    bd_diag_error(diag, m->source, c->mark,
+                                  "pulleys[%d] '%s': the belt span from '%s' to '%s' runs "
+                                  "through it (%.4g m from its centre, radius %.4g m); move the "
+                                  "pulley or change a wrap direction", k, c->name,
+                                  m->pulleys[i].name, m->pulleys[j].name, dd, c->radius);
+                    bad = 1;
+                }
             }
         }
     }
@@ -176,6 +408,7 @@ int bd_path_build(const bd_model_def *m, bd_path *path, bd_diag *diag)
 void bd_path_free(bd_path *path)
 {
     free(path->segments);
+    free(path->pieces);
     memset(path, 0, sizeof *path);
 }
 
@@ -196,6 +429,20 @@ int bd_path_segment_at(const bd_path *path, double s)
     return lo;
 }
 
+/* the piece of routed span g holding s */
+static const bd_path_piece *span_piece_at(const bd_path *path, const bd_path_segment *g, double s)
+{
+    int lo = g->piece_first, hi = g->piece_first + g->piece_count - 1;
+    while (lo < hi) {
+        int mid = (lo + hi + 1) / 2;
+        if (path->pieces[mid].s0 <= s)
+            lo = mid;
+        else
+            hi = mid - 1;
+    }
+    return &path->pieces[lo];
+}
+
 void bd_path_point(const bd_path *path, double s, double p[2], double tangent[2])
 {
     s = fmod(s, path->length);
@@ -203,6 +450,11 @@ void bd_path_point(const bd_path *path, double s, double p[2], double tangent[2]
         s += path->length;
     const bd_path_segment *g = &path->segments[bd_path_segment_at(path, s)];
     double u = s - g->s0;
+    if (g->kind == BD_SEGMENT_SPAN && g->piece_count > 0) {
+        const bd_path_piece *q = span_piece_at(path, g, s);
+        piece_point(q, s - q->s0, p, tangent);
+        return;
+    }
     if (g->kind == BD_SEGMENT_SPAN) {
         p[0] = g->p0[0] + u * g->dir[0];
         p[1] = g->p0[1] + u * g->dir[1];
@@ -218,6 +470,43 @@ void bd_path_point(const bd_path *path, double s, double p[2], double tangent[2]
     /* travel direction: radial unit vector turned by 90° in the wrap sense */
     tangent[0] = -sense * sn;
     tangent[1] = sense * c;
+}
+
+double bd_path_span_project(const bd_path *path, const bd_path_segment *g, double x, double y)
+{
+    if (g->piece_count == 0)
+        return (x - g->p0[0]) * g->dir[0] + (y - g->p0[1]) * g->dir[1];
+    double best = INFINITY, u_best = 0.0;
+    for (int q = 0; q < g->piece_count; q++) {
+        const bd_path_piece *pc = &path->pieces[g->piece_first + q];
+        double u = piece_project(pc, x, y), uc = fmin(fmax(u, 0.0), pc->length);
+        /* before the first piece and beyond the last, unclamped */
+        if ((q == 0 && u < 0.0) || (q == g->piece_count - 1 && u > pc->length))
+            uc = u;
+        double p[2], t[2];
+        piece_point(pc, fmin(fmax(uc, 0.0), pc->length), p, t);
+        double off = uc - fmin(fmax(uc, 0.0), pc->length);
+        double d = hypot(p[0] + off * t[0] - x, p[1] + off * t[1] - y);
+        if (d < best) {
+            best = d;
+            u_best = pc->s0 - g->s0 + uc;
+        }
+    }
+    return u_best;
+}
+
+double bd_path_curvature(const bd_path *path, double s)
+{
+    s = fmod(s, path->length);
+    if (s < 0.0)
+        s += path->length;
+    const bd_path_segment *g = &path->segments[bd_path_segment_at(path, s)];
+    if (g->kind != BD_SEGMENT_SPAN || g->piece_count == 0)
+        return 0.0;
+    const bd_path_piece *q = span_piece_at(path, g, s);
+    if (!q->is_arc)
+        return 0.0;
+    return (q->sweep >= 0.0 ? 1.0 : -1.0) / q->radius;
 }
 
 const bd_path_segment *bd_path_span(const bd_path *path, int pulley)

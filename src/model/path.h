@@ -12,6 +12,21 @@
 
 typedef enum bd_segment_kind { BD_SEGMENT_SPAN = 0, BD_SEGMENT_ARC } bd_segment_kind;
 
+/* A piece of a routed span (one with vertical curves or corners): a
+ * straight line or a circular arc, the pieces of a span joined end to
+ * end. A straight span has none. */
+typedef struct bd_path_piece {
+    int is_arc;
+    double s0;         /* m, path coordinate of its start */
+    double length;     /* m */
+    double p0[2];      /* m, start point */
+    double dir[2];     /* line: unit direction of travel */
+    double centre[2];  /* arc: centre of curvature */
+    double radius;     /* arc: m */
+    double angle0;     /* arc: polar angle of p0 about the centre, rad */
+    double sweep;      /* arc: signed angle swept, rad (+ ccw) */
+} bd_path_piece;
+
 typedef struct bd_path_segment {
     bd_segment_kind kind;
     int pulley;        /* span: the pulley it leaves; arc: the pulley wrapped */
@@ -19,7 +34,10 @@ typedef struct bd_path_segment {
     double length;     /* m */
     double p0[2];      /* m, start point */
     double p1[2];      /* m, end point */
-    double dir[2];     /* span: unit direction of travel */
+    double dir[2];     /* span: unit direction of travel where it starts;
+                          arc: where it ends */
+    double dir1[2];    /* span: unit direction of travel where it ends */
+    int piece_first, piece_count;  /* span: its pieces (0: straight) */
     double centre[2];  /* arc: pulley centre */
     double radius;     /* arc: m */
     double angle0;     /* arc: polar angle of p0 about the centre, rad */
@@ -31,6 +49,8 @@ typedef struct bd_path {
     int segment_count;         /* 2 * pulley_count */
     bd_path_segment *segments; /* [segment_count] */
     double length;             /* m, whole loop */
+    int piece_count;
+    bd_path_piece *pieces;     /* [piece_count] of the routed spans */
 } bd_path;
 
 /* build from pulley centres, radii and wrap senses; problems (pulleys that
@@ -44,6 +64,12 @@ void bd_path_point(const bd_path *path, double s, double p[2], double tangent[2]
 /* index of the segment holding s (s modulo the loop length) */
 int bd_path_segment_at(const bd_path *path, double s);
 
+/* along span g: the distance from its start of the point nearest (x, y);
+ * before its start negative, beyond its end more than its length */
+double bd_path_span_project(const bd_path *path, const bd_path_segment *g, double x, double y);
+/* signed curvature of the path at s on a span (1/m, + turning ccw); 0 on
+ * straight pieces and pulley arcs */
+double bd_path_curvature(const bd_path *path, double s);
 /* the span leaving pulley i, and the arc of pulley i */
 const bd_path_segment *bd_path_span(const bd_path *path, int pulley);
 const bd_path_segment *bd_path_arc(const bd_path *path, int pulley);

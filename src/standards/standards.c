@@ -133,7 +133,7 @@ void bd_std_propagate(bd_std_ctx *c)
     if (c->takeup >= 0) {
         int p = c->takeup;
         const bd_takeup_def *tu = &m->pulleys[p].takeup;
-        const double *uin = bd_path_span(&c->path, (p + c->n - 1) % c->n)->dir;
+        const double *uin = bd_path_span(&c->path, (p + c->n - 1) % c->n)->dir1;
         const double *uout = bd_path_span(&c->path, p)->dir;
         double ci = uin[0] * tu->axis[0] + uin[1] * tu->axis[1];
         double co = uout[0] * tu->axis[0] + uout[1] * tu->axis[1];
@@ -298,6 +298,15 @@ static int build_sections(bd_std_ctx *c)
             s->length = sp->length * frac;
             s->lift = rise * s->length;
             s->cos_delta = fabs(sp->dir[0]);
+            if (sp->piece_count > 0) {
+                /* a routed span: its rise and the mean cos δ of the
+                 * section, ∫cos δ ds over its length, from its ends */
+                double pa[2], pb[2], t[2];
+                bd_path_point(&c->path, sp->s0 + cut[q] * sp->length, pa, t);
+                bd_path_point(&c->path, sp->s0 + cut[q + 1] * sp->length, pb, t);
+                s->lift = pb[1] - pa[1];
+                s->cos_delta = s->length > 0.0 ? fabs(pb[0] - pa[0]) / s->length : 1.0;
+            }
             /* the feed span carries material only behind the feed point */
             int load_here = loaded[i] && !(i == feed && (feed_at >= 1.0 || (parts == 2 && q == 0)));
             s->mL = load_here ? m->material.mass_per_length : 0.0;
@@ -312,6 +321,11 @@ static int build_sections(bd_std_ctx *c)
         os->length_m = sp->length;
         os->lift_m = rise * sp->length;
         os->slope_rad = atan2(rise, fabs(sp->dir[0]));
+        if (sp->piece_count > 0) {
+            /* a routed span: from end to end */
+            os->lift_m = sp->p1[1] - sp->p0[1];
+            os->slope_rad = atan2(os->lift_m, fabs(sp->p1[0] - sp->p0[0]));
+        }
         os->idler_spacing_m = spacing;
         os->mR_kg_per_m = mR;
         os->loaded = loaded[i];
@@ -524,7 +538,7 @@ int bd_static_compute(const bd_model_def *m, bd_static_result *out, bd_diag *dia
                 c.takeup_force = bd_table_eval(&tu->force, 0.0);
             else if (tu->type == BD_TAKEUP_GRAVITY)
                 c.takeup_force = tu->mass * c.g; /* counterweight's weight */
-            const double *uin = bd_path_span(&c.path, (c.takeup + c.n - 1) % c.n)->dir;
+            const double *uin = bd_path_span(&c.path, (c.takeup + c.n - 1) % c.n)->dir1;
             const double *uout = bd_path_span(&c.path, c.takeup)->dir;
             double den = (uin[0] - uout[0]) * tu->axis[0] + (uin[1] - uout[1]) * tu->axis[1];
             if (fabs(den) <= 1e-9)

@@ -192,7 +192,7 @@ static void setup_pulleys(bd_sim *sim, const int *pnode)
             const double *a = p->m->axis;
             const bd_path_segment *in = bd_path_span(&sim->model->path, (i + np - 1) % np);
             const bd_path_segment *out = bd_path_span(&sim->model->path, i);
-            ap->c_in = in->dir[0] * a[0] + in->dir[1] * a[1];
+            ap->c_in = in->dir1[0] * a[0] + in->dir1[1] * a[1];
             ap->c_out = out->dir[0] * a[0] + out->dir[1] * a[1];
             /* the wrapped belt hangs on the pulley: its weight along the
              * axis; and the belt pulls at the tangent points, where the

@@ -91,17 +91,20 @@ static void setup_idlers(bd_sim *sim)
     for (int k = 0; k < def->idler_set_count; k++) {
         const bd_idler_set_def *set = &def->idler_sets[k];
         const bd_path_segment *sp = bd_path_span(&sim->model->path, set->span);
-        /* the lower side of the belt: the normal pointing down */
-        double nx = sp->dir[1], ny = -sp->dir[0];
-        if (ny > 0.0) {
-            nx = -nx;
-            ny = -ny;
-        }
         for (int j = 0; j < sim->model->idlers_per_set[k]; j++) {
             bd_idler_model *im = &sim->own->idlers[at];
             bd_idler *id = &sim->idlers[at++];
             id->m = im;
             double s = sp->s0 + (j + 1) * sim->model->idler_spacing[k];
+            /* the lower side of the belt there (a vertical curve turns it):
+             * the normal pointing down */
+            double pt[2], t[2];
+            bd_path_point(&sim->model->path, s, pt, t);
+            double nx = t[1], ny = -t[0];
+            if (ny > 0.0) {
+                nx = -nx;
+                ny = -ny;
+            }
             bd_tracker_init(sim, &id->tr, s);
             /* touch the belt as laid (not the ideal path): no initial kick */
             int e = id->tr.element, e1 = e + 1 == sim->model->n ? 0 : e + 1;
@@ -154,7 +157,8 @@ static void straighten_spans(bd_sim *sim)
         int prev = i == 0 ? n - 1 : i - 1;
         const bd_path_segment *g = &sim->model->path.segments[bd_lumped_of(sim)->seg_hint[i]];
         const bd_path_segment *gp = &sim->model->path.segments[bd_lumped_of(sim)->seg_hint[prev]];
-        if (g->kind != BD_SEGMENT_SPAN || gp->kind != BD_SEGMENT_ARC)
+        /* a routed span's nodes stay on its route */
+        if (g->kind != BD_SEGMENT_SPAN || gp->kind != BD_SEGMENT_ARC || g->piece_count > 0)
             continue;
         /* i is the first node of a span after a wrap; find its last node */
         int last = i, count = 1;

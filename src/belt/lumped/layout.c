@@ -175,7 +175,7 @@ static int takeup_level(const bd_model_def *def, const bd_path *path, const weig
     bd_rest_load load = rest_load(def, path);
     double arc_mass = bd_rest_mass(path, &load, arc->s0, arc->s0 + arc->length);
     double gravity_pull = -(pd->mass + arc_mass) * def->gravity * a[1];
-    double u_in_a = in->dir[0] * a[0] + in->dir[1] * a[1];
+    double u_in_a = in->dir1[0] * a[0] + in->dir1[1] * a[1];
     double u_out_a = out->dir[0] * a[0] + out->dir[1] * a[1];
     double W_in = weight_at(g, arc->s0);
     double W_out = weight_at(g, arc->s0 + arc->length);

@@ -76,7 +76,7 @@ double bd_lumped_element_s(const bd_sim *sim, int e)
     for (int it = 0; it < 6; it++) {
         const bd_path_segment *g = &sim->model->path.segments[seg];
         if (g->kind == BD_SEGMENT_SPAN) {
-            u = (mx - g->p0[0]) * g->dir[0] + (my - g->p0[1]) * g->dir[1];
+            u = bd_path_span_project(&sim->model->path, g, mx, my);
         } else {
             double sense = g->sweep >= 0.0 ? 1.0 : -1.0;
             double rel = sense * (atan2(my - g->centre[1], mx - g->centre[0]) - g->angle0);

@@ -123,7 +123,7 @@ static int setup_movers(bd_sim *sim, bd_diag *diag)
         const double *a = pm->axis;
         const bd_path_segment *in = bd_path_span(path, (p + np - 1) % np);
         const bd_path_segment *out = bd_path_span(path, p);
-        double c_in = in->dir[0] * a[0] + in->dir[1] * a[1];
+        double c_in = in->dir1[0] * a[0] + in->dir1[1] * a[1];
         double c_out = out->dir[0] * a[0] + out->dir[1] * a[1];
         /* in: back from the tangent-in node */
         int tin = pp->first, start = bd_mn_prev(tin, n);
