@@ -40,6 +40,7 @@
 #include <string.h>
 #include "base/constants.h"
 #include "base/file.h"
+#include "model/profile.h"
 
 #define PATH_LEN 256
 #define MAX_FIELDS 16
@@ -402,6 +403,10 @@ static void parse_list(ctx *c, const listspec *ls, yaml_node_t *v, const char *p
     int n, saved = c->index;
     if (!v || v->type != YAML_SEQUENCE_NODE) {
         type_error(c, v, path, "a list");
+        return;
+    }
+    if (*(void **)((char *)base + off)) {
+        err(c, mark_of(v), path, "given twice (a profile lays these out)");
         return;
     }
     n = seq_len(v);
@@ -806,21 +811,56 @@ static const listspec pulley_list = {&pulley_fs, sizeof(bd_pulley_def),
 
 /* ---- idlers ---- */
 
+static void curve_post(ctx *c, const fieldset *fs, yaml_node_t *const *found, bd_mark at,
+                       const char *path, void *base)
+{
+    bd_idler_set_def *st = base;
+    (void)fs, (void)found;
+    st->has_curve = 1;
+    st->curve_mark = at;
+    /* a curve starts and ends on the straight span: the belt leaves and
+     * reaches the pulleys along the span's tangent */
+    if (!(st->curve_from > 0.0 && st->curve_from < st->curve_to && st->curve_to < 1.0))
+        err(c, at, path, "expected 0 < from < to < 1, got from %g, to %g", st->curve_from,
+            st->curve_to);
+}
+
+static const char *const sense_names[] = {"concave", "convex", NULL};
+static const field curve_fields[] = {
+    POS("radius", bd_idler_set_def, curve_radius, REQ),
+    NUM("from", bd_idler_set_def, curve_from, REQ, 0.0, 1.0),
+    NUM("to", bd_idler_set_def, curve_to, REQ, 0.0, 1.0),
+    ENUM("sense", bd_idler_set_def, curve_convex, 0, sense_names, NULL),
+};
+FIELDSET(curve_fs, curve_fields, curve_post);
+
 static void idler_post(ctx *c, const fieldset *fs, yaml_node_t *const *found, bd_mark at,
                        const char *path, void *base)
 {
-    (void)c, (void)fs, (void)found, (void)path;
-    ((bd_idler_set_def *)base)->mark = at;
+    bd_idler_set_def *st = base;
+    (void)fs, (void)found, (void)path;
+    st->mark = at;
+    /* curves on one span may not overlap (model-format.md) */
+    for (int j = 0; st->has_curve && j < c->index; j++) {
+        const bd_idler_set_def *o = &c->m->idler_sets[j];
+        if (o->has_curve && o->span == st->span && o->curve_from < st->curve_to
+            && st->curve_from < o->curve_to)
+            err(c, st->curve_mark, path, "curve: overlaps the curve of idlers[%d] on the same span", j);
+    }
 }
+
+#define IDLER_FIELDS \
+    POS("spacing", bd_idler_set_def, spacing, REQ), \
+    POS("radius", bd_idler_set_def, radius, 0), \
+    NONNEG("inertia", bd_idler_set_def, inertia, 0), \
+    NONNEG("rotating_mass", bd_idler_set_def, rotating_mass, 0), \
+    NONNEG("rolling_resistance", bd_idler_set_def, rolling_resistance, 0), \
+    MAP("friction", bd_idler_set_def, friction, 0, &friction_fs)
 
 static const field idler_fields[] = {
     SPAN("span", bd_idler_set_def, span, REQ),
-    POS("spacing", bd_idler_set_def, spacing, REQ),
-    POS("radius", bd_idler_set_def, radius, 0),
-    NONNEG("inertia", bd_idler_set_def, inertia, 0),
-    NONNEG("rotating_mass", bd_idler_set_def, rotating_mass, 0),
-    NONNEG("rolling_resistance", bd_idler_set_def, rolling_resistance, 0),
-    MAP("friction", bd_idler_set_def, friction, 0, &friction_fs),
+    IDLER_FIELDS,
+    SUBMAP("curve", 0, &curve_fs),
 };
 FIELDSET(idler_fs, idler_fields, idler_post);
 
@@ -831,6 +871,167 @@ static void init_idler(void *s)
 
 static const listspec idler_list = {&idler_fs, sizeof(bd_idler_set_def),
                                     offsetof(bd_model_def, idler_set_count), init_idler, 0};
+
+/* ---- profile (model-format.md: a conveyor given by its route) ---- */
+
+/* an idler set of the profile: its span is the layout's */
+static const field profile_idler_fields[] = {IDLER_FIELDS};
+FIELDSET(profile_idler_fs, profile_idler_fields, NULL);
+
+static void profile_points(ctx *c, const field *f, yaml_node_t *v, bd_mark key, const char *path,
+                           void *base)
+{
+    bd_profile_def *p = base;
+    char sub[PATH_LEN];
+    (void)f, (void)key;
+    if (!v || v->type != YAML_SEQUENCE_NODE || seq_len(v) < 2) {
+        type_error(c, v, path, "a list of at least two [chainage, elevation] points");
+        return;
+    }
+    int n = seq_len(v);
+    p->points = calloc((size_t)n, sizeof *p->points);
+    if (!p->points) {
+        err(c, mark_of(v), path, "out of memory");
+        return;
+    }
+    p->point_count = n;
+    for (int i = 0; i < n; i++) {
+        yaml_node_t *item = node_at(c, v->data.sequence.items.start[i]);
+        join_index(sub, path, i);
+        if (get_numbers(c, item, sub, 2, "a [chainage, elevation] point", p->points[i]))
+            continue;
+        if (i > 0 && !(p->points[i][0] > p->points[i - 1][0]))
+            err(c, mark_of(item), sub, "expected a chainage > %g (chainage must increase from "
+                "the tail to the head), got %g", p->points[i - 1][0], p->points[i][0]);
+    }
+}
+
+static void profile_curve_post(ctx *c, const fieldset *fs, yaml_node_t *const *found, bd_mark at,
+                               const char *path, void *base)
+{
+    (void)c, (void)fs, (void)found, (void)path;
+    ((bd_profile_curve *)base)->mark = at;
+}
+
+static const field profile_curve_fields[] = {
+    NUM("at", bd_profile_curve, at, REQ, 1.0, INFINITY),
+    POS("radius", bd_profile_curve, radius, REQ),
+};
+FIELDSET(profile_curve_fs, profile_curve_fields, profile_curve_post);
+
+static void init_profile_curve(void *p)
+{
+    memset(p, 0, sizeof(bd_profile_curve));
+}
+
+static const listspec profile_curve_list = {&profile_curve_fs, sizeof(bd_profile_curve),
+                                            offsetof(bd_profile_def, curve_count),
+                                            init_profile_curve, 0};
+
+static void profile_end_post(ctx *c, const fieldset *fs, yaml_node_t *const *found, bd_mark at,
+                             const char *path, void *base)
+{
+    bd_pulley_def *p = base;
+    (void)c, (void)path;
+    p->mark = at;
+    p->has_drive = got(fs, found, "drive") != NULL;
+    if (!got(fs, found, "inertia"))
+        p->inertia = 0.5 * p->mass * p->radius * p->radius;
+}
+
+static const field profile_end_fields[] = {
+    POS("radius", bd_pulley_def, radius, REQ),
+    NONNEG("mass", bd_pulley_def, mass, 0),
+    NONNEG("inertia", bd_pulley_def, inertia, 0),
+    MAP("friction", bd_pulley_def, friction, 0, &friction_fs),
+    NONNEG("bearing_damping", bd_pulley_def, bearing_damping, 0),
+    POS("velocity_threshold", bd_pulley_def, velocity_threshold, 0),
+    POS("force_threshold", bd_pulley_def, force_threshold, 0),
+    MAP("drive", bd_pulley_def, drive, 0, &drive_fs),
+};
+FIELDSET(profile_end_fs, profile_end_fields, profile_end_post);
+
+static void profile_takeup_post(ctx *c, const fieldset *fs, yaml_node_t *const *found, bd_mark at,
+                                const char *path, void *base)
+{
+    ((bd_profile_takeup *)base)->mark = at;
+    takeup_post(c, fs, found, at, path, base);
+}
+
+static const char *const end_names[] = {"tail", "head", NULL};
+static const field profile_takeup_fields[] = {
+    ENUM("at", bd_profile_takeup, at_head, REQ, end_names, NULL),
+    ENUM("type", bd_profile_takeup, t.type, REQ, takeup_names, NULL),
+    NONNEG("mass", bd_profile_takeup, t.mass, 0),
+    TABLE("force", bd_profile_takeup, t.force, SCALAR, 0.0),
+    FN("travel", takeup_travel),
+    POS("depth", bd_profile_takeup, depth, 0),
+};
+FIELDSET(profile_takeup_fs, profile_takeup_fields, profile_takeup_post);
+
+static void profile_post(ctx *c, const fieldset *fs, yaml_node_t *const *found, bd_mark at,
+                         const char *path, void *base)
+{
+    bd_profile_def *p = base;
+    (void)fs, (void)found;
+    p->mark = at;
+    for (int i = 0; i < p->curve_count; i++) {
+        const bd_profile_curve *cv = &p->curves[i];
+        char sub[PATH_LEN];
+        join(sub, path, "curves");
+        if (cv->at != floor(cv->at) || cv->at > p->point_count - 2)
+            err(c, cv->mark, sub, "[%d].at: expected the index of an inner point, 1 to %d, got %g",
+                i, p->point_count - 2, cv->at);
+        for (int j = 0; j < i; j++)
+            if (p->curves[j].at == cv->at)
+                err(c, cv->mark, sub, "[%d].at: point %g already has a curve (curves[%d])", i,
+                    cv->at, j);
+    }
+}
+
+static const field profile_fields[] = {
+    FN("points", profile_points),
+    LIST("curves", bd_profile_def, curves, 0, &profile_curve_list),
+    MAP("head", bd_profile_def, head, REQ, &profile_end_fs),
+    MAP("tail", bd_profile_def, tail, REQ, &profile_end_fs),
+    MAP("takeup", bd_profile_def, takeup, REQ, &profile_takeup_fs),
+    POS("return_drop", bd_profile_def, return_drop, 0),
+    POS("bend_radius", bd_profile_def, bend_radius, 0),
+    MAP("carry_idlers", bd_profile_def, carry, REQ, &profile_idler_fs),
+    MAP("return_idlers", bd_profile_def, ret, 0, &profile_idler_fs),
+};
+FIELDSET(profile_fs, profile_fields, profile_post);
+
+static void profile_fn(ctx *c, const field *f, yaml_node_t *v, bd_mark key, const char *path,
+                       void *base)
+{
+    bd_model_def *m = base;
+    bd_profile_def p;
+    (void)f;
+    memset(&p, 0, sizeof p);
+    p.head = bd_pulley_default();
+    p.tail = bd_pulley_default();
+    p.takeup.t = bd_takeup_default();
+    p.return_drop = 1.0;
+    p.carry = bd_idler_set_default();
+    p.ret = bd_idler_set_default();
+    p.ret.spacing = 3.0;
+    if (m->pulley_count > 0) {
+        err(c, key, path, "give either pulleys or profile, not both");
+        return;
+    }
+    int before = c->errors;
+    parse_map(c, v, key, path, &profile_fs, &p);
+    if (c->errors == before && p.point_count >= 2) {
+        if (bd_profile_layout(&p, m, c->diag))
+            c->errors++;
+    } else {
+        free(p.head.drive.torque.t), free(p.head.drive.torque.v);
+        free(p.tail.drive.torque.t), free(p.tail.drive.torque.v);
+        free(p.takeup.t.force.t), free(p.takeup.t.force.v);
+    }
+    bd_profile_free(&p);
+}
 
 /* ---- material ---- */
 
@@ -960,7 +1161,12 @@ static void model_post(ctx *c, const fieldset *fs, yaml_node_t *const *found, bd
     bd_model_def *m = base;
     const char *slash, *dot;
     size_t len;
-    (void)c, (void)at, (void)path;
+    (void)path;
+    if (!got(fs, found, "pulleys") && !got(fs, found, "profile"))
+        err(c, at, "", "missing required key 'pulleys' (or 'profile')");
+    if (got(fs, found, "profile") && got(fs, found, "idlers"))
+        err(c, mark_of(got(fs, found, "idlers")), "idlers",
+            "with profile the idlers are its carry_idlers and return_idlers");
     if (got(fs, found, "name"))
         return;
     /* default name: the file's base name without extension */
@@ -980,7 +1186,8 @@ static const field model_fields[] = {
     STR("name", bd_model_def, name, 0),
     NONNEG("gravity", bd_model_def, gravity, 0),
     MAP("belt", bd_model_def, belt, REQ, &belt_fs),
-    LIST("pulleys", bd_model_def, pulleys, REQ, &pulley_list),
+    LIST("pulleys", bd_model_def, pulleys, 0, &pulley_list),
+    FN("profile", profile_fn),
     LIST("idlers", bd_model_def, idler_sets, 0, &idler_list),
     MAP("material", bd_model_def, material, 0, &material_fs),
     MAP("design", bd_model_def, design, 0, &design_fs),

@@ -6,6 +6,43 @@
 #include <math.h>
 #include <stdio.h>
 
+/* where the pulleys stand and how each span runs: a layout made from a
+ * `profile` is checked here before it is run (model-format.md) */
+static void describe_layout(FILE *f, const bd_sim *sim)
+{
+    const bd_path *path = &sim->model->path;
+    fprintf(f, "layout (x, y in m; s along the belt from where it leaves '%s'):\n",
+            sim->model->def->pulleys[0].name);
+    for (int i = 0; i < sim->model->pulley_count; i++) {
+        const bd_pulley_def *pd = sim->pulleys[i].m->def;
+        fprintf(f, "  pulley %-12s centre (%.3f, %.3f), radius %.3f, wrap %s\n", pd->name, pd->x,
+                pd->y, pd->radius, pd->wrap > 0 ? "ccw" : "cw");
+    }
+    for (int i = 0; i < sim->model->pulley_count; i++) {
+        const bd_path_segment *sp = bd_path_span(path, i);
+        fprintf(f, "  span %-12s s %.3f to %.3f m, from (%.3f, %.3f) to (%.3f, %.3f), "
+                   "slope %.2f to %.2f deg\n", sim->pulleys[i].m->def->name, sp->s0,
+                sp->s0 + sp->length, sp->p0[0], sp->p0[1], sp->p1[0], sp->p1[1],
+                atan2(sp->dir[1], fabs(sp->dir[0])) / BD_DEG,
+                atan2(sp->dir1[1], fabs(sp->dir1[0])) / BD_DEG);
+        for (int q = 0; q < sp->piece_count; q++) {
+            const bd_path_piece *g = &path->pieces[sp->piece_first + q];
+            if (!g->is_arc)
+                continue;
+            double a[2], b[2], t[2];
+            bd_path_point(path, g->s0, a, t);
+            bd_path_point(path, g->s0 + g->length, b, t);
+            /* turning towards the idlers' side (down on the carry strand,
+             * travelling +x, a clockwise turn) is convex */
+            int ccw = g->sweep > 0.0, fwd = sp->dir[0] >= 0.0;
+            fprintf(f, "    %s vertical curve, radius %.1f m: s %.3f to %.3f m, from (%.3f, "
+                       "%.3f) to (%.3f, %.3f)\n", ccw == fwd ? "concave" : "convex", g->radius,
+                    g->s0, g->s0 + g->length, a[0], a[1], b[0], b[1]);
+        }
+    }
+    fprintf(f, "  belt loop %.3f m along the path\n", path->length);
+}
+
 void bd_sim_describe(const bd_sim *sim, FILE *f)
 {
     const bd_model_def *def = sim->model->def;
@@ -38,6 +75,7 @@ void bd_sim_describe(const bd_sim *sim, FILE *f)
                 sp->length, p->m->inertia, p->m->def->has_drive ? ", drive" : "",
                 p->m->def->has_takeup ? ", takeup" : "");
     }
+    describe_layout(f, sim);
     if (def->idler_set_count > 0)
         fprintf(f, "idlers:\n");
     for (int k = 0; k < def->idler_set_count; k++)

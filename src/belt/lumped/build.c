@@ -275,6 +275,7 @@ int bd_lumped_build(bd_sim *sim, bd_diag *diag)
     bd_path_free(&given);
     sim->own->path = lay.path;
     lay.path.segments = NULL;
+    lay.path.pieces = NULL;
     sim->own->n = lay.n;
     sim->own->l0 = lay.l0;
     bd_lumped_model *LM = bd_xcalloc(1, sizeof *LM);
