@@ -282,6 +282,19 @@ static int write_summary(bd_outputs *o, const bd_sim *sim, double wall, const ch
     bd_json_add_number(ten, "min_N", sim->tension_min);
     bd_json_add_number(ten, "min_time_s", sim->tension_min_t);
     bd_json_add_number(ten, "min_s_m", sim->tension_min_s);
+    /* the belt off its idlers: where, when, how long (sensors/lift_off.c) */
+    const bd_lift_off *lift = &sim->lift;
+    cJSON *lo = cJSON_AddObjectToObject(root, "lift_off");
+    cJSON_AddBoolToObject(lo, "occurred", lift->first_t >= 0.0);
+    if (lift->first_t >= 0.0) {
+        bd_json_add_number(lo, "first_time_s", lift->first_t);
+        bd_json_add_number(lo, "first_s_m", lift->first_s);
+        bd_json_add_number(lo, "from_s_m", lift->s_min);
+        bd_json_add_number(lo, "to_s_m", lift->s_max);
+        bd_json_add_number(lo, "total_s", lift->total);
+        bd_json_add_number(lo, "longest_s", lift->longest);
+        cJSON_AddNumberToObject(lo, "max_stations", lift->max_stations);
+    }
     cJSON *probes = cJSON_AddObjectToObject(root, "probes");
     for (int i = 0; i < sim->model->probe_count; i++) {
         const bd_probe *pr = &sim->probes[i];

@@ -4,6 +4,7 @@
 #include "io/outputs.h"
 #include "sim/engine.h"
 #include "parts/parts.h"
+#include "sensors/sensors.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -36,6 +37,7 @@ void bd_sim_report_events(bd_sim *sim)
         bd_part_report_events(sim, &sim->parts[k]);
     if (sim->model->belt->report_events)
         sim->model->belt->report_events(sim);
+    bd_lift_off_report(sim);
 }
 
 int bd_sim_run(bd_sim *sim, const bd_run_options *opt, char *err, size_t errlen)

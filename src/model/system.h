@@ -158,6 +158,20 @@ typedef struct bd_cost {
     const char *available_is; /* what sets `available` */
 } bd_cost;
 
+/* The belt off its idlers (model-format.md: a belt that lifts off in a
+ * curve is reported: where, when, how long). The formulation notes each
+ * idler station it finds lifted in its step; the sensors fold the step
+ * into the record (sensors/lift_off.c). */
+typedef struct bd_lift_off {
+    int step_count;                /* step: stations lifted in this step */
+    double step_s_min, step_s_max; /* step: m, their path coordinates */
+    double first_t, first_s;       /* stats: the first lift, s and m (first_t < 0: none) */
+    double s_min, s_max;           /* stats: m, the stations ever lifted */
+    double since;                  /* stats: s, start of the present lift, or −1 */
+    double longest, total;         /* stats: s, longest lift of any station run, and in all */
+    int max_stations;              /* stats: most stations lifted at once */
+} bd_lift_off;
+
 typedef struct bd_energy {
     double kinetic, potential, dissipated, input;   /* J */
     /* J, what the last step added to dissipated and input. Its works are
@@ -260,6 +274,7 @@ struct bd_sim {
 
     /* stats */
     bd_energy energy;
+    bd_lift_off lift;
     double tension_max, tension_max_t, tension_max_s;
     double tension_min, tension_min_t, tension_min_s;
     long stabilize_iterations;
@@ -283,6 +298,17 @@ struct bd_sim {
 static inline double bd_pulley_solve_inertia(const bd_sim *sim, const bd_pulley_body *p)
 {
     return p->m->inertia + p->torque_damping * sim->model->dt;
+}
+
+/* an idler station at path coordinate s is lifted in this step */
+static inline void bd_lift_off_note(bd_sim *sim, double s)
+{
+    bd_lift_off *l = &sim->lift;
+    if (l->step_count == 0 || s < l->step_s_min)
+        l->step_s_min = s;
+    if (l->step_count == 0 || s > l->step_s_max)
+        l->step_s_max = s;
+    l->step_count++;
 }
 
 /* node i's mass changed: keep what is derived from it */

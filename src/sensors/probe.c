@@ -10,6 +10,7 @@ void bd_sensors_update(bd_sim *sim)
     for (int i = 0; i < sim->model->pulley_count; i++)
         if (sim->pulleys[i].m->def->has_drive)
             bd_monitor_update(sim, &sim->pulleys[i]);
+    bd_lift_off_update(sim);
 }
 
 void bd_probe_read(bd_sim *sim, bd_probe *pr)

@@ -16,6 +16,10 @@ void bd_monitor_update(bd_sim *sim, bd_pulley_body *p);
 /* the sensors phase of a step: probes follow the belt, drive monitors
  * record (sim->t is the time the positions belong to) */
 void bd_sensors_update(bd_sim *sim);
+/* the lift-off record (lift_off.c): cleared, the step folded in, said */
+void bd_lift_off_reset(bd_sim *sim);
+void bd_lift_off_update(bd_sim *sim);
+void bd_lift_off_report(bd_sim *sim);
 /* a probe's reading now, into its record (output times) */
 void bd_probe_read(bd_sim *sim, bd_probe *pr);
 

@@ -136,6 +136,7 @@ static int restart_clock(bd_sim *sim)
     }
     sim->tension_max = -INFINITY;
     sim->tension_min = INFINITY;
+    bd_lift_off_reset(sim);
     memset(&sim->energy, 0, sizeof sim->energy);
     return bd_sim_start_at_rest(sim);
 }

@@ -297,7 +297,7 @@ static void test_errors(void)
     expect_error(BASE "  - {name: c, x: 0, radius: 0.5, wrap: ccw}\n", 1,
                  "dir/t.yaml:5:5: error: pulleys[2]: missing required key 'y'");
     expect_error("belt: {mass_per_length: 10, axial_stiffness: 1e6}\n", 1,
-                 "dir/t.yaml:1:1: error: missing required key 'pulleys'");
+                 "dir/t.yaml:1:1: error: missing required key 'pulleys' (or 'profile')");
 
     /* out of range */
     expect_error("belt: {mass_per_length: 10, axial_stiffness: 1e6}\n"

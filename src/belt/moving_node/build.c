@@ -39,7 +39,8 @@ static const size_t MODEL_DOUBLES[] = {
     offsetof(bd_mn_model, my),         offsetof(bd_mn_model, x0),
     offsetof(bd_mn_model, y0),         offsetof(bd_mn_model, ds0),
     offsetof(bd_mn_model, dsq),        offsetof(bd_mn_model, k),
-    offsetof(bd_mn_model, c),          offsetof(bd_mn_model, radius)};
+    offsetof(bd_mn_model, c),          offsetof(bd_mn_model, radius),
+    offsetof(bd_mn_model, kw)};
 #define COUNT(a) ((int)(sizeof a / sizeof a[0]))
 
 static void alloc_arrays(bd_sim *sim)
@@ -355,7 +356,6 @@ int bd_mn_build(bd_sim *sim, bd_diag *diag)
     if (mat->present)
         mn->fronts.e_tail = mn->fronts.e_head = sim->feed.element;
     mn->liftoff_first_node = -1;
-    mn->idler_lift_first_node = -1;
     return 0;
 }
 

@@ -53,9 +53,12 @@ static void elements(bd_sim *sim)
             rate += mm->dsq[e] * sim->pulleys[mm->eq[e]].qdot;
         double l = ds, cs = 1.0, sn = 0.0;
         if (!mm->on_arc[e]) {
-            double dw = w[j] - w[e];
-            l = sqrt(ds * ds + dw * dw);
-            cs = ds / l;
+            /* in a vertical curve the chord shortens as the belt moves
+             * towards the centre of curvature: by kw·(w_e + w_j), the
+             * turn over the element times its mean offset */
+            double dw = w[j] - w[e], dl = ds - mm->kw[e] * (w[e] + w[j]);
+            l = sqrt(dl * dl + dw * dw);
+            cs = dl / l;
             sn = dw / l;
         }
         mn->len[e] = l;
@@ -195,10 +198,13 @@ void bd_mn_forces(bd_sim *sim)
         } else {
             double la = mn->len[b], lb = mn->len[i];
             double wss = ((w[j] - w[i]) / lb - (w[i] - w[b]) / la) / (0.5 * (la + lb));
-            G = T[i] * mn->sin_e[i] - T[b] * mn->sin_e[b] + mn->f_norm[i] + fb[i]
+            /* the pull across: the elements' slopes, and in a vertical
+             * curve the turn of the path, T·Δθ (elements(), above) */
+            double ki = mm->kw[i] * mn->cos_e[i], kb = mm->kw[b] * mn->cos_e[b];
+            G = T[i] * (mn->sin_e[i] + ki) - T[b] * (mn->sin_e[b] - kb) + mn->f_norm[i] + fb[i]
               - m * vi * vi * wss - 2.0 * m * vi * (wd[j] - wd[b]) / (la + lb);
             /* the dashpots' share of the pull across is not conservative */
-            Gn = td[i] * mn->sin_e[i] - td[b] * mn->sin_e[b];
+            Gn = td[i] * (mn->sin_e[i] + ki) - td[b] * (mn->sin_e[b] - kb);
             mn->normal[i] = 0.0;
             if (mm->kind[i] == BD_MN_IDLER) {
                 /* rests on its idler when it would otherwise end the step

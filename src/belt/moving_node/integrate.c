@@ -65,11 +65,7 @@ void bd_mn_integrate(bd_sim *sim, double *ke_out, double *w_nc_out)
             w[i] = 0.0;   /* the support put it there: rounding only */
         else if (w[i] > 0.0 && !sim->stabilizing) {
             /* lifted off its idler (recorded, said after the run) */
-            if (mn->idler_lift_steps == 0) {
-                mn->idler_lift_first_t = sim->t;
-                mn->idler_lift_first_node = i;
-            }
-            mn->idler_lift_steps++;
+            bd_lift_off_note(sim, sim->model->s_node0[i]);
         }
     }
     mn->grav_work += grav * dt;

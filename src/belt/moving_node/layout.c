@@ -224,6 +224,19 @@ static void element_geometry(bd_sim *sim)
               && mm->pulley[e] == mm->pulley[j];
         mm->on_arc[e] = (unsigned char)on;
         mm->radius[e] = on ? bd_path_arc(path, mm->pulley[e])->radius : 0.0;
+        /* a vertical curve: the path turns between the nodes; half the
+         * turn at each end, signed towards the normal (up) */
+        mm->kw[e] = 0.0;
+        if (!on && bd_path_span(path, bd_path_segment_at(path, sim->model->s_node0[e]) / 2)
+                           ->piece_count > 0) {
+            double p[2], ta[2], tz[2];
+            bd_path_point(path, sim->model->s_node0[e], p, ta);
+            bd_path_point(path, sim->model->s_node0[j], p, tz);
+            double turn = atan2(ta[0] * tz[1] - ta[1] * tz[0], ta[0] * tz[0] + ta[1] * tz[1]);
+            /* the normal (up) is the travel direction's left or right */
+            double left = -ta[1] * mm->nx[e] + ta[0] * mm->ny[e];
+            mm->kw[e] = 0.5 * turn * (left >= 0.0 ? 1.0 : -1.0);
+        }
     }
 }
 

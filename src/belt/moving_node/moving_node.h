@@ -72,6 +72,9 @@ typedef struct bd_mn_model {
     double *c;                /* N·s/m, Kelvin–Voigt dashpot (seed 001 eq 4.3) */
     unsigned char *on_arc;    /* element on a wrap (no transverse freedom) */
     double *radius;           /* arc element: its pulley's radius */
+    double *kw;               /* span element: half the path's turn over it,
+                                 rad, + towards the nodes' normal (a
+                                 vertical curve; 0 on a straight span) */
     bd_mn_pulley *pulleys;    /* [pulley_count] */
     double tension_bound;     /* N, the tension the transverse step allows */
     double wave_speed;        /* m/s, √(EA/m') of the empty belt */
@@ -118,9 +121,6 @@ typedef struct bd_mn {
     long liftoff_steps;       /* node-steps with an arc node off its pulley */
     double liftoff_first_t;
     int liftoff_first_node;
-    long idler_lift_steps;    /* node-steps with an idler node lifted */
-    double idler_lift_first_t;
-    int idler_lift_first_node;
 } bd_mn;
 
 static inline bd_mn *bd_mn_of(const bd_sim *sim)

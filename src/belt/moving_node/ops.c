@@ -29,10 +29,6 @@ static void report_events(bd_sim *sim)
                     sim->pulleys[mm->pulley[i]].m->def->name, mn->liftoff_first_t,
                     sim->model->s_node0[i], mn->liftoff_steps);
     }
-    if (mn->idler_lift_steps > 0)
-        bd_sim_warn(sim, "the belt lifted off an idler at t = %.3f s, s = %.2f m, first; "
-                    "%ld node-steps in all", mn->idler_lift_first_t,
-                    sim->model->s_node0[mn->idler_lift_first_node], mn->idler_lift_steps);
     if (mn->solve_fallbacks > 0)
         bd_sim_warn(sim, "moving_node: in %ld steps the stick/slip set of the wraps did not "
                     "settle within its passes; the last pass was used", mn->solve_fallbacks);
