@@ -769,18 +769,40 @@ static void unique_name(ctx *c, yaml_node_t *v, const char *path, const char *na
     }
 }
 
+/* what a pulley and a profile's head or tail share: where it was given,
+ * its drive, the inertia of a solid disc unless given */
+static void pulley_body_post(ctx *c, const fieldset *fs, yaml_node_t *const *found, bd_mark at,
+                             const char *path, void *base)
+{
+    bd_pulley_def *p = base;
+    (void)c, (void)path;
+    p->mark = at;
+    p->has_drive = got(fs, found, "drive") != NULL;
+    if (!got(fs, found, "inertia"))
+        p->inertia = 0.5 * p->mass * p->radius * p->radius;
+}
+
 static void pulley_post(ctx *c, const fieldset *fs, yaml_node_t *const *found, bd_mark at,
                         const char *path, void *base)
 {
     bd_pulley_def *p = base;
-    p->mark = at;
-    p->has_drive = got(fs, found, "drive") != NULL;
+    pulley_body_post(c, fs, found, at, path, base);
     p->has_takeup = got(fs, found, "takeup") != NULL;
-    if (!got(fs, found, "inertia"))
-        p->inertia = 0.5 * p->mass * p->radius * p->radius;
     unique_name(c, got(fs, found, "name"), path, p->name, (const char *)c->m->pulleys,
                 sizeof *p, offsetof(bd_pulley_def, name));
 }
+
+/* a pulley's body and drive: a pulley entry's keys, and a profile's head
+ * and tail (model-format.md) */
+#define PULLEY_BODY_FIELDS \
+    POS("radius", bd_pulley_def, radius, REQ), \
+    NONNEG("mass", bd_pulley_def, mass, 0), \
+    NONNEG("inertia", bd_pulley_def, inertia, 0), \
+    MAP("friction", bd_pulley_def, friction, 0, &friction_fs), \
+    NONNEG("bearing_damping", bd_pulley_def, bearing_damping, 0), \
+    POS("velocity_threshold", bd_pulley_def, velocity_threshold, 0), \
+    POS("force_threshold", bd_pulley_def, force_threshold, 0), \
+    MAP("drive", bd_pulley_def, drive, 0, &drive_fs)
 
 static const char *const wrap_names[] = {"cw", "ccw", NULL};
 static const int wrap_vals[] = {-1, 1};
@@ -788,15 +810,8 @@ static const field pulley_fields[] = {
     STR("name", bd_pulley_def, name, REQ | NONEMPTY),
     ANY("x", bd_pulley_def, x, REQ),
     ANY("y", bd_pulley_def, y, REQ),
-    POS("radius", bd_pulley_def, radius, REQ),
     ENUM("wrap", bd_pulley_def, wrap, REQ, wrap_names, wrap_vals),
-    NONNEG("mass", bd_pulley_def, mass, 0),
-    NONNEG("inertia", bd_pulley_def, inertia, 0),
-    MAP("friction", bd_pulley_def, friction, 0, &friction_fs),
-    NONNEG("bearing_damping", bd_pulley_def, bearing_damping, 0),
-    POS("velocity_threshold", bd_pulley_def, velocity_threshold, 0),
-    POS("force_threshold", bd_pulley_def, force_threshold, 0),
-    MAP("drive", bd_pulley_def, drive, 0, &drive_fs),
+    PULLEY_BODY_FIELDS,
     MAP("takeup", bd_pulley_def, takeup, 0, &takeup_fs),
 };
 FIELDSET(pulley_fs, pulley_fields, pulley_post);
@@ -928,28 +943,8 @@ static const listspec profile_curve_list = {&profile_curve_fs, sizeof(bd_profile
                                             offsetof(bd_profile_def, curve_count),
                                             init_profile_curve, 0};
 
-static void profile_end_post(ctx *c, const fieldset *fs, yaml_node_t *const *found, bd_mark at,
-                             const char *path, void *base)
-{
-    bd_pulley_def *p = base;
-    (void)c, (void)path;
-    p->mark = at;
-    p->has_drive = got(fs, found, "drive") != NULL;
-    if (!got(fs, found, "inertia"))
-        p->inertia = 0.5 * p->mass * p->radius * p->radius;
-}
-
-static const field profile_end_fields[] = {
-    POS("radius", bd_pulley_def, radius, REQ),
-    NONNEG("mass", bd_pulley_def, mass, 0),
-    NONNEG("inertia", bd_pulley_def, inertia, 0),
-    MAP("friction", bd_pulley_def, friction, 0, &friction_fs),
-    NONNEG("bearing_damping", bd_pulley_def, bearing_damping, 0),
-    POS("velocity_threshold", bd_pulley_def, velocity_threshold, 0),
-    POS("force_threshold", bd_pulley_def, force_threshold, 0),
-    MAP("drive", bd_pulley_def, drive, 0, &drive_fs),
-};
-FIELDSET(profile_end_fs, profile_end_fields, profile_end_post);
+static const field profile_end_fields[] = {PULLEY_BODY_FIELDS};
+FIELDSET(profile_end_fs, profile_end_fields, pulley_body_post);
 
 static void profile_takeup_post(ctx *c, const fieldset *fs, yaml_node_t *const *found, bd_mark at,
                                 const char *path, void *base)
@@ -1026,9 +1021,7 @@ static void profile_fn(ctx *c, const field *f, yaml_node_t *v, bd_mark key, cons
         if (bd_profile_layout(&p, m, c->diag))
             c->errors++;
     } else {
-        free(p.head.drive.torque.t), free(p.head.drive.torque.v);
-        free(p.tail.drive.torque.t), free(p.tail.drive.torque.v);
-        free(p.takeup.t.force.t), free(p.takeup.t.force.v);
+        bd_profile_free_tables(&p);
     }
     bd_profile_free(&p);
 }

@@ -199,23 +199,39 @@ static int route_pieces(const bd_model_def *m, int i, const bd_route_vertex *v, 
     return bad;
 }
 
+/* the point at distance u along a straight line (p0, unit dir), and the
+ * tangent */
+static void line_point(const double p0[2], const double dir[2], double u, double p[2],
+                       double tangent[2])
+{
+    p[0] = p0[0] + u * dir[0];
+    p[1] = p0[1] + u * dir[1];
+    tangent[0] = dir[0];
+    tangent[1] = dir[1];
+}
+
+/* the point at distance u along a circular arc (centre, radius, polar
+ * angle of its start, signed sweep), and the travel direction there: the
+ * radial unit vector turned by 90° in the arc's sense */
+static void arc_point(const double centre[2], double radius, double angle0, double sweep, double u,
+                      double p[2], double tangent[2])
+{
+    double sense = sweep >= 0.0 ? 1.0 : -1.0;
+    double ang = angle0 + sense * u / radius;
+    double c = cos(ang), sn = sin(ang);
+    p[0] = centre[0] + radius * c;
+    p[1] = centre[1] + radius * sn;
+    tangent[0] = -sense * sn;
+    tangent[1] = sense * c;
+}
+
 /* the point of a piece at distance u from its start, and the tangent */
 static void piece_point(const bd_path_piece *g, double u, double p[2], double tangent[2])
 {
-    if (!g->is_arc) {
-        p[0] = g->p0[0] + u * g->dir[0];
-        p[1] = g->p0[1] + u * g->dir[1];
-        tangent[0] = g->dir[0];
-        tangent[1] = g->dir[1];
-        return;
-    }
-    double sense = g->sweep >= 0.0 ? 1.0 : -1.0;
-    double ang = g->angle0 + sense * u / g->radius;
-    double c = cos(ang), sn = sin(ang);
-    p[0] = g->centre[0] + g->radius * c;
-    p[1] = g->centre[1] + g->radius * sn;
-    tangent[0] = -sense * sn;
-    tangent[1] = sense * c;
+    if (g->is_arc)
+        arc_point(g->centre, g->radius, g->angle0, g->sweep, u, p, tangent);
+    else
+        line_point(g->p0, g->dir, u, p, tangent);
 }
 
 /* distance along a piece of the point nearest (x, y), not clamped to it */
@@ -455,21 +471,10 @@ void bd_path_point(const bd_path *path, double s, double p[2], double tangent[2]
         piece_point(q, s - q->s0, p, tangent);
         return;
     }
-    if (g->kind == BD_SEGMENT_SPAN) {
-        p[0] = g->p0[0] + u * g->dir[0];
-        p[1] = g->p0[1] + u * g->dir[1];
-        tangent[0] = g->dir[0];
-        tangent[1] = g->dir[1];
-        return;
-    }
-    double sense = g->sweep >= 0.0 ? 1.0 : -1.0;
-    double ang = g->angle0 + sense * u / g->radius;
-    double c = cos(ang), sn = sin(ang);
-    p[0] = g->centre[0] + g->radius * c;
-    p[1] = g->centre[1] + g->radius * sn;
-    /* travel direction: radial unit vector turned by 90° in the wrap sense */
-    tangent[0] = -sense * sn;
-    tangent[1] = sense * c;
+    if (g->kind == BD_SEGMENT_SPAN)
+        line_point(g->p0, g->dir, u, p, tangent);
+    else
+        arc_point(g->centre, g->radius, g->angle0, g->sweep, u, p, tangent);
 }
 
 double bd_path_span_project(const bd_path *path, const bd_path_segment *g, double x, double y)

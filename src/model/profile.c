@@ -37,8 +37,7 @@ static bd_pulley_def loop_pulley(const char *name, double x, double y, double r,
     return p;
 }
 
-/* the tables the parse made, when no pulley took them over */
-static void drop_tables(const bd_profile_def *p)
+void bd_profile_free_tables(const bd_profile_def *p)
 {
     free(p->head.drive.torque.t), free(p->head.drive.torque.v);
     free(p->tail.drive.torque.t), free(p->tail.drive.torque.v);
@@ -81,7 +80,7 @@ int bd_profile_layout(const bd_profile_def *p, bd_model_def *m, bd_diag *diag)
     int np = loop ? 5 : 2;
     bd_pulley_def *pl = calloc((size_t)np, sizeof *pl);
     if (!pl) {
-        drop_tables(p);
+        bd_profile_free_tables(p);
         return 1;
     }
     pl[0] = p->tail;
@@ -145,7 +144,7 @@ int bd_profile_layout(const bd_profile_def *p, bd_model_def *m, bd_diag *diag)
         }
     if (bad) {
         free(pl);
-        drop_tables(p);
+        bd_profile_free_tables(p);
         return 1;
     }
     m->pulleys = pl;

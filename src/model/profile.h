@@ -40,6 +40,9 @@ typedef struct bd_profile_def {
  * at the profile's marks; 0 = ok. The tables parsed into head, tail and
  * takeup pass to m's pulleys (freed here when the layout fails) */
 int bd_profile_layout(const bd_profile_def *p, bd_model_def *m, bd_diag *diag);
+/* its points and curves */
 void bd_profile_free(bd_profile_def *p);
+/* the tables parsed into head, tail and takeup, when no layout took them */
+void bd_profile_free_tables(const bd_profile_def *p);
 
 #endif

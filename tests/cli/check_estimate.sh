@@ -14,11 +14,7 @@
 # 4. 3 mm elements (37 000 nodes, 12 s: about 17 min): a warning of a long
 #    run on stderr, exit 0.
 set -u
-: "${BELTDYN:?BELTDYN must name the built beltdyn}"
-EXAMPLES="${EXAMPLES:-$(cd "$(dirname "$0")/../../examples" && pwd)}"
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-. "$(dirname "$0")/lib/tally.sh"
+. "$(dirname "$0")/lib/setup.sh"
 model() { # element length
     sed "s/element_length: 0.07/element_length: $1/" "$EXAMPLES/head_drive.yaml" >"$tmp/m_$1.yaml"
     grep -q "element_length: $1\$" "$tmp/m_$1.yaml" || { echo "FAIL could not set element_length $1"; exit 1; }

@@ -3,11 +3,7 @@
 # outputs: history.csv, tension.csv and envelope.csv byte for byte, and
 # summary.json identical except its wall_time_s line.
 set -u
-: "${BELTDYN:?BELTDYN must name the built beltdyn}"
-EXAMPLES="${EXAMPLES:-$(cd "$(dirname "$0")/../../examples" && pwd)}"
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-. "$(dirname "$0")/lib/tally.sh"
+. "$(dirname "$0")/lib/setup.sh"
 
 model="$EXAMPLES/flat_belt_drive.yaml"
 for k in 1 2; do

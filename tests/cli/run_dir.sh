@@ -8,11 +8,7 @@
 # against the starting one, slip, torque, takeup, warnings), and not when
 # stdout is a file (nor with --quiet: cli_run_outputs).
 set -u
-: "${BELTDYN:?BELTDYN must name the built beltdyn}"
-EXAMPLES="${EXAMPLES:-$(cd "$(dirname "$0")/../../examples" && pwd)}"
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-. "$(dirname "$0")/lib/tally.sh"
+. "$(dirname "$0")/lib/setup.sh"
 model="$EXAMPLES/flat_belt_drive.yaml"
 
 out=$("$BELTDYN" --version)

@@ -8,11 +8,7 @@
 # = rated / peak); with {running: 6, starting: 4} neither warns. A factor
 # that is not a positive number is a model error with its line and column.
 set -u
-: "${BELTDYN:?BELTDYN must name the built beltdyn}"
-EXAMPLES="${EXAMPLES:-$(cd "$(dirname "$0")/../../examples" && pwd)}"
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-. "$(dirname "$0")/lib/tally.sh"
+. "$(dirname "$0")/lib/setup.sh"
 
 sed -e 's/^\(  duration:\).*/\1 5/' "$EXAMPLES/head_drive.yaml" >"$tmp/default.yaml"
 grep -q '^design:' "$tmp/default.yaml" || { echo "FAIL head_drive has no design section"; exit 1; }
