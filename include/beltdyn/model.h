@@ -51,6 +51,8 @@ typedef struct bd_table {
 } bd_table;
 
 double bd_table_eval(const bd_table *tab, double t);
+/* its points freed, the table left empty */
+void bd_table_free(bd_table *tab);
 
 typedef struct bd_friction {
     double mu_static;   /* static (stick) coefficient, - */
@@ -146,6 +148,7 @@ typedef struct bd_takeup_def {
 typedef struct bd_route_vertex {
     double x, y;      /* m, where the two straight legs meet */
     double radius;    /* m, vertical-curve radius; 0 = sharp */
+    bd_mark mark;     /* what made it, for messages (0: its span's pulley) */
 } bd_route_vertex;
 
 typedef struct bd_pulley_def {
@@ -290,7 +293,6 @@ typedef struct bd_model_def {
     bd_design_def design;
     bd_simulation_def simulation;
     int from_profile;        /* pulleys and idlers laid out from `profile` */
-    bd_mark profile_mark;
 } bd_model_def;
 
 /* defaults, as model-format.md lists them */

@@ -94,6 +94,8 @@ typedef struct bd_belt_ops {
 
     /* events the formulation recorded in the step, said after the run */
     void (*report_events)(bd_sim *sim);
+    /* it notes idler stations the belt lifts off (bd_lift_off_note) */
+    int records_lift_off;
 } bd_belt_ops;
 
 /* the formulation of f, or NULL for a value not in bd_formulation */

@@ -285,7 +285,10 @@ static int write_summary(bd_outputs *o, const bd_sim *sim, double wall, const ch
     /* the belt off its idlers: where, when, how long (sensors/lift_off.c) */
     const bd_lift_off *lift = &sim->lift;
     cJSON *lo = cJSON_AddObjectToObject(root, "lift_off");
-    cJSON_AddBoolToObject(lo, "occurred", lift->first_t >= 0.0);
+    /* the axial belt has no idler contact to lose: not checked */
+    cJSON_AddBoolToObject(lo, "checked", sim->model->belt->records_lift_off);
+    if (sim->model->belt->records_lift_off)
+        cJSON_AddBoolToObject(lo, "occurred", lift->first_t >= 0.0);
     if (lift->first_t >= 0.0) {
         bd_json_add_number(lo, "first_time_s", lift->first_t);
         bd_json_add_number(lo, "first_s_m", lift->first_s);

@@ -131,6 +131,7 @@ typedef struct field {
     .lo = l, .hi = INFINITY}
 #define SPAN(k, T, m, fl) {.key = k, .kind = K_SPAN, .flags = fl, .off = offsetof(T, m)}
 #define FN(k, f) {.key = k, .kind = K_FN, .off = 0, .fn = f}
+#define FN_REQ(k, f) {.key = k, .kind = K_FN, .flags = REQ, .off = 0, .fn = f}
 #define FIELDSET(name, arr, post) \
     static const fieldset name = {arr, (int)(sizeof arr / sizeof arr[0]), post}
 
@@ -406,7 +407,8 @@ static void parse_list(ctx *c, const listspec *ls, yaml_node_t *v, const char *p
         return;
     }
     if (*(void **)((char *)base + off)) {
-        err(c, mark_of(v), path, "given twice (a profile lays these out)");
+        err(c, mark_of(v), path, "given twice (a profile lays these out: its carry_idlers and "
+            "return_idlers)");
         return;
     }
     n = seq_len(v);
@@ -905,7 +907,8 @@ static void profile_points(ctx *c, const field *f, yaml_node_t *v, bd_mark key, 
     }
     int n = seq_len(v);
     p->points = calloc((size_t)n, sizeof *p->points);
-    if (!p->points) {
+    p->point_marks = calloc((size_t)n, sizeof *p->point_marks);
+    if (!p->points || !p->point_marks) {
         err(c, mark_of(v), path, "out of memory");
         return;
     }
@@ -913,6 +916,7 @@ static void profile_points(ctx *c, const field *f, yaml_node_t *v, bd_mark key, 
     for (int i = 0; i < n; i++) {
         yaml_node_t *item = node_at(c, v->data.sequence.items.start[i]);
         join_index(sub, path, i);
+        p->point_marks[i] = mark_of(item);
         if (get_numbers(c, item, sub, 2, "a [chainage, elevation] point", p->points[i]))
             continue;
         if (i > 0 && !(p->points[i][0] > p->points[i - 1][0]))
@@ -946,13 +950,6 @@ static const listspec profile_curve_list = {&profile_curve_fs, sizeof(bd_profile
 static const field profile_end_fields[] = {PULLEY_BODY_FIELDS};
 FIELDSET(profile_end_fs, profile_end_fields, pulley_body_post);
 
-static void profile_takeup_post(ctx *c, const fieldset *fs, yaml_node_t *const *found, bd_mark at,
-                                const char *path, void *base)
-{
-    ((bd_profile_takeup *)base)->mark = at;
-    takeup_post(c, fs, found, at, path, base);
-}
-
 static const char *const end_names[] = {"tail", "head", NULL};
 static const field profile_takeup_fields[] = {
     ENUM("at", bd_profile_takeup, at_head, REQ, end_names, NULL),
@@ -962,14 +959,14 @@ static const field profile_takeup_fields[] = {
     FN("travel", takeup_travel),
     POS("depth", bd_profile_takeup, depth, 0),
 };
-FIELDSET(profile_takeup_fs, profile_takeup_fields, profile_takeup_post);
+FIELDSET(profile_takeup_fs, profile_takeup_fields, takeup_post);
 
 static void profile_post(ctx *c, const fieldset *fs, yaml_node_t *const *found, bd_mark at,
                          const char *path, void *base)
 {
     bd_profile_def *p = base;
-    (void)fs, (void)found;
     p->mark = at;
+    (void)fs, (void)found;
     for (int i = 0; i < p->curve_count; i++) {
         const bd_profile_curve *cv = &p->curves[i];
         char sub[PATH_LEN];
@@ -985,7 +982,7 @@ static void profile_post(ctx *c, const fieldset *fs, yaml_node_t *const *found, 
 }
 
 static const field profile_fields[] = {
-    FN("points", profile_points),
+    FN_REQ("points", profile_points),
     LIST("curves", bd_profile_def, curves, 0, &profile_curve_list),
     MAP("head", bd_profile_def, head, REQ, &profile_end_fs),
     MAP("tail", bd_profile_def, tail, REQ, &profile_end_fs),
@@ -1157,9 +1154,6 @@ static void model_post(ctx *c, const fieldset *fs, yaml_node_t *const *found, bd
     (void)path;
     if (!got(fs, found, "pulleys") && !got(fs, found, "profile"))
         err(c, at, "", "missing required key 'pulleys' (or 'profile')");
-    if (got(fs, found, "profile") && got(fs, found, "idlers"))
-        err(c, mark_of(got(fs, found, "idlers")), "idlers",
-            "with profile the idlers are its carry_idlers and return_idlers");
     if (got(fs, found, "name"))
         return;
     /* default name: the file's base name without extension */

@@ -101,7 +101,7 @@ double bd_table_eval(const bd_table *tab, double t)
     return tab->v[lo] + w * (tab->v[hi] - tab->v[lo]);
 }
 
-static void table_free(bd_table *tab)
+void bd_table_free(bd_table *tab)
 {
     free(tab->t);
     free(tab->v);
@@ -235,8 +235,8 @@ void bd_model_def_free(bd_model_def *m)
     if (!m)
         return;
     for (int i = 0; m->pulleys && i < m->pulley_count; i++) {
-        table_free(&m->pulleys[i].drive.torque);
-        table_free(&m->pulleys[i].takeup.force);
+        bd_table_free(&m->pulleys[i].drive.torque);
+        bd_table_free(&m->pulleys[i].takeup.force);
         free(m->pulleys[i].route);
     }
     free(m->pulleys);

@@ -56,66 +56,91 @@ static int point_tangent(const double c[2], double r, int w, const double v[2], 
     return 0;
 }
 
-/* the corners of span i: its pulley's route, or those of the idler
- * curves on it (a curve between fractions a < b of the straight span is
- * the fillet at the corner v where the arc's tangents at the span's
- * points A and B meet; A and B are sharp corners), written to *out (NULL
- * when none) */
+static int by_from(const void *x, const void *y)
+{
+    double a = (*(const bd_idler_set_def *const *)x)->curve_from;
+    double b = (*(const bd_idler_set_def *const *)y)->curve_from;
+    return (a > b) - (a < b);
+}
+
+/* the corners of span i: its pulley's route (*route), or those of the
+ * idler curves on it, made into *owned: a curve between fractions a < b
+ * of the straight span is the fillet at the corner v where the arc's
+ * tangents at the span's points A and B meet (plane geometry: the chord
+ * c = |AB| subtends 2·asin(c/2R), v lies c/2·tan of half that off the
+ * chord); A and B are sharp corners, one corner where two curves touch.
+ * Returns their number, 0 for a straight span, −1 on an error (in diag) */
 static int span_corners(const bd_model_def *m, int i, const double p0[2], const double d[2],
-                        double len, bd_route_vertex **out)
+                        double len, const bd_route_vertex **route, bd_route_vertex **owned,
+                        bd_diag *diag)
 {
     const bd_pulley_def *a = &m->pulleys[i];
-    *out = NULL;
-    if (a->route_count > 0) {
-        *out = malloc((size_t)a->route_count * sizeof **out);
-        if (*out)
-            memcpy(*out, a->route, (size_t)a->route_count * sizeof **out);
+    *route = a->route;
+    *owned = NULL;
+    if (a->route_count > 0)
         return a->route_count;
-    }
     int curves = 0;
     for (int k = 0; k < m->idler_set_count; k++)
         curves += m->idler_sets[k].span == i && m->idler_sets[k].has_curve;
     if (curves == 0)
         return 0;
+    const bd_idler_set_def **sets = malloc((size_t)curves * sizeof *sets);
     bd_route_vertex *v = malloc((size_t)(3 * curves) * sizeof *v);
-    if (!v)
-        return 0;
+    if (!sets || !v) {
+        free(sets), free(v);
+        bd_diag_error(diag, m->source, a->mark, "out of memory laying out a vertical curve");
+        return -1;
+    }
+    curves = 0;
+    for (int k = 0; k < m->idler_set_count; k++)
+        if (m->idler_sets[k].span == i && m->idler_sets[k].has_curve)
+            sets[curves++] = &m->idler_sets[k];
+    qsort(sets, (size_t)curves, sizeof *sets, by_from);
     /* the lower side of the span: where the idlers stand */
-    double down[2] = {d[1], -d[0]};
-    if (down[1] > 0.0) {
-        down[0] = -down[0];
-        down[1] = -down[1];
-    }
-    int n = 0;
-    /* in order of `from` (the loader refuses overlapping curves) */
-    for (int done = 0; done < curves; done++) {
-        const bd_idler_set_def *best = NULL;
-        double last = n > 0 ? (v[n - 1].x - p0[0]) * d[0] + (v[n - 1].y - p0[1]) * d[1] : -1.0;
-        for (int k = 0; k < m->idler_set_count; k++) {
-            const bd_idler_set_def *st = &m->idler_sets[k];
-            if (st->span != i || !st->has_curve || st->curve_from * len <= last)
-                continue;
-            if (!best || st->curve_from < best->curve_from)
-                best = st;
+    double down[2];
+    bd_path_up_normal(d, down);
+    down[0] = -down[0];
+    down[1] = -down[1];
+    int n = 0, bad = 0;
+    for (int q = 0; q < curves; q++) {
+        const bd_idler_set_def *st = sets[q];
+        double ua = st->curve_from * len, ub = st->curve_to * len, c = ub - ua;
+        double R = st->curve_radius;
+        if (c > 2.0 * R) {
+            bd_diag_error(diag, m->source, st->curve_mark,
+                          "curve: a radius of %.4g m cannot bend the %.4g m between from and to "
+                          "(it needs at least %.4g m)", R, c, 0.5 * c);
+            bad = 1;
+            continue;
         }
-        if (!best)
-            break;
-        double ua = best->curve_from * len, ub = best->curve_to * len, c = ub - ua;
-        double R = best->curve_radius, half = asin(fmin(1.0, c / (2.0 * R)));
-        double sag = 0.5 * c * tan(half) * (best->curve_convex ? -1.0 : 1.0);
+        double half = asin(c / (2.0 * R));
+        double sag = 0.5 * c * tan(half) * (st->curve_convex ? -1.0 : 1.0);
         double um = 0.5 * (ua + ub);
-        v[n++] = (bd_route_vertex){p0[0] + ua * d[0], p0[1] + ua * d[1], 0.0};
+        if (q == 0 || ua > sets[q - 1]->curve_to * len)
+            v[n++] = (bd_route_vertex){p0[0] + ua * d[0], p0[1] + ua * d[1], 0.0, st->curve_mark};
         v[n++] = (bd_route_vertex){p0[0] + um * d[0] + sag * down[0],
-                                   p0[1] + um * d[1] + sag * down[1], R};
-        v[n++] = (bd_route_vertex){p0[0] + ub * d[0], p0[1] + ub * d[1], 0.0};
+                                   p0[1] + um * d[1] + sag * down[1], R, st->curve_mark};
+        v[n++] = (bd_route_vertex){p0[0] + ub * d[0], p0[1] + ub * d[1], 0.0, st->curve_mark};
     }
-    *out = v;
+    free(sets);
+    if (bad) {
+        free(v);
+        return -1;
+    }
+    *route = *owned = v;
     return n;
 }
 
+/* a corner's mark for messages: its own, else its span's pulley's */
+static bd_mark corner_mark(const bd_route_vertex *v, const bd_pulley_def *a)
+{
+    return v->mark.line > 0 ? v->mark : a->mark;
+}
+
 /* pieces of a routed span from pulley a to pulley b through corners v[k]:
- * the legs, rounded at each corner by its radius; appended to pieces
- * (capacity 2k+1 free). Sets the span's ends and end directions. 0 = ok */
+ * the legs, rounded at each corner by its radius (tangent length
+ * R·tan(|turn|/2), plane geometry); appended to pieces (capacity 2k+1
+ * free). Sets the span's ends and end directions. 0 = ok */
 static int route_pieces(const bd_model_def *m, int i, const bd_route_vertex *v, int k,
                         bd_path_piece *out, int *count, double ps[2], double ds[2],
                         double pe[2], double de[2], bd_diag *diag)
@@ -123,11 +148,15 @@ static int route_pieces(const bd_model_def *m, int i, const bd_route_vertex *v, 
     const bd_pulley_def *a = &m->pulleys[i];
     const bd_pulley_def *b = &m->pulleys[(i + 1) % m->pulley_count];
     double ca[2] = {a->x, a->y}, cb[2] = {b->x, b->y};
+    /* legs 0..k (direction, length), corners 1..k (turn, tangent length;
+     * t[0] = t[k+1] = 0 at the pulleys) */
     double (*D)[2] = malloc((size_t)(k + 1) * sizeof *D);
     double *leg = malloc((size_t)(k + 1) * sizeof *leg), *t = malloc((size_t)(k + 2) * sizeof *t);
+    double *turn = malloc((size_t)(k + 2) * sizeof *turn);
     int bad = 0;
-    if (!D || !leg || !t) {
-        free(D), free(leg), free(t);
+    if (!D || !leg || !t || !turn) {
+        free(D), free(leg), free(t), free(turn);
+        bd_diag_error(diag, m->source, a->mark, "out of memory laying out a vertical curve");
         return 1;
     }
     double v0[2] = {v[0].x, v[0].y}, vk[2] = {v[k - 1].x, v[k - 1].y};
@@ -136,31 +165,40 @@ static int route_pieces(const bd_model_def *m, int i, const bd_route_vertex *v, 
         bd_diag_error(diag, m->source, a->mark,
                       "pulleys[%d] '%s': the route of the span to '%s' has a corner inside a "
                       "pulley", i, a->name, b->name);
-        free(D), free(leg), free(t);
-        return 1;
+        bad = 1;
     }
-    for (int j = 1; j < k; j++) {
+    for (int j = 1; !bad && j < k; j++) {
         double dx = v[j].x - v[j - 1].x, dy = v[j].y - v[j - 1].y, l = hypot(dx, dy);
         if (l <= 0.0) {
-            bd_diag_error(diag, m->source, a->mark,
+            bd_diag_error(diag, m->source, corner_mark(&v[j], a),
                           "pulleys[%d] '%s': two corners of the span's route coincide", i, a->name);
-            free(D), free(leg), free(t);
-            return 1;
+            bad = 1;
+            break;
         }
         D[j][0] = dx / l;
         D[j][1] = dy / l;
         leg[j] = l;
     }
-    /* fillet j (at corner j-1) cuts t[j] off both legs it joins */
+    if (bad) {
+        free(D), free(leg), free(t), free(turn);
+        return 1;
+    }
     t[0] = t[k + 1] = 0.0;
     for (int j = 1; j <= k; j++) {
         const double *din = D[j - 1], *dout = D[j];
-        double turn = atan2(din[0] * dout[1] - din[1] * dout[0], din[0] * dout[0] + din[1] * dout[1]);
-        t[j] = v[j - 1].radius * tan(0.5 * fabs(turn));
+        turn[j] = atan2(din[0] * dout[1] - din[1] * dout[0], din[0] * dout[0] + din[1] * dout[1]);
+        t[j] = v[j - 1].radius * tan(0.5 * fabs(turn[j]));
     }
+    /* each leg holds the two tangent lengths at its ends; a curve too big
+     * is said once, at its corner */
+    int said = 0;   /* the corner (1..k) last said */
     for (int j = 0; j <= k; j++) {
         if (t[j] + t[j + 1] > leg[j] * (1.0 + 1e-9) + 1e-9) {
-            bd_diag_error(diag, m->source, a->mark,
+            int c = t[j + 1] >= t[j] ? j + 1 : j;   /* the corner that takes more */
+            if (c == said)
+                continue;
+            said = c;
+            bd_diag_error(diag, m->source, corner_mark(&v[c - 1], a),
                           "pulleys[%d] '%s': a vertical curve of the span to '%s' does not fit "
                           "between its neighbours (it needs %.4g m of a %.4g m straight); "
                           "use a smaller radius", i, a->name, b->name, t[j] + t[j + 1], leg[j]);
@@ -177,25 +215,23 @@ static int route_pieces(const bd_model_def *m, int i, const bd_route_vertex *v, 
         at[1] += l * D[j][1];
         if (j == k || t[j + 1] <= 0.0)
             continue;
-        const double *din = D[j], *dout = D[j + 1];
-        double cr = din[0] * dout[1] - din[1] * dout[0];
-        double turn = atan2(cr, din[0] * dout[0] + din[1] * dout[1]);
-        double sigma = turn >= 0.0 ? 1.0 : -1.0, R = v[j].radius;
+        const double *din = D[j];
+        double tn = turn[j + 1], sigma = tn >= 0.0 ? 1.0 : -1.0, R = v[j].radius;
         bd_path_piece *arc = &out[n++];
-        *arc = (bd_path_piece){.is_arc = 1, .radius = R, .sweep = turn, .length = R * fabs(turn),
+        *arc = (bd_path_piece){.is_arc = 1, .radius = R, .sweep = tn, .length = R * fabs(tn),
                                .p0 = {at[0], at[1]}};
         arc->centre[0] = at[0] - sigma * R * din[1];
         arc->centre[1] = at[1] + sigma * R * din[0];
         arc->angle0 = atan2(at[1] - arc->centre[1], at[0] - arc->centre[0]);
-        at[0] = arc->centre[0] + R * cos(arc->angle0 + turn);
-        at[1] = arc->centre[1] + R * sin(arc->angle0 + turn);
+        at[0] = arc->centre[0] + R * cos(arc->angle0 + tn);
+        at[1] = arc->centre[1] + R * sin(arc->angle0 + tn);
     }
     ds[0] = D[0][0];
     ds[1] = D[0][1];
     de[0] = D[k][0];
     de[1] = D[k][1];
     *count = n;
-    free(D), free(leg), free(t);
+    free(D), free(leg), free(t), free(turn);
     return bad;
 }
 
@@ -302,14 +338,17 @@ int bd_path_build(const bd_model_def *m, bd_path *path, bd_diag *diag)
         ps[i][1] = a->y + a->wrap * a->radius * na[1];
         pe[i][0] = ps[i][0] + span_len[i] * dir[i][0];
         pe[i][1] = ps[i][1] + span_len[i] * dir[i][1];
-        bd_route_vertex *v;
-        int nv = span_corners(m, i, ps[i], dir[i], span_len[i], &v);
-        if (nv == 0)
+        const bd_route_vertex *v;
+        bd_route_vertex *owned;
+        int nv = span_corners(m, i, ps[i], dir[i], span_len[i], &v, &owned, diag);
+        if (nv <= 0) {
+            bad |= nv < 0;
             continue;
+        }
         bd_path_piece *grown =
             realloc(path->pieces, (size_t)(path->piece_count + 2 * nv + 1) * sizeof *grown);
         if (!grown) {
-            free(v);
+            free(owned);
             bad = 1;
             continue;
         }
@@ -317,7 +356,7 @@ int bd_path_build(const bd_model_def *m, bd_path *path, bd_diag *diag)
         int made = 0;
         bad |= route_pieces(m, i, v, nv, path->pieces + path->piece_count, &made, ps[i], dir[i],
                             pe[i], dir1[i], diag);
-        free(v);
+        free(owned);
         pfirst[i] = path->piece_count;
         pcount[i] = made;
         path->piece_count += made;
@@ -498,20 +537,6 @@ double bd_path_span_project(const bd_path *path, const bd_path_segment *g, doubl
         }
     }
     return u_best;
-}
-
-double bd_path_curvature(const bd_path *path, double s)
-{
-    s = fmod(s, path->length);
-    if (s < 0.0)
-        s += path->length;
-    const bd_path_segment *g = &path->segments[bd_path_segment_at(path, s)];
-    if (g->kind != BD_SEGMENT_SPAN || g->piece_count == 0)
-        return 0.0;
-    const bd_path_piece *q = span_piece_at(path, g, s);
-    if (!q->is_arc)
-        return 0.0;
-    return (q->sweep >= 0.0 ? 1.0 : -1.0) / q->radius;
 }
 
 const bd_path_segment *bd_path_span(const bd_path *path, int pulley)

@@ -67,9 +67,18 @@ int bd_path_segment_at(const bd_path *path, double s);
 /* along span g: the distance from its start of the point nearest (x, y);
  * before its start negative, beyond its end more than its length */
 double bd_path_span_project(const bd_path *path, const bd_path_segment *g, double x, double y);
-/* signed curvature of the path at s on a span (1/m, + turning ccw); 0 on
- * straight pieces and pulley arcs */
-double bd_path_curvature(const bd_path *path, double s);
+/* the unit normal of travel direction t on the side away from the idlers
+ * (they stand below the belt): up, +x for a vertical t */
+static inline void bd_path_up_normal(const double t[2], double n[2])
+{
+    n[0] = -t[1];
+    n[1] = t[0];
+    if (n[1] < 0.0 || (n[1] == 0.0 && n[0] < 0.0)) {
+        n[0] = -n[0];
+        n[1] = -n[1];
+    }
+}
+
 /* the span leaving pulley i, and the arc of pulley i */
 const bd_path_segment *bd_path_span(const bd_path *path, int pulley);
 const bd_path_segment *bd_path_arc(const bd_path *path, int pulley);

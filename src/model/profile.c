@@ -37,11 +37,11 @@ static bd_pulley_def loop_pulley(const char *name, double x, double y, double r,
     return p;
 }
 
-void bd_profile_free_tables(const bd_profile_def *p)
+void bd_profile_free_tables(bd_profile_def *p)
 {
-    free(p->head.drive.torque.t), free(p->head.drive.torque.v);
-    free(p->tail.drive.torque.t), free(p->tail.drive.torque.v);
-    free(p->takeup.t.force.t), free(p->takeup.t.force.v);
+    bd_table_free(&p->head.drive.torque);
+    bd_table_free(&p->tail.drive.torque);
+    bd_table_free(&p->takeup.t.force);
 }
 
 static int route(const bd_profile_def *p, double drop, int reverse, bd_route_vertex **out)
@@ -57,15 +57,18 @@ static int route(const bd_profile_def *p, double drop, int reverse, bd_route_ver
         int i = reverse ? k - j : j + 1;
         v[j].x = p->points[i][0];
         v[j].y = p->points[i][1] - drop;
+        v[j].mark = p->point_marks[i];
         for (int c = 0; c < p->curve_count; c++)
-            if ((int)p->curves[c].at == i)
+            if ((int)p->curves[c].at == i) {
                 v[j].radius = p->curves[c].radius;
+                v[j].mark = p->curves[c].mark;
+            }
     }
     *out = v;
     return k;
 }
 
-int bd_profile_layout(const bd_profile_def *p, bd_model_def *m, bd_diag *diag)
+int bd_profile_layout(bd_profile_def *p, bd_model_def *m, bd_diag *diag)
 {
     int n = p->point_count, loop = p->takeup.at_head;
     const double (*P)[2] = (const double (*)[2])p->points;
@@ -95,7 +98,6 @@ int bd_profile_layout(const bd_profile_def *p, bd_model_def *m, bd_diag *diag)
     pl[1].y = P[n - 1][1] - p->head.radius * d1[0];
 
     bd_takeup_def tu = p->takeup.t;
-    tu.mark = p->takeup.mark;
     int bad = 0;
     if (loop) {
         double rb = p->bend_radius > 0.0 ? p->bend_radius : p->tail.radius, Rh = p->head.radius;
@@ -103,7 +105,7 @@ int bd_profile_layout(const bd_profile_def *p, bd_model_def *m, bd_diag *diag)
         double up = isfinite(tu.travel_min) ? -tu.travel_min : 0.0;
         double depth = p->takeup.depth > 0.0 ? p->takeup.depth : fmax(4.0, 2.0 * rb + 1.0 + up);
         if (depth - 2.0 * rb < up) {
-            bd_diag_error(diag, m->source, p->takeup.mark,
+            bd_diag_error(diag, m->source, p->takeup.t.mark,
                           "profile.takeup: depth %.4g m leaves %.4g m between the takeup "
                           "pulley and the bends, less than its upward travel %.4g m",
                           depth, depth - 2.0 * rb, up);
@@ -112,9 +114,9 @@ int bd_profile_layout(const bd_profile_def *p, bd_model_def *m, bd_diag *diag)
         double yb = pl[1].y - Rh - rb;
         double xb1 = pl[1].x - (Rh + rb + LOOP_GAP);
         double xt = xb1 - 2.0 * rb, xb2 = xt - 2.0 * rb;
-        pl[2] = loop_pulley("bend1", xb1, yb, rb, 1, p->takeup.mark);
-        pl[3] = loop_pulley("takeup", xt, yb - depth, rb, -1, p->takeup.mark);
-        pl[4] = loop_pulley("bend2", xb2, yb, rb, 1, p->takeup.mark);
+        pl[2] = loop_pulley("bend1", xb1, yb, rb, 1, p->takeup.t.mark);
+        pl[3] = loop_pulley("takeup", xt, yb - depth, rb, -1, p->takeup.t.mark);
+        pl[4] = loop_pulley("bend2", xb2, yb, rb, 1, p->takeup.t.mark);
         tu.axis[0] = 0.0;
         tu.axis[1] = -1.0;
         pl[3].has_takeup = 1;
@@ -163,13 +165,13 @@ int bd_profile_layout(const bd_profile_def *p, bd_model_def *m, bd_diag *diag)
     m->idler_sets[1] = p->ret;
     m->idler_sets[1].span = np - 1;
     m->from_profile = 1;
-    m->profile_mark = p->mark;
     return 0;
 }
 
 void bd_profile_free(bd_profile_def *p)
 {
     free(p->points);
+    free(p->point_marks);
     free(p->curves);
     memset(p, 0, sizeof *p);
 }

@@ -18,12 +18,12 @@ typedef struct bd_profile_takeup {
     bd_takeup_def t;  /* first: the takeup's own fields parse into it */
     int at_head;      /* 1: vertical gravity loop behind the head; 0: tail */
     double depth;     /* m, loop: takeup centre below the bends' (0 = default) */
-    bd_mark mark;
 } bd_profile_takeup;
 
 typedef struct bd_profile_def {
     int point_count;
     double (*points)[2];      /* [point_count] chainage, elevation: top of the carry idlers */
+    bd_mark *point_marks;     /* [point_count] where each was given */
     int curve_count;
     bd_profile_curve *curves; /* [curve_count] */
     bd_pulley_def head, tail;
@@ -39,10 +39,10 @@ typedef struct bd_profile_def {
  * (its pulleys and idler sets, which must be empty). Problems go to diag
  * at the profile's marks; 0 = ok. The tables parsed into head, tail and
  * takeup pass to m's pulleys (freed here when the layout fails) */
-int bd_profile_layout(const bd_profile_def *p, bd_model_def *m, bd_diag *diag);
+int bd_profile_layout(bd_profile_def *p, bd_model_def *m, bd_diag *diag);
 /* its points and curves */
 void bd_profile_free(bd_profile_def *p);
 /* the tables parsed into head, tail and takeup, when no layout took them */
-void bd_profile_free_tables(const bd_profile_def *p);
+void bd_profile_free_tables(bd_profile_def *p);
 
 #endif

@@ -300,6 +300,11 @@ static inline double bd_pulley_solve_inertia(const bd_sim *sim, const bd_pulley_
     return p->m->inertia + p->torque_damping * sim->model->dt;
 }
 
+/* m the belt must stand off an idler to count as lifted: above the
+ * rounding of a resting contact and the discrete belt's chord passing
+ * over an idler (its contact gap), well below a lift in a curve (cm) */
+#define BD_LIFT_OFF_CLEARANCE 1e-3
+
 /* an idler station at path coordinate s is lifted in this step */
 static inline void bd_lift_off_note(bd_sim *sim, double s)
 {

@@ -19,7 +19,7 @@ void bd_lift_off_update(bd_sim *sim)
 {
     bd_lift_off *l = &sim->lift;
     double dt = sim->model->dt;
-    if (l->step_count == 0 || sim->stabilizing) {
+    if (l->step_count == 0) {
         l->since = -1.0;
         l->step_count = 0;
         return;

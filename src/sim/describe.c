@@ -6,18 +6,14 @@
 #include <math.h>
 #include <stdio.h>
 
-/* where the pulleys stand and how each span runs: a layout made from a
- * `profile` is checked here before it is run (model-format.md) */
-static void describe_layout(FILE *f, const bd_sim *sim)
+/* how each span runs (the pulleys' centres are on their own lines): a
+ * layout made from a `profile` is checked here before it is run
+ * (model-format.md) */
+static void describe_spans(FILE *f, const bd_sim *sim)
 {
     const bd_path *path = &sim->model->path;
-    fprintf(f, "layout (x, y in m; s along the belt from where it leaves '%s'):\n",
+    fprintf(f, "spans (x, y in m; s along the belt from where it leaves '%s'):\n",
             sim->model->def->pulleys[0].name);
-    for (int i = 0; i < sim->model->pulley_count; i++) {
-        const bd_pulley_def *pd = sim->pulleys[i].m->def;
-        fprintf(f, "  pulley %-12s centre (%.3f, %.3f), radius %.3f, wrap %s\n", pd->name, pd->x,
-                pd->y, pd->radius, pd->wrap > 0 ? "ccw" : "cw");
-    }
     for (int i = 0; i < sim->model->pulley_count; i++) {
         const bd_path_segment *sp = bd_path_span(path, i);
         fprintf(f, "  span %-12s s %.3f to %.3f m, from (%.3f, %.3f) to (%.3f, %.3f), "
@@ -32,15 +28,16 @@ static void describe_layout(FILE *f, const bd_sim *sim)
             double a[2], b[2], t[2];
             bd_path_point(path, g->s0, a, t);
             bd_path_point(path, g->s0 + g->length, b, t);
-            /* turning towards the idlers' side (down on the carry strand,
-             * travelling +x, a clockwise turn) is convex */
-            int ccw = g->sweep > 0.0, fwd = sp->dir[0] >= 0.0;
+            /* concave: its centre on the side away from the idlers (up),
+             * the travel direction's left for a ccw turn */
+            double up[2], left = g->sweep > 0.0 ? 1.0 : -1.0;
+            bd_path_up_normal(t, up);
+            int concave = left * (-t[1] * up[0] + t[0] * up[1]) > 0.0;
             fprintf(f, "    %s vertical curve, radius %.1f m: s %.3f to %.3f m, from (%.3f, "
-                       "%.3f) to (%.3f, %.3f)\n", ccw == fwd ? "concave" : "convex", g->radius,
+                       "%.3f) to (%.3f, %.3f)\n", concave ? "concave" : "convex", g->radius,
                     g->s0, g->s0 + g->length, a[0], a[1], b[0], b[1]);
         }
     }
-    fprintf(f, "  belt loop %.3f m along the path\n", path->length);
 }
 
 void bd_sim_describe(const bd_sim *sim, FILE *f)
@@ -70,12 +67,13 @@ void bd_sim_describe(const bd_sim *sim, FILE *f)
     for (int i = 0; i < sim->model->pulley_count; i++) {
         const bd_pulley_body *p = &sim->pulleys[i];
         const bd_path_segment *sp = bd_path_span(&sim->model->path, i);
-        fprintf(f, "  %-12s wrap %6.1f deg, span after it %.3f m, inertia %.4g kg m2%s%s\n",
+        fprintf(f, "  %-12s wrap %6.1f deg, span after it %.3f m, inertia %.4g kg m2, centre "
+                   "(%.3f, %.3f) m, radius %.3f m%s%s\n",
                 p->m->def->name, bd_path_wrap_angle(&sim->model->path, i) * 180.0 / BD_PI,
-                sp->length, p->m->inertia, p->m->def->has_drive ? ", drive" : "",
-                p->m->def->has_takeup ? ", takeup" : "");
+                sp->length, p->m->inertia, p->m->def->x, p->m->def->y, p->m->def->radius,
+                p->m->def->has_drive ? ", drive" : "", p->m->def->has_takeup ? ", takeup" : "");
     }
-    describe_layout(f, sim);
+    describe_spans(f, sim);
     if (def->idler_set_count > 0)
         fprintf(f, "idlers:\n");
     for (int k = 0; k < def->idler_set_count; k++)

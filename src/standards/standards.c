@@ -210,6 +210,26 @@ static double design_speed(const bd_std_ctx *c)
     return 0.0;
 }
 
+/* a rise (or run) below 1e-9 of the length it is over is none: rounding */
+static double level_cut(double rise, double length)
+{
+    return fabs(rise) < 1e-9 * length ? 0.0 : rise;
+}
+
+/* the points of span sp at fractions a and b of its length */
+static void span_points_at(const bd_path *path, const bd_path_segment *sp, double a, double b,
+                           double pa[2], double pb[2])
+{
+    double t[2];
+    bd_path_point(path, sp->s0 + a * sp->length, pa, t);
+    if (b >= 1.0) {
+        pb[0] = sp->p1[0];
+        pb[1] = sp->p1[1];
+    } else {
+        bd_path_point(path, sp->s0 + b * sp->length, pb, t);
+    }
+}
+
 static int build_sections(bd_std_ctx *c)
 {
     const bd_model_def *m = c->m;
@@ -286,27 +306,22 @@ static int build_sections(bd_std_ctx *c)
             cut[1] = feed_at;
             parts = 2;
         }
-        /* the span's rise per metre: the path's tangent carries the
-         * rounding of its trigonometry (~1e-16 on a level span), which
-         * summed into F_St read as 1.6e-12 N; a slope below 1e-9 (1 µm per
-         * km) is level */
-        double rise = fabs(sp->dir[1]) < 1e-9 ? 0.0 : sp->dir[1];
+        /* each section's rise and mean cos δ (∫cos δ ds over its length)
+         * from its ends on the path, straight or routed; a rise below
+         * 1e-9 of the length (1 µm per km) is level: the trigonometry's
+         * rounding (~1e-16 on a level span) summed into F_St had read as
+         * 1.6e-12 N */
         for (int q = 0; q < parts; q++) {
             bd_std_section *s = &c->sec[ns++];
             double frac = cut[q + 1] - cut[q];
             s->span = i;
             s->length = sp->length * frac;
-            s->lift = rise * s->length;
-            s->cos_delta = fabs(sp->dir[0]);
-            if (sp->piece_count > 0) {
-                /* a routed span: its rise and the mean cos δ of the
-                 * section, ∫cos δ ds over its length, from its ends */
-                double pa[2], pb[2], t[2];
-                bd_path_point(&c->path, sp->s0 + cut[q] * sp->length, pa, t);
-                bd_path_point(&c->path, sp->s0 + cut[q + 1] * sp->length, pb, t);
-                s->lift = pb[1] - pa[1];
-                s->cos_delta = s->length > 0.0 ? fabs(pb[0] - pa[0]) / s->length : 1.0;
-            }
+            double pa[2], pb[2];
+            span_points_at(&c->path, sp, cut[q], cut[q + 1], pa, pb);
+            s->lift = level_cut(pb[1] - pa[1], s->length);
+            /* and a vertical one has no main resistance, not 1e-14 N */
+            s->cos_delta = s->length > 0.0 ? fabs(level_cut(pb[0] - pa[0], s->length)) / s->length
+                                           : fabs(sp->dir[0]);
             /* the feed span carries material only behind the feed point */
             int load_here = loaded[i] && !(i == feed && (feed_at >= 1.0 || (parts == 2 && q == 0)));
             s->mL = load_here ? m->material.mass_per_length : 0.0;
@@ -319,13 +334,8 @@ static int build_sections(bd_std_ctx *c)
         os->pulley = i;
         os->to = (i + 1) % n;
         os->length_m = sp->length;
-        os->lift_m = rise * sp->length;
-        os->slope_rad = atan2(rise, fabs(sp->dir[0]));
-        if (sp->piece_count > 0) {
-            /* a routed span: from end to end */
-            os->lift_m = sp->p1[1] - sp->p0[1];
-            os->slope_rad = atan2(os->lift_m, fabs(sp->p1[0] - sp->p0[0]));
-        }
+        os->lift_m = level_cut(sp->p1[1] - sp->p0[1], sp->length);
+        os->slope_rad = atan2(os->lift_m, fabs(level_cut(sp->p1[0] - sp->p0[0], sp->length)));
         os->idler_spacing_m = spacing;
         os->mR_kg_per_m = mR;
         os->loaded = loaded[i];

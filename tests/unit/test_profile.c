@@ -7,13 +7,29 @@
  *    is (200 − t) + R·δ + (|leg 2| − t). Tolerance 1e-9 m: the layout is
  *    exact geometry, only rounding differs.
  * 2. Lift-off in a concave curve at rest: the idlers carry the belt while
- *    m'·g·cos δ > T/R per metre, so it lifts off when T > m'·g·R·cos δ. A
+ *    m'·g·cos δ > T/R per metre (a string under tension T bent to radius
+ *    R presses T/R per metre on its supports; CEMA's concave-curve radius
+ *    R = T/(m'g), see D. Pitcher, IMHC B17-16), so it lifts off when
+ *    T > m'·g·R·cos δ. A
  *    level-ended valley (the tension nearly uniform) with the takeup set
- *    15 % below and 15 % above that tension: no lift-off, then lift-off
- *    reported inside the curve (the margin allows for the tension's change
- *    along the loop by the belt's weight on the slopes, under 1 %). */
+ *    3 % below and 3 % above that tension: no lift-off, then lift-off
+ *    reported inside the curve (the margin allows for the tension at the
+ *    curve differing from half the takeup's pull: the belt's weight on the
+ *    valley's slopes, 0.9 %, and on the takeup loop's legs, 0.5 %).
+ * 3. The return strand's corner is the carry strand's moved return_drop
+ *    down (exactly), and the strand itself runs that far below the carry
+ *    at the curve within 3 cm: its legs meet the pulleys on tangents, so
+ *    they turn by δ' a little more than the carry's δ, and the fillet's
+ *    external distance R·(sec(δ/2) − 1) ≈ Rδ²/8 grows by Rδ·Δδ/4 (here
+ *    2.7 cm, from the slopes 28/397 and 0.2/200 of its legs); a tail
+ *    takeup is the tail pulley pulled horizontally away from the head.
+ * 4. An idler curve on an explicit span: the arc through the span's points
+ *    at from and to sags R − √(R² − c²/4) below the chord at its middle
+ *    (1e-9 m); `check` calls it concave, and convex with sense: convex. */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 
 #include "beltdyn/model.h"
 #include "beltdyn/sim.h"
@@ -81,13 +97,153 @@ static int lifts(double T, double R, double *first_s)
     return lifted;
 }
 
+/* the return strand's height below the carry strand at chainage x */
+static double drop_at(const bd_sim *sim, double x)
+{
+    const bd_path *path = &sim->model->path;
+    double yc = NAN, yr = NAN, p[2], t[2];
+    for (double s = 0.0; s < path->length; s += 0.01) {
+        bd_path_point(path, s, p, t);
+        if (fabs(p[0] - x) < 0.005)
+            *(t[0] > 0.0 ? &yc : &yr) = p[1];
+    }
+    return yc - yr;
+}
+
+static void return_and_tail_takeup(void)
+{
+    bd_model_def def;
+    bd_sim *sim;
+    bd_test_make_sim(layout_text, &def, &sim);
+    const bd_pulley_def *bend2 = &def.pulleys[def.pulley_count - 1];
+    CHECK(bend2->route_count == 1);
+    CHECK(bend2->route[0].x == 200.0 && bend2->route[0].y == -1.0 && bend2->route[0].radius == 1000.0);
+    double drop = drop_at(sim, 200.0);
+    printf("return strand %.4f m below the carry strand at the curve (return_drop 1)\n", drop);
+    CHECK_ABS(drop, 1.0, 0.03);
+    bd_sim_free(sim);
+    bd_model_def_free(&def);
+    const char *tail =
+        "belt: {mass_per_length: 20, axial_stiffness: 3.0e7}\n"
+        "profile:\n"
+        "  points: [[0, 0], [300, 20]]\n"
+        "  tail: {radius: 0.4}\n"
+        "  head: {radius: 0.5, drive: {control: speed, speed: 3}}\n"
+        "  takeup: {at: tail, type: gravity, mass: 2000}\n"
+        "  carry_idlers: {spacing: 1.5}\n";
+    bd_test_make_sim(tail, &def, &sim);
+    CHECK(def.pulley_count == 2 && def.pulleys[0].has_takeup && !def.pulleys[1].has_takeup);
+    CHECK(def.pulleys[0].takeup.axis[0] == -1.0 && def.pulleys[0].takeup.axis[1] == 0.0);
+    CHECK(def.idler_sets[1].span == 1);
+    bd_sim_free(sim);
+    bd_model_def_free(&def);
+}
+
+/* a level 100 m two-pulley conveyor, its idler sets to follow */
+static const char *two_pulleys =
+        "belt: {mass_per_length: 20, axial_stiffness: 3.0e7, initial_tension: 20000}\n"
+        "pulleys:\n"
+        "  - {name: tail, x: 0, y: 0, radius: 0.4, wrap: cw}\n"
+        "  - {name: head, x: 100, y: 0, radius: 0.4, wrap: cw}\n"
+        "idlers:\n";
+
+/* does `check` call the span's curve concave (1), convex (0), or neither (−1) */
+static int curve_sense(const bd_sim *sim)
+{
+    char *text = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&text, &len);
+    bd_sim_describe(sim, f);
+    fclose(f);
+    int sense = strstr(text, "concave vertical curve") ? 1
+              : strstr(text, "convex vertical curve") ? 0 : -1;
+    free(text);
+    return sense;
+}
+
+static void idler_curve(void)
+{
+    const char *fmt = "%s  - {span: tail, spacing: 1.5, curve: {radius: 500, from: 0.3, to: 0.7%s}}\n";
+    for (int convex = 0; convex < 2; convex++) {
+        char text[600];
+        snprintf(text, sizeof text, fmt, two_pulleys, convex ? ", sense: convex" : "");
+        bd_model_def def;
+        bd_sim *sim;
+        bd_test_make_sim(text, &def, &sim);
+        double p[2], t[2], R = 500.0, c = 40.0;
+        /* the arc's middle: 30 m of straight, then half its R·2·asin(c/2R) */
+        bd_path_point(&sim->model->path, 30.0 + R * asin(0.5 * c / R), p, t);
+        double sag = R - sqrt(R * R - 0.25 * c * c);
+        printf("idler curve (%s): %.9f m off the chord, formula %.9f m\n",
+               convex ? "convex" : "concave", convex ? p[1] - 0.4 : 0.4 - p[1], sag);
+        CHECK_ABS(p[1], 0.4 + (convex ? sag : -sag), 1e-9);
+        CHECK(curve_sense(sim) == !convex);
+        bd_sim_free(sim);
+        bd_model_def_free(&def);
+    }
+}
+
+/* the first error of loading and building text, or "" */
+static void first_error(const char *text, char *out, size_t size)
+{
+    bd_model_def def;
+    bd_diag d;
+    bd_sim *sim = NULL;
+    bd_diag_init(&d);
+    out[0] = '\0';
+    if (bd_model_load_string(text, strlen(text), "t.yaml", &def, &d) == 0
+        && bd_sim_create(&def, &sim, &d) == 0)
+        bd_sim_free(sim);
+    if (d.count > 0)
+        snprintf(out, size, "%s", d.lines[0]);
+    bd_model_def_free(&def);
+    bd_diag_free(&d);
+}
+
+/* bad routes are errors at their line; two curves that touch share the
+ * corner between them */
+static void bad_routes(void)
+{
+    char e[512];
+    first_error("belt: {mass_per_length: 20, axial_stiffness: 3.0e7}\n"
+                "profile:\n"
+                "  tail: {radius: 0.4}\n"
+                "  head: {radius: 0.5, drive: {control: speed, speed: 3}}\n"
+                "  takeup: {at: tail, type: gravity, mass: 2000}\n"
+                "  carry_idlers: {spacing: 1.5}\n", e, sizeof e);
+    printf("%s\n", e);
+    CHECK(strstr(e, "t.yaml:2:") && strstr(e, "missing required key 'points'"));
+    const char *fmt =
+        "%s  - {span: tail, spacing: 1.5, curve: {radius: %g, from: 0.3, to: 0.4}}\n"
+        "  - {span: tail, spacing: 1.5, curve: {radius: 500, from: 0.4, to: 0.5}}\n";
+    char text[800];
+    snprintf(text, sizeof text, fmt, two_pulleys, 4.0);
+    first_error(text, e, sizeof e);
+    printf("%s\n", e);
+    CHECK(strstr(e, "t.yaml:6:") && strstr(e, "cannot bend"));
+    snprintf(text, sizeof text, fmt, two_pulleys, 500.0);
+    first_error(text, e, sizeof e);
+    CHECK(e[0] == '\0');
+    bd_model_def def;
+    bd_sim *sim;
+    bd_test_make_sim(text, &def, &sim);
+    /* 5 corners (the touching curves share one): 6 legs and 2 arcs */
+    CHECK(sim->model->path.piece_count == 8);
+    printf("two touching curves: %d pieces\n", sim->model->path.piece_count);
+    bd_sim_free(sim);
+    bd_model_def_free(&def);
+}
+
 int main(void)
 {
+    bad_routes();
     layout();
+    return_and_tail_takeup();
+    idler_curve();
     double R = 300.0, delta = atan2(2.618, 100.0);
     double T_lift = 20.0 * 9.81 * R * cos(delta), s;
-    CHECK(!lifts(0.85 * T_lift, R, &s));
-    CHECK(lifts(1.15 * T_lift, R, &s));
+    CHECK(!lifts(0.97 * T_lift, R, &s));
+    CHECK(lifts(1.03 * T_lift, R, &s));
     /* inside the curve: within its tangent length of the valley's bottom */
     double t = R * tan(delta);
     printf("lift-off at s = %.2f m; the curve spans %.2f to %.2f m\n", s,

@@ -275,11 +275,19 @@ static double node_resist(const bd_sim *sim, int i, int full)
             continue;
         const bd_idler_set_def *set = &def->idler_sets[k];
         const bd_path_segment *sp = bd_path_span(&sim->model->path, set->span);
-        /* the idlers carry the weight on count·spacing of the span */
+        /* the idlers carry the weight on count·spacing of the span, its
+         * component normal to the path: cos δ of the span, or on a routed
+         * one at the middle of the node's share */
         double cover = count * sim->model->idler_spacing[k] / sp->length;
-        double rr = set->rolling_resistance * sim->model->gravity * fabs(sp->dir[0]) * cover;
         double lo = 0.0, hi = 0.0;
         double on = bd_loop_overlap(a, z, sp->s0, sp->s0 + sp->length, L, &lo, &hi);
+        double cosd = fabs(sp->dir[0]);
+        if (sp->piece_count > 0 && on > 0.0) {
+            double p[2], t[2];
+            bd_path_point(&sim->model->path, 0.5 * (lo + hi), p, t);
+            cosd = fabs(t[0]);
+        }
+        double rr = set->rolling_resistance * sim->model->gravity * cosd * cover;
         if (on > 0.0)
             R += rr * (sim->model->belt_mpl * on + mL * loaded_length(sim, full, lo, hi));
     }

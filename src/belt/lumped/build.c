@@ -100,11 +100,9 @@ static void setup_idlers(bd_sim *sim)
              * the normal pointing down */
             double pt[2], t[2];
             bd_path_point(&sim->model->path, s, pt, t);
-            double nx = t[1], ny = -t[0];
-            if (ny > 0.0) {
-                nx = -nx;
-                ny = -ny;
-            }
+            double up[2];
+            bd_path_up_normal(t, up);
+            double nx = -up[0], ny = -up[1];
             bd_tracker_init(sim, &id->tr, s);
             /* touch the belt as laid (not the ideal path): no initial kick */
             int e = id->tr.element, e1 = e + 1 == sim->model->n ? 0 : e + 1;
@@ -274,8 +272,7 @@ int bd_lumped_build(bd_sim *sim, bd_diag *diag)
     }
     bd_path_free(&given);
     sim->own->path = lay.path;
-    lay.path.segments = NULL;
-    lay.path.pieces = NULL;
+    memset(&lay.path, 0, sizeof lay.path);   /* the simulation owns it now */
     sim->own->n = lay.n;
     sim->own->l0 = lay.l0;
     bd_lumped_model *LM = bd_xcalloc(1, sizeof *LM);

@@ -40,6 +40,14 @@
 /* predictive contact gap, as a fraction of the element length */
 #define IDLER_CONTACT_GAP 0.02
 
+/* the belt, d from the idler's centre, off it by more than the
+ * clearance that counts as lift-off (system.h) */
+static void note_lifted(bd_sim *sim, const bd_idler *id, double d)
+{
+    if (d - id->m->radius > BD_LIFT_OFF_CLEARANCE && !sim->stabilizing)
+        bd_lift_off_note(sim, id->m->s);
+}
+
 static void idler_contact(bd_sim *sim, bd_idler *id)
 {
     bd_tracker_update(sim, &id->tr);
@@ -53,8 +61,10 @@ static void idler_contact(bd_sim *sim, bd_idler *id)
     double rx = px - im->centre[0], ry = py - im->centre[1];
     double d2 = rx * rx + ry * ry;
     double Rc = im->radius + IDLER_CONTACT_GAP * sim->model->l0;
-    if (d2 >= Rc * Rc)
+    if (d2 >= Rc * Rc) {
+        note_lifted(sim, id, sqrt(d2));
         return;
+    }
     /* reciprocals once: the divider is what bounds this loop */
     double d = sqrt(d2), inv_d = 1.0 / d;
     double nx = rx * inv_d, ny = ry * inv_d;
@@ -67,8 +77,10 @@ static void idler_contact(bd_sim *sim, bd_idler *id)
     double dt = sim->model->dt;
     double fn = im->k_contact * (im->radius - d - dt * (nx * vcx + ny * vcy) - dt * dt * aon)
               / (1.0 + im->k_contact * dt * dt * inv_m_eff);
-    if (fn <= 0.0)
+    if (fn <= 0.0) {
+        note_lifted(sim, id, d);
         return;
+    }
     /* tangent along the travel direction */
     double tx = -ny, ty = nx;
     if (tx * id->tr.dir[0] + ty * id->tr.dir[1] < 0.0) {

@@ -28,6 +28,7 @@ const bd_belt_ops bd_lumped_ops = {
     .point_update = bd_tracker_update,
     .sample = bd_lumped_sample,
     .element_s = bd_lumped_element_s,
+    .records_lift_off = 1,
     .element_speed = bd_lumped_element_speed,
     .element_strain = bd_lumped_element_strain,
     .node_speed = bd_lumped_node_speed,

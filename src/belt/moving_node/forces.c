@@ -55,7 +55,9 @@ static void elements(bd_sim *sim)
         if (!mm->on_arc[e]) {
             /* in a vertical curve the chord shortens as the belt moves
              * towards the centre of curvature: by kw·(w_e + w_j), the
-             * turn over the element times its mean offset */
+             * turn over the element times its mean offset (plane
+             * geometry: an arc of radius R − w is (1 − w/R) as long);
+             * its derivative is the pull T·Δθ across (below) */
             double dw = w[j] - w[e], dl = ds - mm->kw[e] * (w[e] + w[j]);
             l = sqrt(dl * dl + dw * dw);
             cs = dl / l;
@@ -199,7 +201,13 @@ void bd_mn_forces(bd_sim *sim)
             double la = mn->len[b], lb = mn->len[i];
             double wss = ((w[j] - w[i]) / lb - (w[i] - w[b]) / la) / (0.5 * (la + lb));
             /* the pull across: the elements' slopes, and in a vertical
-             * curve the turn of the path, T·Δθ (elements(), above) */
+             * curve the turn of the path, T·Δθ: a string under tension T
+             * bent to radius R presses T/R per metre on its supports, as
+             * on a drum (seed 004's normal force of the wrap); in a
+             * concave curve it lifts off once T/R exceeds the weight's
+             * m'g·cos δ, CEMA's concave-curve radius R = T/(m'g) (as
+             * compared in D. Pitcher, "Calculation of correct radii for
+             * vertical curves in troughed belt conveyors", IMHC B17-16) */
             double ki = mm->kw[i] * mn->cos_e[i], kb = mm->kw[b] * mn->cos_e[b];
             G = T[i] * (mn->sin_e[i] + ki) - T[b] * (mn->sin_e[b] - kb) + mn->f_norm[i] + fb[i]
               - m * vi * vi * wss - 2.0 * m * vi * (wd[j] - wd[b]) / (la + lb);

@@ -63,7 +63,7 @@ void bd_mn_integrate(bd_sim *sim, double *ke_out, double *w_nc_out)
             continue;
         if (w[i] < 0.0)
             w[i] = 0.0;   /* the support put it there: rounding only */
-        else if (w[i] > 0.0 && !sim->stabilizing) {
+        else if (w[i] > BD_LIFT_OFF_CLEARANCE && !sim->stabilizing) {
             /* lifted off its idler (recorded, said after the run) */
             bd_lift_off_note(sim, sim->model->s_node0[i]);
         }

@@ -188,13 +188,10 @@ static void put_node(bd_sim *sim, int i, double s, int kind, int pulley, int set
         mm->ny[i] = r > 0.0 ? dy / r : 0.0;
     } else {
         /* the span's normal, pointing up (idlers stand below the belt) */
-        double nx = -t[1], ny = t[0];
-        if (ny < 0.0 || (ny == 0.0 && nx < 0.0)) {
-            nx = -nx;
-            ny = -ny;
-        }
-        mm->nx[i] = nx;
-        mm->ny[i] = ny;
+        double up[2];
+        bd_path_up_normal(t, up);
+        mm->nx[i] = up[0];
+        mm->ny[i] = up[1];
     }
     if (kind == BD_MN_IDLER) {
         const bd_idler_set_def *st = &sim->model->def->idler_sets[set];
@@ -227,15 +224,15 @@ static void element_geometry(bd_sim *sim)
         /* a vertical curve: the path turns between the nodes; half the
          * turn at each end, signed towards the normal (up) */
         mm->kw[e] = 0.0;
-        if (!on && bd_path_span(path, bd_path_segment_at(path, sim->model->s_node0[e]) / 2)
-                           ->piece_count > 0) {
-            double p[2], ta[2], tz[2];
+        if (!on && path->segments[bd_path_segment_at(path, sim->model->s_node0[e])].piece_count > 0) {
+            double p[2], ta[2], tz[2], up[2];
             bd_path_point(path, sim->model->s_node0[e], p, ta);
             bd_path_point(path, sim->model->s_node0[j], p, tz);
             double turn = atan2(ta[0] * tz[1] - ta[1] * tz[0], ta[0] * tz[0] + ta[1] * tz[1]);
-            /* the normal (up) is the travel direction's left or right */
-            double left = -ta[1] * mm->nx[e] + ta[0] * mm->ny[e];
-            mm->kw[e] = 0.5 * turn * (left >= 0.0 ? 1.0 : -1.0);
+            /* the span's up normal (an arc node's own points at its pulley)
+             * is the travel direction's left or right */
+            bd_path_up_normal(ta, up);
+            mm->kw[e] = 0.5 * turn * (-ta[1] * up[0] + ta[0] * up[1] >= 0.0 ? 1.0 : -1.0);
         }
     }
 }

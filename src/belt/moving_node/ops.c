@@ -64,4 +64,5 @@ const bd_belt_ops bd_moving_node_ops = {
     .element_strain = element_strain,
     .node_speed = bd_station_node_speed,
     .report_events = report_events,
+    .records_lift_off = 1,
 };
