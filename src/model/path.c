@@ -275,13 +275,21 @@ static double piece_project(const bd_path_piece *g, double x, double y)
 {
     if (!g->is_arc)
         return (x - g->p0[0]) * g->dir[0] + (y - g->p0[1]) * g->dir[1];
-    double sense = g->sweep >= 0.0 ? 1.0 : -1.0;
-    double rel = sense * (atan2(y - g->centre[1], x - g->centre[0]) - g->angle0);
-    while (rel < -BD_PI)
+    return bd_path_arc_position(g->centre, g->radius, g->angle0, g->sweep, x, y);
+}
+
+double bd_path_arc_position(const double centre[2], double radius, double angle0, double sweep,
+                            double x, double y)
+{
+    double sense = sweep >= 0.0 ? 1.0 : -1.0;
+    double rel = sense * (atan2(y - centre[1], x - centre[0]) - angle0);
+    /* put the gap outside the arc half before, half after it */
+    double gap = 0.5 * (BD_TWO_PI - fabs(sweep));
+    while (rel < -gap)
         rel += BD_TWO_PI;
-    while (rel >= BD_PI)
+    while (rel >= BD_TWO_PI - gap)
         rel -= BD_TWO_PI;
-    return rel * g->radius;
+    return rel * radius;
 }
 
 int bd_path_build(const bd_model_def *m, bd_path *path, bd_diag *diag)

@@ -64,6 +64,12 @@ void bd_path_point(const bd_path *path, double s, double p[2], double tangent[2]
 /* index of the segment holding s (s modulo the loop length) */
 int bd_path_segment_at(const bd_path *path, double s);
 
+/* along a circular arc (centre, radius, polar angle of its start, signed
+ * sweep): the distance from its start of the point nearest (x, y), the
+ * circle's part outside the arc split half before it (negative), half
+ * beyond its end */
+double bd_path_arc_position(const double centre[2], double radius, double angle0, double sweep,
+                            double x, double y);
 /* along span g: the distance from its start of the point nearest (x, y);
  * before its start negative, beyond its end more than its length */
 double bd_path_span_project(const bd_path *path, const bd_path_segment *g, double x, double y);

@@ -12,7 +12,10 @@ int bd_step_once(bd_sim *sim);
  * the state now; 0, or 1 when it diverged (message in sim->fail_msg) */
 int bd_step_forces(bd_sim *sim);
 /* v(−Δt/2) for a start from rest */
-int bd_sim_start_at_rest(bd_sim *sim);   /* 1: the forces failed (fail_msg) */
+int bd_sim_start_at_rest(bd_sim *sim);
+/* the run's records of belt tension and lift-off cleared: a run starts
+ * (build) or starts again after stabilizing (step.c) */
+void bd_run_records_clear(bd_sim *sim);   /* 1: the forces failed (fail_msg) */
 
 /* bounds.c: the parts' physical bounds (build: bd_bounds_prepare sets
  * model->speed_bound and travel_bound; step: 0, or 1 with the message in

@@ -134,9 +134,7 @@ static int restart_clock(bd_sim *sim)
         if (p->m->def->has_drive)
             bd_monitor_reset(sim, p);
     }
-    sim->tension_max = -INFINITY;
-    sim->tension_min = INFINITY;
-    bd_lift_off_reset(sim);
+    bd_run_records_clear(sim);
     memset(&sim->energy, 0, sizeof sim->energy);
     return bd_sim_start_at_rest(sim);
 }

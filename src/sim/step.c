@@ -87,6 +87,13 @@ int bd_step_forces(bd_sim *sim)
     return 0;
 }
 
+void bd_run_records_clear(bd_sim *sim)
+{
+    sim->tension_max = -INFINITY;
+    sim->tension_min = INFINITY;
+    bd_lift_off_reset(sim);
+}
+
 /* A run starts at rest: v(0) = 0. The scheme carries velocities at half
  * steps, so the first one it needs is v(−Δt/2) = −a(0)·Δt/2 (nodes, pulley
  * rotation, takeup carriages, idlers); starting from

@@ -2,7 +2,6 @@
  * moves less than one element per step, so a tracker walks at most a few
  * elements from where it was: O(1) per step. */
 #include "belt/lumped/lumped.h"
-#include "base/constants.h"
 
 #include <math.h>
 
@@ -78,15 +77,7 @@ double bd_lumped_element_s(const bd_sim *sim, int e)
         if (g->kind == BD_SEGMENT_SPAN) {
             u = bd_path_span_project(&sim->model->path, g, mx, my);
         } else {
-            double sense = g->sweep >= 0.0 ? 1.0 : -1.0;
-            double rel = sense * (atan2(my - g->centre[1], mx - g->centre[0]) - g->angle0);
-            /* put the gap outside the arc half before, half after it */
-            double gap = 0.5 * (BD_TWO_PI - fabs(g->sweep));
-            while (rel < -gap)
-                rel += BD_TWO_PI;
-            while (rel >= BD_TWO_PI - gap)
-                rel -= BD_TWO_PI;
-            u = rel * g->radius;
+            u = bd_path_arc_position(g->centre, g->radius, g->angle0, g->sweep, mx, my);
         }
         if (u < 0.0 && it < 5)
             seg = (seg + nseg - 1) % nseg;
