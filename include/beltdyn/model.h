@@ -243,6 +243,47 @@ typedef struct bd_safety_factor_def {
     double running, starting;
 } bd_safety_factor_def;
 
+/* design.secondary: the secondary resistances by DIN 22101's C, or one by
+ * one (DIN 22101 / ISO 5048) from the keys below */
+typedef enum bd_secondary_mode {
+    BD_SECONDARY_C = 0,
+    BD_SECONDARY_INDIVIDUAL
+} bd_secondary_mode;
+
+/* the belt's carcass, for ISO 5048's wrap resistance */
+typedef enum bd_carcass {
+    BD_CARCASS_FABRIC = 0,
+    BD_CARCASS_STEEL_CORD
+} bd_carcass;
+
+/* skirt plates from the feed point on (model-format.md `design.skirts`) */
+typedef struct bd_skirts_def {
+    int present;
+    double width;            /* m between the skirt plates, b1 */
+    double length;           /* m of skirting, l */
+    double mu_material;      /* material–skirt friction, μ2 */
+    double mu_belt_material; /* material–belt friction, μ1 */
+} bd_skirts_def;
+
+/* belt cleaners (model-format.md `design.cleaners`) */
+typedef struct bd_cleaners_def {
+    int present;
+    double count;            /* how many */
+    double width, thickness; /* m, contact area of one: width × thickness */
+    double pressure;         /* Pa between cleaner and belt */
+    double mu;               /* cleaner–belt friction, μ3 */
+    int pulley;              /* index of the pulley they scrape at; -1: the
+                                discharge pulley (else the first drive) */
+} bd_cleaners_def;
+
+/* one pulley's bearings (model-format.md `design.bearings`) */
+typedef struct bd_bearing_def {
+    int pulley;              /* index of the pulley */
+    double bore;             /* m, bearing diameter d0 */
+    double mass;             /* kg of the pulley's rotating parts */
+    bd_mark mark;
+} bd_bearing_def;
+
 typedef struct bd_design_def {
     int present;
     bd_standard standard;
@@ -253,6 +294,16 @@ typedef struct bd_design_def {
     bd_cema_def cema;
     bd_safety_factor_def safety_factor;
     double efficiency;  /* coupling × gearbox, 0 < η ≤ 1: motor power = Te·v/η */
+    /* the secondary and special resistances one by one */
+    bd_secondary_mode secondary;
+    double bulk_density;     /* kg/m³ (the file gives t/m³); 0 = not given */
+    double loading_speed;    /* m/s of the material along the belt as it lands */
+    bd_skirts_def skirts;
+    bd_cleaners_def cleaners;
+    double belt_thickness;   /* m, for the wrap resistance; 0 = belt.thickness */
+    bd_carcass carcass;
+    int bearing_count;
+    bd_bearing_def *bearings;   /* [bearing_count] */
     bd_mark mark;
 } bd_design_def;
 

@@ -28,16 +28,39 @@ typedef struct bd_static_span {
     double main_N;           /* N, main resistance (DIN F_H,i; CEMA friction) */
     double secondary_N;      /* N, secondary (DIN F_N,i share; CEMA T_am) */
     double slope_N;          /* N, slope resistance (lift of belt + load) */
+    double special_N;        /* N, special resistances acting on it (skirts,
+                                cleaners; secondary: individual) */
     double T_start_N;        /* N, belt tension where the span starts */
     double T_end_N;          /* N, belt tension where it ends */
     double cema_Kx;          /* N/m, CEMA eq 2.2 (carry spans; 0 otherwise) */
     double cema_Ky;          /* -, CEMA Ky used on this span (0 for DIN) */
 } bd_static_span;
 
+/* a pulley's own resistances (secondary: individual), N */
+typedef struct bd_static_pulley {
+    double T_in_N, T_out_N;  /* N, belt tension arriving and leaving */
+    double wrap_N;           /* bending of the belt over it (non-driving) */
+    double bearing_N;        /* its bearings (design.bearings) */
+    double cleaners_N;       /* the cleaners scraping there */
+} bd_static_pulley;
+
 typedef struct bd_static_result {
     bd_standard standard;
     /* resistances summed over the loop, N (total = effective tension) */
     double main_N, secondary_N, slope_N, total_N;
+    double special_N;           /* N, F_S (0 unless secondary: individual) */
+    /* design.secondary: individual (ISO 5048 §5.2): secondary_N is the sum
+     * of the first four, special_N of skirts and cleaners */
+    int individual;
+    double loading_inertia_N;   /* F_bA */
+    double loading_skirts_N;    /* F_f, skirts in the acceleration zone */
+    double wrap_N;              /* Σ over the non-driving pulleys */
+    double bearings_N;          /* Σ over design.bearings */
+    double skirts_N;            /* F_gl over the skirts' whole length */
+    double cleaners_N;          /* F_r */
+    double acceleration_length_m;  /* l_b */
+    int individual_iterations;  /* tension ↔ wrap/bearing fixed point */
+    bd_static_pulley *pulleys;  /* [span_count] (NULL unless individual) */
     double effective_tension_N; /* N, Te = T1 - T2 over all drives; < 0 regenerative */
     double power_kW;            /* kW, Te * speed at the drive pulley(s) */
     double motor_power_kW;      /* kW, power_kW / design.efficiency */

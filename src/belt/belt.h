@@ -118,6 +118,12 @@ int bd_idler_count(const bd_model_def *def, const bd_path *path, int k, double *
 /* the element tensions' extremes of this step into sim->step_tension_*
  * (the forces phase of every formulation ends with it) */
 void bd_tension_extremes(bd_sim *sim);
+/* the force on the belt at the feed point along the travel, N: the
+ * landing material's momentum flux (`landing`; the lumped belt shares the
+ * momentum in its material phase instead) and, with design.secondary:
+ * individual, the skirts (`loaded`: material lies at the feed point). v m/s
+ * the belt's speed there, m kg the mass the force acts on. */
+double bd_feed_force(const bd_sim *sim, double v, double m, int landing, int loaded);
 /* the first element whose tension is value (an extreme of this step): the
  * one a scan taking only strictly larger values would keep */
 int bd_tension_element(const bd_sim *sim, double value);

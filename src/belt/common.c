@@ -5,6 +5,9 @@
 #include <math.h>
 
 #include "base/alloc.h"
+#include "laws/rolling.h"
+#include "laws/secondary_resistance.h"
+#include "model/secondary.h"
 
 const bd_belt_ops *bd_belt_ops_for(bd_formulation f)
 {
@@ -33,10 +36,43 @@ void bd_setup_probes_and_feed(bd_sim *sim)
         sim->own->material_mpl = def->material.mass_per_length;
         sim->own->discharge_pulley = def->material.discharge;
         sim->has_feed = def->material.feeding;
+        sim->own->feed_individual = bd_secondary_individual(def);
         sim->model->belt->point_init(
             sim, &sim->feed,
             bd_path_span_s(&sim->model->path, def->material.feed_span, def->material.feed_at));
     }
+}
+
+double bd_feed_force(const bd_sim *sim, double v, double m, int landing, int loaded)
+{
+    const bd_model_def *def = sim->model->def;
+    const int individual = sim->model->feed_individual;
+    double F = 0.0;
+    /* the material landing is accelerated to belt speed: the momentum flux
+     * ṁ·(v − v0) with ṁ = m'_L·v (ISO 5048's F_bA; physics.md §11); a
+     * belt slower than the material takes nothing from it (its push is
+     * left out) */
+    if (landing && sim->has_feed && v > 0.0) {
+        double v0 = individual ? def->design.loading_speed : 0.0;
+        if (v > v0)
+            F -= bd_res_loading_inertia(sim->model->material_mpl, v, v0);
+    }
+    if (!individual)
+        return F;
+    /* the skirts: in the acceleration zone while material lands (F_f), over
+     * their length while material lies there (F_gl), at the present speed;
+     * a Coulomb force faded near rest, the fade no steeper than a quarter
+     * of what the explicit step bears on a node of mass m */
+    bd_feed_resistance fr;
+    bd_secondary_feed(def, fabs(v), &fr);
+    double skirts = (sim->has_feed ? fr.loading_skirts : 0.0) + (loaded ? fr.skirts : 0.0);
+    if (skirts > 0.0) {
+        double fade = fmax(BD_ROLLING_SPEED, 4.0 * skirts * sim->model->dt / m);
+        double sat = v / fade;
+        sat = sat > 1.0 ? 1.0 : (sat < -1.0 ? -1.0 : sat);
+        F -= skirts * sat;
+    }
+    return F;
 }
 
 int bd_idler_count(const bd_model_def *def, const bd_path *path, int k, double *spacing)

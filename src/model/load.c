@@ -1068,12 +1068,121 @@ static const field cema_fields[] = {
 };
 FIELDSET(cema_fs, cema_fields, NULL);
 
+static void skirts_post(ctx *c, const fieldset *fs, yaml_node_t *const *found, bd_mark at,
+                        const char *path, void *base)
+{
+    (void)c, (void)fs, (void)found, (void)at, (void)path;
+    ((bd_skirts_def *)base)->present = 1;
+}
+
+static const field skirts_fields[] = {
+    POS("width", bd_skirts_def, width, REQ),
+    POS("length", bd_skirts_def, length, REQ),
+    NONNEG("mu_material", bd_skirts_def, mu_material, REQ),
+    POS("mu_belt_material", bd_skirts_def, mu_belt_material, REQ),
+};
+FIELDSET(skirts_fs, skirts_fields, skirts_post);
+
+static void cleaners_post(ctx *c, const fieldset *fs, yaml_node_t *const *found, bd_mark at,
+                          const char *path, void *base)
+{
+    bd_cleaners_def *cl = base;
+    yaml_node_t *n = got(fs, found, "count");
+    char sub[PATH_LEN];
+    (void)at;
+    cl->present = 1;
+    if (n && cl->count != floor(cl->count)) {
+        join(sub, path, "count");
+        err(c, mark_of(n), sub, "expected a whole number of cleaners, got %g", cl->count);
+    }
+}
+
+static const field cleaners_fields[] = {
+    NUM("count", bd_cleaners_def, count, REQ, 1.0, 1000.0),
+    POS("width", bd_cleaners_def, width, REQ),
+    POS("thickness", bd_cleaners_def, thickness, REQ),
+    POS("pressure", bd_cleaners_def, pressure, REQ),
+    NONNEG("mu", bd_cleaners_def, mu, REQ),
+    SPAN("pulley", bd_cleaners_def, pulley, 0),
+};
+FIELDSET(cleaners_fs, cleaners_fields, cleaners_post);
+
+static const field bearing_fields[] = {
+    POS("bore", bd_bearing_def, bore, REQ),
+    NONNEG("mass", bd_bearing_def, mass, 0),
+};
+FIELDSET(bearing_fs, bearing_fields, NULL);
+
+/* design.bearings: a mapping from pulley names to {bore, mass}; mass
+ * defaults to the pulley's own */
+static void bearings_fn(ctx *c, const field *f, yaml_node_t *v, bd_mark key, const char *path,
+                        void *base)
+{
+    bd_design_def *d = base;
+    char sub[PATH_LEN];
+    (void)f, (void)key;
+    if (!v || v->type != YAML_MAPPING_NODE) {
+        type_error(c, v, path, "a mapping from pulley names to {bore, mass}");
+        return;
+    }
+    int n = (int)(v->data.mapping.pairs.top - v->data.mapping.pairs.start);
+    if (n == 0)
+        return;
+    d->bearings = calloc((size_t)n, sizeof *d->bearings);
+    if (!d->bearings) {
+        err(c, mark_of(v), path, "out of memory");
+        return;
+    }
+    for (yaml_node_pair_t *p = v->data.mapping.pairs.start; p < v->data.mapping.pairs.top; p++) {
+        yaml_node_t *k = node_at(c, p->key);
+        if (!is_scalar(k)) {
+            type_error(c, k, path, "a pulley name");
+            continue;
+        }
+        join(sub, path, text_of(k));
+        int i = bd_model_find_pulley(c->m, text_of(k));
+        if (i < 0) {
+            if (c->m->pulley_count > 0)
+                err(c, mark_of(k), path, "unknown pulley '%.60s'", text_of(k));
+            continue;
+        }
+        for (int j = 0; j < d->bearing_count; j++)
+            if (d->bearings[j].pulley == i)
+                err(c, mark_of(k), path, "duplicate pulley '%.60s'", text_of(k));
+        bd_bearing_def *b = &d->bearings[d->bearing_count++];
+        b->pulley = i;
+        b->mass = c->m->pulleys[i].mass;
+        b->mark = mark_of(k);
+        parse_map(c, node_at(c, p->value), mark_of(k), sub, &bearing_fs, b);
+    }
+}
+
 static void design_post(ctx *c, const fieldset *fs, yaml_node_t *const *found, bd_mark at,
                         const char *path, void *base)
 {
-    (void)c, (void)fs, (void)found, (void)path;
-    ((bd_design_def *)base)->present = 1;
-    ((bd_design_def *)base)->mark = at;
+    bd_design_def *d = base;
+    const bd_model_def *m = c->m;
+    d->present = 1;
+    d->mark = at;
+    d->bulk_density *= 1000.0; /* t/m³ in the file */
+    if (d->secondary != BD_SECONDARY_INDIVIDUAL)
+        return;
+    /* what the resistances one by one need (model-format.md `design`) */
+    char sub[PATH_LEN];
+    join(sub, path, "secondary");
+    if (d->standard == BD_STANDARD_CEMA)
+        err(c, mark_of(got(fs, found, "secondary")), sub,
+            "`individual` is DIN 22101 / ISO 5048's; with standard: cema use "
+            "secondary: C (CEMA's accessories are its own)");
+    if (!(m->belt.width > 0.0))
+        err(c, mark_of(got(fs, found, "secondary")), sub,
+            "`individual` needs belt.width (m) for the wrap resistance");
+    if (!got(fs, found, "belt_thickness") && !(m->belt.thickness > 0.0))
+        need(c, fs, found, at, path, "belt_thickness",
+             "secondary: individual needs it for the wrap resistance, or belt.thickness");
+    if (d->skirts.present && m->material.present && m->material.mass_per_length > 0.0)
+        need(c, fs, found, at, path, "bulk_density",
+             "the skirt resistances of a loaded belt need it");
 }
 
 static const field safety_fields[] = {
@@ -1083,6 +1192,8 @@ static const field safety_fields[] = {
 FIELDSET(safety_fs, safety_fields, NULL);
 
 static const char *const standard_names[] = {"din22101", "iso5048", "cema", NULL};
+static const char *const secondary_names[] = {"C", "individual", NULL};
+static const char *const carcass_names[] = {"fabric", "steel_cord", NULL};
 static const field design_fields[] = {
     ENUM("standard", bd_design_def, standard, 0, standard_names, NULL),
     NONNEG("f", bd_design_def, f, 0),
@@ -1092,6 +1203,14 @@ static const field design_fields[] = {
     MAP("cema", bd_design_def, cema, 0, &cema_fs),
     MAP("safety_factor", bd_design_def, safety_factor, 0, &safety_fs),
     NUM("efficiency", bd_design_def, efficiency, GT, 0.0, 1.0),
+    ENUM("secondary", bd_design_def, secondary, 0, secondary_names, NULL),
+    POS("bulk_density", bd_design_def, bulk_density, 0),
+    NONNEG("loading_speed", bd_design_def, loading_speed, 0),
+    MAP("skirts", bd_design_def, skirts, 0, &skirts_fs),
+    MAP("cleaners", bd_design_def, cleaners, 0, &cleaners_fs),
+    POS("belt_thickness", bd_design_def, belt_thickness, 0),
+    ENUM("carcass", bd_design_def, carcass, 0, carcass_names, NULL),
+    FN("bearings", bearings_fn),
 };
 FIELDSET(design_fs, design_fields, design_post);
 

@@ -205,6 +205,9 @@ bd_design_def bd_design_default(void)
     d.cema.Kt = 1.0;
     d.cema.Ai = 0.0;
     d.cema.Kx_extra = -1.0;
+    d.secondary = BD_SECONDARY_C;
+    d.carcass = BD_CARCASS_FABRIC;
+    d.cleaners.pulley = -1;
     return d;
 }
 
@@ -242,6 +245,7 @@ void bd_model_def_free(bd_model_def *m)
     free(m->pulleys);
     free(m->idler_sets);
     free(m->simulation.probes);
+    free(m->design.bearings);
     bd_model_def_init(m);
 }
 

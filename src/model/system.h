@@ -88,7 +88,15 @@ typedef struct bd_pulley_body {
                                the wrap coupling solves the pulley with
                                bd_pulley_solve_inertia, and the drive applies
                                drive_torque − torque_damping·Δt·α */
-    double bearing_torque;  /* N·m bearing torque this step */
+    double bearing_torque;  /* N·m bearing torque this step (with its own
+                               resistance below) */
+    /* its own resistance, design.secondary: individual (wrap, bearings,
+     * cleaners; sim/pulley_resistance.c): a force on its surface against
+     * its motion, fading linearly to 0 below res_fade */
+    int resists;
+    bd_tracker res_in, res_out;  /* belt points arriving at / leaving the wrap */
+    double res_force;       /* N, this step, from the tensions there */
+    double res_fade;        /* m/s */
     /* step, wrap coupling: what the pulley feels from the belt */
     double alpha;           /* rad/s² angular acceleration */
     double f_axis;          /* N belt force on the pulley along its axis */
@@ -217,6 +225,8 @@ typedef struct bd_model {
     double *idler_spacing;            /* [def->idler_set_count] m, actual spacing */
     /* material */
     double material_mpl;              /* kg/m on the loaded belt */
+    int feed_individual;              /* the feed point's resistances one by
+                                         one (belt/common.c bd_feed_force) */
     int discharge_pulley;
     /* time step and what limits it */
     double dt, dt_limit;              /* s */

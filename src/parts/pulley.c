@@ -46,6 +46,13 @@ double bd_pulley_external_torque(bd_sim *sim, bd_pulley_body *p)
     p->drive_torque = T_drive;
     p->torque_damping = K;
     p->bearing_torque = -p->m->bearing_damping * p->omega;
+    if (p->resists) {
+        /* its own resistance against the surface's motion (a Coulomb force
+         * faded near rest, as the idlers' rolling resistance) */
+        double R = p->m->radius, sat = p->omega * R / p->res_fade;
+        sat = sat > 1.0 ? 1.0 : (sat < -1.0 ? -1.0 : sat);
+        p->bearing_torque -= p->res_force * R * sat;
+    }
     return T_drive + p->bearing_torque;
 }
 

@@ -123,6 +123,7 @@ static int create(const bd_model_def *def, bd_sim *volatile *out, bd_diag *diag)
             bd_monitor_init(sim, &sim->pulleys[i]);
     if (bd_time_step_choose(sim, diag))
         return 1;
+    bd_pulley_resistance_init(sim);
     bd_bounds_prepare(sim->own);
     bd_cost_update(sim);
     bd_parts_create(sim);

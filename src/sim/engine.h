@@ -17,6 +17,12 @@ int bd_sim_start_at_rest(bd_sim *sim);
  * (build) or starts again after stabilizing (step.c) */
 void bd_run_records_clear(bd_sim *sim);   /* 1: the forces failed (fail_msg) */
 
+/* pulley_resistance.c: each pulley's own resistance (design.secondary:
+ * individual): its tension points placed (build, after the time step), and
+ * its force from the tensions there (every step, after the belt's forces) */
+void bd_pulley_resistance_init(bd_sim *sim);
+void bd_pulley_resistance_update(bd_sim *sim);
+
 /* bounds.c: the parts' physical bounds (build: bd_bounds_prepare sets
  * model->speed_bound and travel_bound; step: 0, or 1 with the message in
  * sim->fail_msg) */

@@ -78,6 +78,7 @@ int bd_step_forces(bd_sim *sim)
     belt->forces(sim);
     if (check_elements(sim))
         return 1;
+    bd_pulley_resistance_update(sim);
     for (int i = 0; i < sim->model->pulley_count; i++) {
         bd_pulley_body *p = &sim->pulleys[i];
         belt->wrap(sim, p, bd_pulley_external_torque(sim, p));

@@ -76,12 +76,13 @@ double bd_std_total(const bd_std_ctx *c)
 {
     double sum = 0.0;
     for (int k = 0; k < c->nsec; k++)
-        sum += c->sec[k].main + c->sec[k].secondary + c->sec[k].slope;
+        sum += c->sec[k].main + c->sec[k].secondary + c->sec[k].slope + c->sec[k].pulley_res
+             + c->sec[k].local_secondary + c->sec[k].local_special;
     return sum;
 }
 
 /* first and last section of span i */
-static int first_sec(const bd_std_ctx *c, int span)
+int bd_std_first_sec(const bd_std_ctx *c, int span)
 {
     for (int k = 0; k < c->nsec; k++)
         if (c->sec[k].span == span)
@@ -89,7 +90,7 @@ static int first_sec(const bd_std_ctx *c, int span)
     return 0;
 }
 
-static int last_sec(const bd_std_ctx *c, int span)
+int bd_std_last_sec(const bd_std_ctx *c, int span)
 {
     for (int k = c->nsec - 1; k >= 0; k--)
         if (c->sec[k].span == span)
@@ -98,14 +99,14 @@ static int last_sec(const bd_std_ctx *c, int span)
 }
 
 /* tension arriving at and leaving pulley p */
-static double T_arrive(const bd_std_ctx *c, int p)
+double bd_std_T_arrive(const bd_std_ctx *c, int p)
 {
-    return c->sec[last_sec(c, (p + c->n - 1) % c->n)].T1;
+    return c->sec[bd_std_last_sec(c, (p + c->n - 1) % c->n)].T1;
 }
 
-static double T_leave(const bd_std_ctx *c, int p)
+double bd_std_T_leave(const bd_std_ctx *c, int p)
 {
-    return c->sec[first_sec(c, p)].T0;
+    return c->sec[bd_std_first_sec(c, p)].T0;
 }
 
 void bd_std_propagate(bd_std_ctx *c)
@@ -122,8 +123,9 @@ void bd_std_propagate(bd_std_ctx *c)
         bd_std_section *s = &c->sec[k];
         if (k > 0 && c->sec[k - 1].span != s->span && c->is_drive[s->span])
             T -= Te_drive;
+        T += s->pulley_res;
         s->T0 = T;
-        T += s->main + s->secondary + s->slope;
+        T += s->main + s->secondary + s->slope + s->local_secondary + s->local_special;
         s->T1 = T;
     }
 
@@ -137,7 +139,7 @@ void bd_std_propagate(bd_std_ctx *c)
         const double *uout = bd_path_span(&c->path, p)->dir;
         double ci = uin[0] * tu->axis[0] + uin[1] * tu->axis[1];
         double co = uout[0] * tu->axis[0] + uout[1] * tu->axis[1];
-        double rin = T_arrive(c, p), rout = T_leave(c, p);
+        double rin = bd_std_T_arrive(c, p), rout = bd_std_T_leave(c, p);
         if (tu->type == BD_TAKEUP_FIXED) {
             /* fixed takeup: the belt's installed tension at that pulley (on
              * its slack side if it is also a drive) */
@@ -158,7 +160,7 @@ void bd_std_propagate(bd_std_ctx *c)
     if (!level_set) {
         /* no takeup: belt.initial_tension at the drive's slack side */
         int d = c->drive;
-        double rel = Te >= 0.0 ? T_leave(c, d) : T_arrive(c, d);
+        double rel = Te >= 0.0 ? bd_std_T_leave(c, d) : bd_std_T_arrive(c, d);
         offset = m->belt.initial_tension - rel;
     }
     for (int k = 0; k < c->nsec; k++) {
@@ -244,6 +246,7 @@ static int build_sections(bd_std_ctx *c)
 
     /* loaded spans: from the feed span to the discharge pulley */
     int feed = -1;
+    c->feed_span = -1;
     double feed_at = 0.0;
     if (m->material.present && m->material.mass_per_length > 0.0) {
         feed = m->material.feed_span;
@@ -265,6 +268,7 @@ static int build_sections(bd_std_ctx *c)
             feed_at = 0.0;
         if (feed_at > 1.0)
             feed_at = 1.0;
+        c->feed_span = feed;
         int dis = m->material.discharge;
         if (dis < 0 || dis >= n)
             dis = (feed + 1) % n;
@@ -364,7 +368,7 @@ static void checks(bd_std_ctx *c)
             continue;
         double mu = m->pulleys[p].friction.mu_dynamic;
         double phi = bd_path_wrap_angle(&c->path, p);
-        double arr = T_arrive(c, p), lea = T_leave(c, p);
+        double arr = bd_std_T_arrive(c, p), lea = bd_std_T_leave(c, p);
         double T2 = Te >= 0.0 ? lea : arr;   /* slack side */
         double need = mu * phi > 0.0 ? fabs(Te_drive) / (exp(mu * phi) - 1.0)
                                      : (Te_drive != 0.0 ? INFINITY : 0.0);
@@ -448,6 +452,18 @@ static void checks(bd_std_ctx *c)
 
 /* ---- the calculation --------------------------------------------------- */
 
+/* everything the calculation holds freed once its path is built, and
+ * the failure said */
+static int out_of_memory(bd_std_ctx *c, bd_diag *diag, bd_mark at)
+{
+    free(c->is_drive);
+    free(c->sec);
+    bd_path_free(&c->path);
+    bd_static_free(c->out);
+    bd_diag_error(diag, c->m->source, at, "static: out of memory");
+    return 2;
+}
+
 int bd_static_compute(const bd_model_def *m, bd_static_result *out, bd_diag *diag)
 {
     memset(out, 0, sizeof *out);
@@ -530,14 +546,8 @@ int bd_static_compute(const bd_model_def *m, bd_static_result *out, bd_diag *dia
         bd_static_free(out);
         return 2;
     }
-    if (build_sections(&c) != 0) {
-        free(c.is_drive);
-        free(c.sec);
-        bd_path_free(&c.path);
-        bd_static_free(out);
-        bd_diag_error(diag, m->source, at, "static: out of memory");
-        return 2;
-    }
+    if (build_sections(&c) != 0)
+        return out_of_memory(&c, diag, at);
 
     /* takeup force at t = 0 */
     if (c.takeup >= 0) {
@@ -581,7 +591,9 @@ int bd_static_compute(const bd_model_def *m, bd_static_result *out, bd_diag *dia
         if (Lc <= 0.0)
             Lc = Lmax;
         out->carry_length_m = Lc;
-        if (c.design.C > 0.0) {
+        if (c.design.secondary == BD_SECONDARY_INDIVIDUAL) {
+            out->C = 0.0; /* not used: the resistances one by one */
+        } else if (c.design.C > 0.0) {
             out->C = c.design.C;
         } else {
             out->C = bd_din22101_C(Lc);
@@ -591,7 +603,11 @@ int bd_static_compute(const bd_model_def *m, bd_static_result *out, bd_diag *dia
                                  "resistances should be computed one by one", Lc);
         }
         bd_din22101_resistances(&c);
-        bd_std_propagate(&c);
+        if (c.design.secondary != BD_SECONDARY_INDIVIDUAL) {
+            bd_std_propagate(&c);
+        } else if (bd_individual_resistances(&c) != 0) {
+            return out_of_memory(&c, diag, at);
+        }
     }
 
     /* results per span and in total */
@@ -601,20 +617,22 @@ int bd_static_compute(const bd_model_def *m, bd_static_result *out, bd_diag *dia
     for (int k = 0; k < c.nsec; k++) {
         const bd_std_section *s = &c.sec[k];
         bd_static_span *os = &out->spans[s->span];
-        if (k == first_sec(&c, s->span))
+        if (k == bd_std_first_sec(&c, s->span))
             os->T_start_N = s->T0;
         os->T_end_N = s->T1;
         os->main_N += s->main;
-        os->secondary_N += s->secondary;
+        os->secondary_N += s->secondary + s->pulley_res + s->local_secondary;
+        os->special_N += s->local_special;
         os->slope_N += s->slope;
         if (s->mL > 0.0)
             os->loaded_length_m += s->length;
-        if (s->carry || k == last_sec(&c, s->span)) {
+        if (s->carry || k == bd_std_last_sec(&c, s->span)) {
             os->cema_Kx = s->Kx;
             os->cema_Ky = s->Ky;
         }
         out->main_N += s->main;
-        out->secondary_N += s->secondary;
+        out->secondary_N += s->secondary + s->pulley_res + s->local_secondary;
+        out->special_N += s->local_special;
         out->slope_N += s->slope;
         slope_abs += fabs(s->slope);
         out->T_max_N = fmax(out->T_max_N, fmax(s->T0, s->T1));
@@ -624,8 +642,9 @@ int bd_static_compute(const bd_model_def *m, bd_static_result *out, bd_diag *dia
      * leave the rounding of their sum: below 1e-12 of the terms it is 0 */
     if (fabs(out->slope_N) <= 1e-12 * slope_abs)
         out->slope_N = 0.0;
-    out->total_N = out->main_N + out->secondary_N + out->slope_N;
-    /* eq 2.5 (F_S = 0) / eq 2.1: Te = F_H + F_N + F_St */
+    out->total_N = out->main_N + out->secondary_N + out->special_N + out->slope_N;
+    /* eq 2.1 / ISO 5048 eq (1): Te = F_U = F_H + F_N + F_S + F_St (F_S = 0
+     * unless the resistances are taken one by one) */
     out->effective_tension_N = out->total_N;
     out->regenerative = out->total_N < 0.0;
     out->speed_mps = c.speed;
@@ -637,7 +656,7 @@ int bd_static_compute(const bd_model_def *m, bd_static_result *out, bd_diag *dia
     out->drive_pulley = c.drive;
     out->drive_count = c.drive_count;
     {
-        double arr = T_arrive(&c, c.drive), lea = T_leave(&c, c.drive);
+        double arr = bd_std_T_arrive(&c, c.drive), lea = bd_std_T_leave(&c, c.drive);
         /* T1 tight side, T2 slack side; regenerative: the belt leaving the
          * braking drive is the tight side */
         out->T1_N = out->regenerative ? lea : arr;
@@ -666,6 +685,7 @@ void bd_static_free(bd_static_result *r)
     free(r->warnings);
     free(r->notes);
     free(r->spans);
+    free(r->pulleys);
     memset(r, 0, sizeof *r);
 }
 
@@ -679,6 +699,9 @@ void bd_static_print_table(const bd_static_result *r, const bd_model_def *m, FIL
     if (r->standard == BD_STANDARD_CEMA)
         fprintf(f, "Kt = %.3g, Ai = %.3g N, C1 = %.2f (%d iterations)\n", r->cema_Kt,
                 r->cema_Ai_N, r->cema_C1, r->cema_iterations);
+    else if (r->individual)
+        fprintf(f, "f = %.4g, secondary resistances one by one (ISO 5048 5.2; conveyor "
+                   "length %.1f m)\n", r->f, r->carry_length_m);
     else
         fprintf(f, "f = %.4g, C = %.4g (conveyor length %.1f m)\n", r->f, r->C,
                 r->carry_length_m);
@@ -688,6 +711,21 @@ void bd_static_print_table(const bd_static_result *r, const bd_model_def *m, FIL
 
     fprintf(f, "%-34s %14.1f\n", "main resistance (N)", r->main_N);
     fprintf(f, "%-34s %14.1f\n", "secondary resistance (N)", r->secondary_N);
+    if (r->individual) {
+        /* the parts of F_N, then F_S and its parts (indented) */
+        const struct {
+            const char *label;
+            double value;
+        } parts[] = {{"  loading point inertia F_bA (N)", r->loading_inertia_N},
+                     {"  skirts, acceleration zone F_f (N)", r->loading_skirts_N},
+                     {"  wrap over pulleys (N)", r->wrap_N},
+                     {"  pulley bearings (N)", r->bearings_N},
+                     {"special resistance (N)", r->special_N},
+                     {"  skirts, whole length F_gl (N)", r->skirts_N},
+                     {"  belt cleaners F_r (N)", r->cleaners_N}};
+        for (size_t i = 0; i < sizeof parts / sizeof parts[0]; i++)
+            fprintf(f, "%-34s %14.1f\n", parts[i].label, parts[i].value);
+    }
     fprintf(f, "%-34s %14.1f\n", "slope resistance (N)", r->slope_N);
     fprintf(f, "%-34s %14.1f\n", "total resistance (N)", r->total_N);
     fprintf(f, "%-34s %14.1f%s\n", "effective tension Te (N)", r->effective_tension_N,
@@ -712,6 +750,18 @@ void bd_static_print_table(const bd_static_result *r, const bd_model_def *m, FIL
                 m->pulleys[s->pulley].name, m->pulleys[s->to].name, s->length_m, s->lift_m,
                 s->slope_rad * 180.0 / BD_PI, s->loaded ? "yes" : (s->carry ? "carry" : "no"),
                 s->main_N, s->secondary_N, s->slope_N, s->T_start_N, s->T_end_N);
+    }
+    if (r->individual) {
+        fprintf(f, "\n%-12s %12s %12s %12s %12s %12s\n", "pulley", "T in (N)", "T out (N)",
+                "wrap (N)", "bearing (N)", "cleaners (N)");
+        for (int i = 0; i < r->span_count; i++) {
+            const bd_static_pulley *p = &r->pulleys[i];
+            fprintf(f, "%-12s %12.1f %12.1f %12.1f %12.1f %12.1f\n", m->pulleys[i].name,
+                    p->T_in_N, p->T_out_N, p->wrap_N, p->bearing_N, p->cleaners_N);
+        }
+        if (r->acceleration_length_m > 0.0)
+            fprintf(f, "acceleration length at the feed point l_b = %.3f m\n",
+                    r->acceleration_length_m);
     }
     fprintf(f, "\nwarnings: %s\n", r->warning_count ? "" : "none");
     for (int i = 0; i < r->warning_count; i++)
@@ -744,6 +794,16 @@ char *bd_static_to_json(const bd_static_result *r, const bd_model_def *m)
     bd_json_add_number(res, "secondary", r->secondary_N);
     bd_json_add_number(res, "slope", r->slope_N);
     bd_json_add_number(res, "total", r->total_N);
+    if (r->individual) {
+        /* cli.md: the resistances one by one; secondary = the first four */
+        bd_json_add_number(res, "loading_inertia", r->loading_inertia_N);
+        bd_json_add_number(res, "loading_skirts", r->loading_skirts_N);
+        bd_json_add_number(res, "wrap", r->wrap_N);
+        bd_json_add_number(res, "bearings", r->bearings_N);
+        bd_json_add_number(res, "skirts", r->skirts_N);
+        bd_json_add_number(res, "cleaners", r->cleaners_N);
+        bd_json_add_number(res, "special", r->special_N);
+    }
     bd_json_add_number(o, "effective_tension_N", r->effective_tension_N);
     bd_json_add_number(o, "power_kW", r->power_kW);
     bd_json_add_number(o, "motor_power_kW", r->motor_power_kW);
@@ -769,6 +829,8 @@ char *bd_static_to_json(const bd_static_result *r, const bd_model_def *m)
         bd_json_add_number(js, "main_N", s->main_N);
         bd_json_add_number(js, "secondary_N", s->secondary_N);
         bd_json_add_number(js, "slope_N", s->slope_N);
+        if (r->individual)
+            bd_json_add_number(js, "special_N", s->special_N);
         if (r->standard == BD_STANDARD_CEMA) {
             bd_json_add_number(js, "Kx_N_per_m", s->cema_Kx);
             bd_json_add_number(js, "Ky", s->cema_Ky);
@@ -800,6 +862,24 @@ char *bd_static_to_json(const bd_static_result *r, const bd_model_def *m)
         cJSON_AddNumberToObject(ce, "iterations", r->cema_iterations);
     } else {
         bd_json_add_number(o, "f", r->f);
+        if (r->individual) {
+            cJSON_AddStringToObject(o, "secondary", "individual");
+            bd_json_add_number(o, "acceleration_length_m", r->acceleration_length_m);
+            cJSON *ps = cJSON_AddArrayToObject(o, "pulleys");
+            for (int i = 0; i < r->span_count; i++) {
+                const bd_static_pulley *p = &r->pulleys[i];
+                cJSON *jp = cJSON_CreateObject();
+                cJSON_AddStringToObject(jp, "name", m->pulleys[i].name);
+                bd_json_add_number(jp, "T_in_N", p->T_in_N);
+                bd_json_add_number(jp, "T_out_N", p->T_out_N);
+                bd_json_add_number(jp, "wrap_N", p->wrap_N);
+                bd_json_add_number(jp, "bearing_N", p->bearing_N);
+                bd_json_add_number(jp, "cleaners_N", p->cleaners_N);
+                cJSON_AddItemToArray(ps, jp);
+            }
+        } else {
+            cJSON_AddStringToObject(o, "secondary", "C");
+        }
         bd_json_add_number(o, "C", r->C);
         bd_json_add_number(o, "conveyor_length_m", r->carry_length_m);
     }

@@ -19,6 +19,10 @@ typedef struct bd_std_section {
     double roll_radius;/* m, radius of that idler set's rolls */
     int carry;         /* carrying run */
     double main, secondary, slope; /* N, resistances (filled per standard) */
+    /* secondary: individual (individual.c): the resistance of the pulley
+     * the section leaves (wrap, bearings; in T0), and what acts on the
+     * section from its start on (feed point, cleaners; in its rise) */
+    double pulley_res, local_secondary, local_special;
     double Kx, Ky;     /* CEMA factors used (0 for DIN) */
     double T0, T1;     /* N, tension at its start and end */
     double T0_prev, T1_prev; /* N, previous iteration (CEMA) */
@@ -39,6 +43,7 @@ typedef struct bd_std_ctx {
     int drive;         /* first drive pulley */
     int takeup;        /* first takeup pulley, -1 none */
     double takeup_force;  /* N */
+    int feed_span;     /* span holding the feed point, -1 without material */
     bd_static_result *out;
 } bd_std_ctx;
 
@@ -54,8 +59,15 @@ void bd_std_note(bd_static_result *r, const char *fmt, ...)
 #endif
     ;
 
-/* total resistance of the loop (Σ main + secondary + slope), N */
+/* total resistance of the loop (Σ main + secondary + slope and the
+ * individual resistances), N */
 double bd_std_total(const bd_std_ctx *c);
+/* first and last section of a span; tension arriving at and leaving
+ * pulley p */
+int bd_std_first_sec(const bd_std_ctx *c, int span);
+int bd_std_last_sec(const bd_std_ctx *c, int span);
+double bd_std_T_arrive(const bd_std_ctx *c, int p);
+double bd_std_T_leave(const bd_std_ctx *c, int p);
 /* tensions T0/T1 of every section from the resistances and the level rule
  * (takeup, else initial_tension at the drive's slack side) */
 void bd_std_propagate(bd_std_ctx *c);
@@ -63,6 +75,11 @@ void bd_std_propagate(bd_std_ctx *c);
 /* per-standard resistances; cema also iterates with bd_std_propagate */
 void bd_din22101_resistances(bd_std_ctx *c);
 int bd_cema_resistances(bd_std_ctx *c);
+/* design.secondary: individual, after the DIN resistances: the secondary
+ * and special resistances one by one in place of (C − 1)·F_H, iterated
+ * with bd_std_propagate (wrap and bearings depend on the tensions); 1 when
+ * out of memory */
+int bd_individual_resistances(bd_std_ctx *c);
 /* CEMA Table 2.1 (seed 001): Ky by eq 2.3 for average tension T (N), idler
  * spacing S (m) and Wb + Wm (kg/m); *clamped set when (T, S) left the table */
 double bd_cema_ky(double T_avg, double spacing, double W_kg_per_m, int *clamped);

@@ -129,13 +129,15 @@ void bd_axial_forces(bd_sim *sim)
     element_pass(sim);
     node_pass(sim);
     bd_tension_extremes(sim);
-    /* the feed point accelerates the material landing on it to belt speed */
+    /* the feed point accelerates the material landing on it to belt speed
+     * (and its skirts rub, belt.h bd_feed_force) */
     int fd = bd_axial_model_of(sim)->feed_node;
-    const double *v = sim->vx;
-    if (fd >= 0 && sim->has_feed && v[fd] > 0.0) {
-        double F = -sim->model->material_mpl * v[fd] * v[fd];
-        sim->fx[fd] += F;
-        sim->fnx[fd] += F;
+    if (fd >= 0) {
+        double F = bd_feed_force(sim, sim->vx[fd], sim->mass[fd], 1, sim->material[fd] > 0.0);
+        if (F != 0.0) {
+            sim->fx[fd] += F;
+            sim->fnx[fd] += F;
+        }
     }
 }
 

@@ -109,6 +109,27 @@ static void bending_forces(bd_sim *sim)
     }
 }
 
+/* design.secondary: individual: the skirts at the feed point rub the belt
+ * (belt.h bd_feed_force), shared by the two nodes of the element under it
+ * as the landing material is (material.c) */
+static void feed_skirts(bd_sim *sim)
+{
+    const bd_tracker *fd = &sim->feed;
+    int e = fd->element, j = e + 1 == sim->model->n ? 0 : e + 1;
+    double v = bd_tracker_speed(sim, fd);
+    int loaded = sim->material[e] > 0.0 || sim->material[j] > 0.0;
+    double F = bd_feed_force(sim, v, sim->mass[e] + sim->mass[j], 0, loaded);
+    double share[2] = {1.0 - fd->gamma, fd->gamma};
+    int nodes[2] = {e, j};
+    for (int k = 0; k < 2; k++) {
+        double fx = F * share[k] * fd->dir[0], fy = F * share[k] * fd->dir[1];
+        sim->fx[nodes[k]] += fx;
+        sim->fy[nodes[k]] += fy;
+        sim->fnx[nodes[k]] += fx;
+        sim->fny[nodes[k]] += fy;
+    }
+}
+
 void bd_lumped_forces(bd_sim *sim)
 {
     element_pass(sim);
@@ -116,6 +137,8 @@ void bd_lumped_forces(bd_sim *sim)
     bd_tension_extremes(sim);
     if (bd_lumped_model_of(sim)->k_bend > 0.0)
         bending_forces(sim);
+    if (sim->model->feed_individual)
+        feed_skirts(sim);
 }
 
 /* nodes: velocities to t + Δt/2, positions to t + Δt (seed 001 eqs

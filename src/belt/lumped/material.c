@@ -1,9 +1,11 @@
 /* Bulk material on the lumped belt (model-format.md `material`). */
 #include "belt/lumped/lumped.h"
 
-/* material: lands at the feed point with no velocity along the belt (the
- * belt's momentum is shared: v' = m·v/(m + Δm)), leaves at the discharge
- * pulley with the belt's velocity (model-format.md `material`) */
+/* material: lands at the feed point with no velocity along the belt, or
+ * with design.loading_speed v0 along it (secondary: individual; no faster
+ * than the belt) — the momentum is shared, v' = (m·v + Δm·v0)/(m + Δm) —
+ * and leaves at the discharge pulley with the belt's velocity
+ * (model-format.md `material`) */
 static void material_transport(bd_sim *sim)
 {
     bd_tracker *fd = &sim->feed;
@@ -14,6 +16,9 @@ static void material_transport(bd_sim *sim)
         double v = bd_tracker_speed(sim, fd);
         if (v > 0.0) {
             double dm = sim->model->material_mpl * v * sim->model->dt;
+            double v0 = sim->model->feed_individual ? sim->model->def->design.loading_speed : 0.0;
+            if (v0 > v)
+                v0 = v;
             int nodes[2] = {e, j};
             double share[2] = {1.0 - g, g};
             for (int k = 0; k < 2; k++) {
@@ -21,8 +26,18 @@ static void material_transport(bd_sim *sim)
                 double add = dm * share[k];
                 double m = sim->mass[i];
                 double ke = 0.5 * m * (sim->vx[i] * sim->vx[i] + sim->vy[i] * sim->vy[i]);
-                sim->vx[i] *= m / (m + add);
-                sim->vy[i] *= m / (m + add);
+                if (v0 > 0.0) {
+                    /* what the landing material brings, its kinetic energy
+                     * booked as input */
+                    double ke_in = 0.5 * add * v0 * v0;
+                    sim->vx[i] = (m * sim->vx[i] + add * v0 * fd->dir[0]) / (m + add);
+                    sim->vy[i] = (m * sim->vy[i] + add * v0 * fd->dir[1]) / (m + add);
+                    ke += ke_in;
+                    sim->energy.input += ke_in;
+                } else {
+                    sim->vx[i] *= m / (m + add);
+                    sim->vy[i] *= m / (m + add);
+                }
                 sim->mass[i] += add;
                 bd_node_mass_changed(sim, i);
                 sim->material[i] += add;

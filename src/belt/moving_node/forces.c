@@ -235,11 +235,10 @@ void bd_mn_forces(bd_sim *sim)
                 Fn += r;
             }
         }
-        if (i == mm->feed_node && sim->has_feed && vi > 0.0) {
-            /* the material landing is accelerated to belt speed: the
-             * momentum flux ṁ·v with ṁ = m'_L·v (derived here; the axial
-             * belt's feed force, physics.md §11) */
-            double f = -sim->model->material_mpl * vi * vi;
+        if (i == mm->feed_node) {
+            /* the material landing is accelerated to belt speed, the
+             * skirts rub (belt.h bd_feed_force; physics.md §11) */
+            double f = bd_feed_force(sim, vi, sim->mass[i], 1, sim->material[i] > 0.0);
             F += f;
             Fn += f;
         }

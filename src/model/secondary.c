@@ -1,0 +1,92 @@
+/* Which resistance acts where (model/secondary.h); the formulas and their
+ * clauses are in laws/secondary_resistance.c. */
+#include "model/secondary.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "laws/secondary_resistance.h"
+
+int bd_secondary_individual(const bd_model_def *m)
+{
+    return m->design.present && m->design.secondary == BD_SECONDARY_INDIVIDUAL;
+}
+
+int bd_secondary_cleaner_pulley(const bd_model_def *m)
+{
+    if (!bd_secondary_individual(m) || !m->design.cleaners.present)
+        return -1;
+    if (m->design.cleaners.pulley >= 0)
+        return m->design.cleaners.pulley;
+    if (m->material.present)
+        return m->material.discharge;
+    for (int p = 0; p < m->pulley_count; p++)
+        if (m->pulleys[p].has_drive)
+            return p;
+    return 0;
+}
+
+static const bd_bearing_def *bearing_of(const bd_model_def *m, int p)
+{
+    for (int k = 0; k < m->design.bearing_count; k++)
+        if (m->design.bearings[k].pulley == p)
+            return &m->design.bearings[k];
+    return NULL;
+}
+
+int bd_secondary_at_pulley(const bd_model_def *m, int p)
+{
+    if (!bd_secondary_individual(m))
+        return 0;
+    return !m->pulleys[p].has_drive || bearing_of(m, p) || bd_secondary_cleaner_pulley(m) == p;
+}
+
+void bd_secondary_pulley(const bd_model_def *m, int p, double T_in, double T_out,
+                         const double u_in[2], const double u_out[2],
+                         bd_pulley_resistance *out)
+{
+    memset(out, 0, sizeof *out);
+    if (!bd_secondary_individual(m))
+        return;
+    const bd_design_def *d = &m->design;
+    const bd_pulley_def *pd = &m->pulleys[p];
+    double D = 2.0 * pd->radius;
+    /* the wrap: on the pulleys that do not drive, as ISO 5048 counts it
+     * (a drive pulley's losses are in the drive's efficiency) */
+    if (!pd->has_drive) {
+        double thick = d->belt_thickness > 0.0 ? d->belt_thickness : m->belt.thickness;
+        double F = 0.5 * (fmax(T_in, 0.0) + fmax(T_out, 0.0));
+        out->wrap = bd_res_wrap(d->carcass == BD_CARCASS_STEEL_CORD, m->belt.width, F, thick, D);
+    }
+    const bd_bearing_def *b = bearing_of(m, p);
+    if (b) {
+        /* F_T: the belt pulls the pulley back along its arriving end and
+         * forward along its leaving end; its rotating parts weigh m·g */
+        double fx = fmax(T_out, 0.0) * u_out[0] - fmax(T_in, 0.0) * u_in[0];
+        double fy = fmax(T_out, 0.0) * u_out[1] - fmax(T_in, 0.0) * u_in[1] - b->mass * m->gravity;
+        out->bearing = bd_res_bearing(b->bore, D, hypot(fx, fy));
+    }
+    if (bd_secondary_cleaner_pulley(m) == p) {
+        const bd_cleaners_def *c = &d->cleaners;
+        out->cleaners = bd_res_cleaners(c->count, c->width, c->thickness, c->pressure, c->mu);
+    }
+}
+
+void bd_secondary_feed(const bd_model_def *m, double v, bd_feed_resistance *out)
+{
+    memset(out, 0, sizeof *out);
+    if (!bd_secondary_individual(m) || !m->material.present || v <= 0.0)
+        return;
+    const bd_design_def *d = &m->design;
+    double mL = m->material.mass_per_length, v0 = d->loading_speed, g = m->gravity;
+    out->loading_inertia = bd_res_loading_inertia(mL, v, v0);
+    if (!d->skirts.present)
+        return;
+    const bd_skirts_def *s = &d->skirts;
+    out->acceleration_length = bd_res_acceleration_length(v, v0, g, s->mu_belt_material);
+    out->loading_skirts = bd_res_skirt_friction(s->mu_material, mL, v, 0.5 * (v + v0),
+                                                d->bulk_density, g, out->acceleration_length,
+                                                s->width);
+    out->skirts = bd_res_skirt_friction(s->mu_material, mL, v, v, d->bulk_density, g, s->length,
+                                        s->width);
+}

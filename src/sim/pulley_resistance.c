@@ -1,0 +1,70 @@
+/* A pulley's own resistance in a run (design.secondary: individual): the
+ * same wrap, bearing and cleaner resistances as the static calculation
+ * (model/secondary.c, ISO 5048 Table 3), from the belt tensions just
+ * before and after its wrap at each step, acting on its surface against
+ * its motion (parts/pulley.c adds it to the bearing torque, so its work is
+ * booked as dissipated). O(pulleys) per step. */
+#include "sim/engine.h"
+
+#include <math.h>
+
+#include "laws/rolling.h"
+#include "model/secondary.h"
+
+/* m before / after the wrap where the tensions are read, at most 1/4 span
+ * (the drive monitor's points, sensors/monitor.c) */
+#define RESISTANCE_OFFSET 0.5
+
+static double offset_on(const bd_path_segment *span)
+{
+    double d = 0.25 * span->length;
+    return d < RESISTANCE_OFFSET ? d : RESISTANCE_OFFSET;
+}
+
+void bd_pulley_resistance_init(bd_sim *sim)
+{
+    const bd_model_def *def = sim->model->def;
+    const int n = sim->model->pulley_count;
+    for (int i = 0; i < n; i++) {
+        bd_pulley_body *p = &sim->pulleys[i];
+        p->resists = bd_secondary_at_pulley(def, i);
+        if (!p->resists)
+            continue;
+        int before = (i + n - 1) % n;
+        const bd_path_segment *arc = bd_path_arc(&sim->model->path, i);
+        double s_in = arc->s0 - offset_on(bd_path_span(&sim->model->path, before));
+        double s_out = arc->s0 + arc->length + offset_on(bd_path_span(&sim->model->path, i));
+        sim->model->belt->point_init(sim, &p->res_in, s_in);
+        sim->model->belt->point_init(sim, &p->res_out, s_out);
+        p->res_force = 0.0;
+        p->res_fade = BD_ROLLING_SPEED;
+    }
+}
+
+void bd_pulley_resistance_update(bd_sim *sim)
+{
+    const bd_belt_ops *belt = sim->model->belt;
+    const bd_model_def *def = sim->model->def;
+    const int n = sim->model->pulley_count;
+    for (int i = 0; i < n; i++) {
+        bd_pulley_body *p = &sim->pulleys[i];
+        if (!p->resists)
+            continue;
+        bd_belt_sample in, out;
+        belt->point_update(sim, &p->res_in);
+        belt->point_update(sim, &p->res_out);
+        belt->sample(sim, &p->res_in, &in);
+        belt->sample(sim, &p->res_out, &out);
+        const double *u_in = bd_path_span(&sim->model->path, (i + n - 1) % n)->dir1;
+        const double *u_out = bd_path_span(&sim->model->path, i)->dir;
+        bd_pulley_resistance r;
+        bd_secondary_pulley(def, i, in.tension, out.tension, u_in, u_out, &r);
+        p->res_force = r.wrap + r.bearing + r.cleaners;
+        /* faded below the rolling resistance's speed, and no steeper than
+         * a quarter of what the explicit step bears on the pulley's own
+         * inertia: c = F·R²/fade, c·Δt/J ≤ 1/4 */
+        double R = p->m->radius;
+        p->res_fade = fmax(BD_ROLLING_SPEED,
+                           4.0 * p->res_force * R * R * sim->model->dt / p->m->inertia);
+    }
+}

@@ -1,0 +1,108 @@
+/* design.secondary: individual: the secondary resistances one by one in
+ * place of DIN 22101's (C − 1)·F_H (ISO 5048:1989 §5.2 and Table 3,
+ * DIN 22101 §5.2). Where each acts (model/secondary.c):
+ *   - each pulley's wrap and bearing resistance at the pulley: the belt
+ *     leaves it with T_out = T_in + F (in the next section's T0);
+ *   - F_bA, F_f and F_gl from the feed point on, cleaners from their
+ *     pulley on (in the rise of the section starting there).
+ * Wrap and bearings depend on the tensions, which depend on them: a fixed
+ * point, reached to 1e-9 of Te in a few passes (their tension terms are
+ * ~0.1–0.2 % of T). */
+#include "standards/standards_internal.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+#include "model/secondary.h"
+
+#define MAX_PASSES 50
+
+/* the section where the material lands: the first loaded one from the
+ * feed span on */
+static int feed_section(const bd_std_ctx *c)
+{
+    for (int k = 0; k < c->nsec; k++)
+        if (c->sec[k].span == c->feed_span && c->sec[k].mL > 0.0)
+            return k;
+    return bd_std_first_sec(c, (c->feed_span + 1) % c->n);
+}
+
+int bd_individual_resistances(bd_std_ctx *c)
+{
+    const bd_model_def *m = c->m;
+    bd_static_result *r = c->out;
+    r->individual = 1;
+    r->pulleys = calloc((size_t)c->n, sizeof *r->pulleys);
+    if (!r->pulleys)
+        return 1;
+    for (int k = 0; k < c->nsec; k++)
+        c->sec[k].secondary = 0.0;
+
+    /* the feed point (at the design speed) */
+    if (c->feed_span >= 0) {
+        bd_feed_resistance fr;
+        bd_secondary_feed(m, c->speed, &fr);
+        bd_std_section *s = &c->sec[feed_section(c)];
+        s->local_secondary += fr.loading_inertia + fr.loading_skirts;
+        s->local_special += fr.skirts;
+        r->loading_inertia_N = fr.loading_inertia;
+        r->loading_skirts_N = fr.loading_skirts;
+        r->skirts_N = fr.skirts;
+        r->acceleration_length_m = fr.acceleration_length;
+        if (m->design.loading_speed > c->speed && c->speed > 0.0)
+            bd_std_warn(r, "design.loading_speed %.3g m/s is above the belt speed %.3g m/s: the "
+                           "material lands faster than the belt and pushes it (F_bA < 0)",
+                        m->design.loading_speed, c->speed);
+    } else if (m->design.skirts.present) {
+        bd_std_note(r, "design.skirts: the model has no material, so the skirts take nothing "
+                       "(ISO 5048's skirt friction is that of the material)");
+    }
+
+    /* the cleaners scrape the belt leaving their pulley: a constant force */
+    int cp = bd_secondary_cleaner_pulley(m);
+    if (cp >= 0) {
+        bd_pulley_resistance pr;
+        static const double none[2] = {0.0, 0.0};
+        bd_secondary_pulley(m, cp, 0.0, 0.0, none, none, &pr);
+        c->sec[bd_std_first_sec(c, cp)].local_special += pr.cleaners;
+    }
+
+    /* the pulleys' wrap and bearings, to a fixed point with the tensions */
+    double change = INFINITY;
+    int pass = 0;
+    bd_std_propagate(c);
+    while (change > 1e-9 * (fabs(bd_std_total(c)) + 1.0) && pass < MAX_PASSES) {
+        change = 0.0;
+        for (int p = 0; p < c->n; p++) {
+            if (!bd_secondary_at_pulley(m, p))
+                continue;
+            const double *u_in = bd_path_span(&c->path, (p + c->n - 1) % c->n)->dir1;
+            const double *u_out = bd_path_span(&c->path, p)->dir;
+            bd_pulley_resistance pr;
+            double T_in = bd_std_T_arrive(c, p), T_out = bd_std_T_leave(c, p);
+            bd_secondary_pulley(m, p, T_in, T_out, u_in, u_out, &pr);
+            bd_std_section *s = &c->sec[bd_std_first_sec(c, p)];
+            change = fmax(change, fabs(pr.wrap + pr.bearing - s->pulley_res));
+            s->pulley_res = pr.wrap + pr.bearing;
+            r->pulleys[p].wrap_N = pr.wrap;
+            r->pulleys[p].bearing_N = pr.bearing;
+            r->pulleys[p].cleaners_N = pr.cleaners;
+        }
+        bd_std_propagate(c);
+        pass++;
+    }
+    r->individual_iterations = pass;
+    if (change > 1e-9 * (fabs(bd_std_total(c)) + 1.0))
+        bd_std_warn(r, "secondary: individual: the pulleys' resistances and the tensions did "
+                       "not settle in %d passes (last change %.3g N)", MAX_PASSES, change);
+
+    r->wrap_N = r->bearings_N = r->cleaners_N = 0.0;
+    for (int p = 0; p < c->n; p++) {
+        r->pulleys[p].T_in_N = bd_std_T_arrive(c, p);
+        r->pulleys[p].T_out_N = bd_std_T_leave(c, p);
+        r->wrap_N += r->pulleys[p].wrap_N;
+        r->bearings_N += r->pulleys[p].bearing_N;
+        r->cleaners_N += r->pulleys[p].cleaners_N;
+    }
+    return 0;
+}
