@@ -78,6 +78,7 @@ static int usage(FILE *f)
             "       beltdyn study MODEL.yaml --sample N --range KEY=LO:HI [--range ...]\n"
             "                     [--seed S] [options]\n"
             "                     [--best [max:]COLUMN [--where COLUMN=VALUE ...]]\n"
+            "       beltdyn cases MODEL.yaml [-o DIR] [-j N] [--resume] [--force] [--quiet]\n"
             "\n"
             "  check   read and validate a model; print what was derived\n"
             "  static  design-standard tensions (DIN 22101, ISO 5048, CEMA)\n"
@@ -106,7 +107,12 @@ static int usage(FILE *f)
             "          --force: write into a non-empty DIR that holds no study.\n"
             "          --best COLUMN: the case with the lowest COLUMN (max:COLUMN the\n"
             "          highest) among those that meet every --where COLUMN=VALUE\n"
-            "          (also !=, <, <=, >, >=)\n");
+            "          (also !=, <, <=, >, >=)\n"
+            "  cases   the standard load cases, each a run in DIR/CASE/ (default ./cases):\n"
+            "          empty_start, loaded_start, loaded_coast_stop (power failure),\n"
+            "          loaded_brake_stop, partial_load_start (the worst partial loading);\n"
+            "          the table in DIR/cases.csv and cases.json, each case's report and\n"
+            "          DIR/report.html comparing them (docs/studies.md)\n");
     return 2;
 }
 
@@ -353,11 +359,36 @@ static void show_study_progress(const bd_study_progress *p, void *ctx)
     progress_open = 1;
 }
 
-static int cmd_study(int argc, char **argv)
+/* each load case's report (the completed ones), then DIR/report.html
+ * comparing them; a report that cannot be written is said, the run's
+ * status stands */
+static void write_cases_reports(const char *dir)
+{
+    static const char *const names[] = {"empty_start", "loaded_start", "loaded_coast_stop",
+                                        "loaded_brake_stop", "partial_load_start"};
+    char err[1024], sub[4096], summary[4200];
+    for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
+        snprintf(sub, sizeof sub, "%s/%s", dir, names[i]);
+        snprintf(summary, sizeof summary, "%s/summary.json", sub);
+        if (access(summary, R_OK) != 0)
+            continue;
+        if (bd_report_write(sub, err, sizeof err) != BD_REPORT_OK)
+            fprintf(stderr, "beltdyn: report of %s: %s\n", sub, err);
+    }
+    if (bd_report_write(dir, err, sizeof err) != BD_REPORT_OK)
+        fprintf(stderr, "beltdyn: report of %s: %s\n", dir, err);
+    else
+        printf("report: %s/report.html\n", dir);
+}
+
+/* `study`, or `cases` (cases = 1): the five standard load cases, then
+ * their reports and the one comparing them */
+static int cmd_study(int argc, char **argv, int cases)
 {
     bd_study_options o;
     bd_study_options_default(&o);
-    o.out_dir = "study";
+    o.out_dir = cases ? "cases" : "study";
+    o.load_cases = cases;
     int quiet = 0, start_options = 0;
     char err[1024] = "";
     for (int i = 0; i < argc; i++) {
@@ -455,6 +486,11 @@ static int cmd_study(int argc, char **argv)
     }
     if (!o.model_path)
         return usage(stderr);
+    if (cases && start_options) {
+        fprintf(stderr, "beltdyn: cases runs the five standard load cases with the model's "
+                "own start: --curves, --times and --delays belong to study\n");
+        return 2;
+    }
     if (start_options && (o.nvary > 0 || o.samples > 0 || o.nrange > 0)) {
         fprintf(stderr, "beltdyn: --curves, --times and --delays make a start study; a sweep "
                 "varies the start through its keys, e.g. --vary "
@@ -474,6 +510,8 @@ static int cmd_study(int argc, char **argv)
     int rc = bd_study_run(&o, stdout, err, sizeof err);
     if (rc != BD_RUN_OK && err[0])
         fprintf(stderr, "beltdyn: %s%s\n", rc == BD_RUN_FAILED ? "error: " : "", err);
+    if (cases && (rc == BD_RUN_OK || rc == BD_RUN_FAILED))
+        write_cases_reports(o.out_dir);
     return rc;
 }
 
@@ -491,7 +529,9 @@ int main(int argc, char **argv)
     if (strcmp(cmd, "report") == 0)
         return cmd_report(argc - 2, argv + 2);
     if (strcmp(cmd, "study") == 0)
-        return cmd_study(argc - 2, argv + 2);
+        return cmd_study(argc - 2, argv + 2, 0);
+    if (strcmp(cmd, "cases") == 0)
+        return cmd_study(argc - 2, argv + 2, 1);
     if (strcmp(cmd, "--version") == 0) {
         printf("beltdyn %s\n", bd_version());
         return 0;

@@ -50,6 +50,15 @@ typedef struct bd_run_options {
     void (*message)(const char *line, void *ctx);
     void *message_ctx;                    /* passed to message */
     long stabilize_max_steps;             /* 0: 2 000 000 (bd_sim_stabilize) */
+    /* > 0: the run's records (extremes of tension, torque, travel, the
+     * drive monitors, probes, lift-off, the envelope) start again at this
+     * time, s: a stop case's peaks without its start's (cases). The time
+     * history keeps the whole run; summary.json says `records_from_s` */
+    double records_from_s;
+    /* > 0: from this time on the run ends early once every pulley's
+     * surface has stayed below 0.02 m/s for 0.5 s (a stop case: the belt
+     * has stopped); simulation.duration stays the limit */
+    double end_at_rest_after_s;
 } bd_run_options;
 
 /* derive the discrete model (path, elements, idlers, time step, initial
@@ -98,6 +107,11 @@ int bd_sim_step(bd_sim *sim, long n, char *err, size_t errlen);
  * does this at its end, a program stepping a simulation itself calls it
  * before reading the warnings. Saying them twice adds nothing. */
 void bd_sim_report_events(bd_sim *sim);
+
+/* the run's records start again from the state now (bd_run_options
+ * records_from_s): tension, probe and torque extremes, takeup travel range
+ * (from the travel now), drive monitors, lift-off */
+void bd_sim_records_restart(bd_sim *sim);
 
 /* the whole run with outputs; returns one of BD_RUN_*; message in err */
 int bd_sim_run(bd_sim *sim, const bd_run_options *opt, char *err, size_t errlen);

@@ -76,6 +76,10 @@ typedef struct bd_study_options {
     int nrange;
     bd_study_range range[BD_STUDY_MAX_KEYS];
     unsigned long long seed;
+    /* 1: the five standard load cases instead (`beltdyn cases`, cli.md):
+     * empty_start, loaded_start, loaded_coast_stop, loaded_brake_stop,
+     * partial_load_start; tables DIR/cases.csv and DIR/cases.json */
+    int load_cases;
     int jobs;                      /* worker processes on this machine; 0: one per
                                       core. Under mpirun: one per rank instead */
     int resume;                    /* 1: keep the cases whose results are complete */

@@ -3,6 +3,8 @@
 
 #include "base/file.h"
 
+#include <cjson/cJSON.h>
+
 #include <errno.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -200,4 +202,17 @@ int bd_html_page_finish(bd_strbuf *b, const char *dir, char *err, size_t errlen)
         return -1;
     }
     return bd_html_write(b, path, err, errlen);
+}
+
+void bd_sb_json_cell(bd_strbuf *b, const cJSON *v)
+{
+    if (cJSON_IsNumber(v)) {
+        bd_sb_printf(b, "<td class=n>%.4g</td>", v->valuedouble);
+    } else if (cJSON_IsBool(v)) {
+        bd_sb_puts(b, cJSON_IsTrue(v) ? "<td>yes</td>" : "<td>no</td>");
+    } else {
+        bd_sb_puts(b, "<td>");
+        bd_sb_html(b, cJSON_IsString(v) ? v->valuestring : "—");
+        bd_sb_puts(b, "</td>");
+    }
 }

@@ -25,6 +25,10 @@ void bd_sb_printf(bd_strbuf *b, const char *fmt, ...)
     ;
 /* text with &, <, >, " escaped */
 void bd_sb_html(bd_strbuf *b, const char *s);
+/* a table cell of a JSON value: a number right-aligned to 4 digits, a
+ * bool as yes/no, text escaped, anything else as — */
+struct cJSON;
+void bd_sb_json_cell(bd_strbuf *b, const struct cJSON *v);
 void bd_sb_base64(bd_strbuf *b, const unsigned char *d, size_t n);
 /* "data:image/png;base64,..." of the PNG file at path; 0, or -1 */
 int bd_sb_embed_png(bd_strbuf *b, const char *path);

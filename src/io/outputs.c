@@ -109,10 +109,7 @@ int bd_outputs_open(bd_outputs *o, const bd_sim *sim, const char *dir, int hdf5,
     o->bins = sim->model->n;
     o->env_max = malloc((size_t)o->bins * sizeof *o->env_max);
     o->env_min = malloc((size_t)o->bins * sizeof *o->env_min);
-    for (int i = 0; i < o->bins; i++) {
-        o->env_max[i] = -INFINITY;
-        o->env_min[i] = INFINITY;
-    }
+    bd_outputs_records_restart(o, 0.0);
     /* history header */
     const bd_model_def *def = sim->model->def;
     fprintf(o->history, "t_s");
@@ -253,6 +250,15 @@ static int add_static(cJSON *root, cJSON *warnings, const bd_model_def *def)
     return count;
 }
 
+void bd_outputs_records_restart(bd_outputs *o, double t)
+{
+    o->records_from = t;
+    for (int i = 0; o->env_max && o->env_min && i < o->bins; i++) {
+        o->env_max[i] = -INFINITY;
+        o->env_min[i] = INFINITY;
+    }
+}
+
 static int write_summary(bd_outputs *o, const bd_sim *sim, double wall, const char *status)
 {
     const bd_model_def *def = sim->model->def;
@@ -265,6 +271,8 @@ static int write_summary(bd_outputs *o, const bd_sim *sim, double wall, const ch
     bd_json_add_number(root, "belt_length_m", sim->model->path.length);
     bd_json_add_number(root, "wall_time_s", wall);
     cJSON_AddStringToObject(root, "status", status);
+    if (o->records_from > 0.0)
+        bd_json_add_number(root, "records_from_s", o->records_from);
     bd_json_add_number(root, "time_step_limit_s", sim->model->dt_limit);
     cJSON_AddStringToObject(root, "time_step_limited_by",
                             bd_time_step_limit_name(sim->model->limit_kind));

@@ -23,6 +23,7 @@ typedef struct bd_outputs {
     double *env_max;       /* [bins] N */
     double *env_min;       /* [bins] N */
     long rows;
+    double records_from;   /* s, when the records started again (0: t = 0) */
     int static_warnings;   /* summary.json's static-design warnings, and its
                               own failure as one (set by bd_outputs_close) */
     char err[2048];
@@ -34,6 +35,9 @@ int bd_outputs_open(bd_outputs *o, const bd_sim *sim, const char *dir, int hdf5,
 /* one output time: a history row, the tension rows, the envelope update */
 void bd_outputs_row(bd_outputs *o, bd_sim *sim, double t);
 void bd_outputs_flush(bd_outputs *o);
+/* the records start again at t (bd_run_options records_from_s): the
+ * envelope is emptied */
+void bd_outputs_records_restart(bd_outputs *o, double t);
 /* finish every file (rename), write envelope.csv and summary.json; status
  * is "completed", "failed" or "interrupted" */
 int bd_outputs_close(bd_outputs *o, const bd_sim *sim, double wall, const char *status);

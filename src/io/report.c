@@ -4,6 +4,7 @@
 #include "base/file.h"
 #include "io/csv_read.h"
 #include "io/html.h"
+#include "io/cases_report.h"
 #include "io/study_report.h"
 #include "io/plot.h"
 
@@ -1298,7 +1299,12 @@ int bd_report_write(const char *dir, char *err, size_t errlen)
         return BD_REPORT_EINPUT;
     }
     /* a start study's directory (beltdyn study): its own comparison report */
-    char study_csv[PATH_LEN], summary[PATH_LEN];
+    char study_csv[PATH_LEN], summary[PATH_LEN], cases_csv[PATH_LEN];
+    /* a load-cases directory (beltdyn cases): the cases compared */
+    if (bd_path_join(cases_csv, sizeof cases_csv, dir, "cases.csv") == 0 && file_exists(cases_csv)
+        && (bd_path_join(summary, sizeof summary, dir, "summary.json") != 0
+            || !file_exists(summary)))
+        return bd_cases_report_write(dir, err, errlen);
     if (bd_path_join(study_csv, sizeof study_csv, dir, "study.csv") == 0 && file_exists(study_csv) &&
         (bd_path_join(summary, sizeof summary, dir, "summary.json") != 0 || !file_exists(summary)))
         return bd_study_report_write(dir, err, errlen);

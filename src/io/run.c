@@ -40,8 +40,22 @@ void bd_sim_report_events(bd_sim *sim)
     bd_lift_off_report(sim);
 }
 
+/* m/s and s: a stop case's belt is at rest when every pulley's surface
+ * has stayed below REST_SPEED for REST_TIME */
+#define REST_SPEED 0.02
+#define REST_TIME 0.5
+
+static int pulleys_at_rest(const bd_sim *sim)
+{
+    for (int i = 0; i < sim->model->pulley_count; i++)
+        if (fabs(sim->pulleys[i].omega * sim->pulleys[i].m->radius) >= REST_SPEED)
+            return 0;
+    return 1;
+}
+
 int bd_sim_run(bd_sim *sim, const bd_run_options *opt, char *err, size_t errlen)
 {
+    double rest_since = -1.0;
     double wall0 = bd_wall_seconds();
     bd_outputs out;
     if (bd_outputs_open(&out, sim, opt->out_dir, opt->hdf5, err, errlen))
@@ -82,12 +96,25 @@ int bd_sim_run(bd_sim *sim, const bd_run_options *opt, char *err, size_t errlen)
             status = BD_RUN_FAILED;
             break;
         }
+        if (opt->records_from_s > 0.0 && out.records_from == 0.0
+            && sim->t >= opt->records_from_s - 0.5 * dt) {
+            bd_sim_records_restart(sim);
+            bd_outputs_records_restart(&out, sim->t);
+        }
         if (sim->want_energy) {
             sim->want_energy = 0;
             bd_energy_update_balance(sim);
             bd_outputs_row(&out, sim, t_step);
             while (next_out <= t_step + 0.5 * dt)
                 next_out += interval;
+            if (opt->end_at_rest_after_s > 0.0 && sim->t > opt->end_at_rest_after_s) {
+                if (!pulleys_at_rest(sim))
+                    rest_since = -1.0;
+                else if (rest_since < 0.0)
+                    rest_since = sim->t;
+                else if (sim->t - rest_since >= REST_TIME)
+                    break;
+            }
             if (opt->interrupted && *opt->interrupted) {
                 status = BD_RUN_INTERRUPTED;
                 break;

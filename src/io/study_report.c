@@ -284,16 +284,7 @@ static void html_table(bd_strbuf *b, const cJSON *cases)
     cJSON_ArrayForEach(o, cases) {
         bd_sb_puts(b, "<tr>");
         for (int k = 0; k < nk; k++) {
-            const cJSON *v = cJSON_GetObjectItemCaseSensitive(o, keys[k]);
-            if (cJSON_IsNumber(v)) {
-                bd_sb_printf(b, "<td class=n>%.4g</td>", v->valuedouble);
-            } else if (cJSON_IsBool(v)) {
-                bd_sb_puts(b, cJSON_IsTrue(v) ? "<td>yes</td>" : "<td>no</td>");
-            } else {
-                bd_sb_puts(b, "<td>");
-                bd_sb_html(b, cJSON_IsString(v) ? v->valuestring : "—");
-                bd_sb_puts(b, "</td>");
-            }
+            bd_sb_json_cell(b, cJSON_GetObjectItemCaseSensitive(o, keys[k]));
         }
         bd_sb_puts(b, "</tr>\n");
     }

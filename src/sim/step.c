@@ -95,6 +95,22 @@ void bd_run_records_clear(bd_sim *sim)
     bd_lift_off_reset(sim);
 }
 
+void bd_sim_records_restart(bd_sim *sim)
+{
+    for (int i = 0; i < sim->model->pulley_count; i++) {
+        bd_pulley_body *p = &sim->pulleys[i];
+        p->travel_min = p->travel_max = p->q;
+        p->torque_max_abs = 0.0;
+        if (p->m->def->has_drive)
+            bd_monitor_reset(sim, p);
+    }
+    for (int i = 0; i < sim->model->probe_count; i++) {
+        sim->probes[i].tension_max = -INFINITY;
+        sim->probes[i].tension_min = INFINITY;
+    }
+    bd_run_records_clear(sim);
+}
+
 /* A run starts at rest: v(0) = 0. The scheme carries velocities at half
  * steps, so the first one it needs is v(−Δt/2) = −a(0)·Δt/2 (nodes, pulley
  * rotation, takeup carriages, idlers); starting from

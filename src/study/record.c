@@ -54,6 +54,8 @@ static void definition(const bd_study *s, const bd_study_case *c, char *buf, siz
     if (s->kind == BD_STUDY_START)
         snprintf(buf + o, len - o, "; start %s, time %.17g s, delay %.17g s",
                  bd_start_curve_name(c->curve), c->time, c->delay);
+    else if (s->kind == BD_STUDY_CASES)
+        snprintf(buf + o, len - o, "; %s; records from %.17g s", c->setup, c->records_from);
     else
         for (int k = 0; k < s->nkeys && o < len; k++)
             o += (size_t)snprintf(buf + o, len - o, "; %s = %.17g", s->keys[k].key,

@@ -362,6 +362,11 @@ static int setup(study_run *R, char *err, size_t errlen)
     bd_study *s = &R->s;
     const bd_study_options *o = s->opt;
     int sweep = o->nvary > 0 || o->samples > 0 || o->nrange > 0;
+    if (o->load_cases && (sweep || o->after > 0.0 || o->best)) {
+        snprintf(err, errlen, "cases runs the five standard load cases: it takes -o, -j, "
+                 "--resume and --force only");
+        return BD_RUN_BAD_INPUT;
+    }
     if (o->nvary > 0 && (o->samples > 0 || o->nrange > 0)) {
         snprintf(err, errlen, "--vary makes a grid, --sample and --range a Latin hypercube: "
                  "give one of them");
@@ -381,9 +386,10 @@ static int setup(study_run *R, char *err, size_t errlen)
                  "simulation.duration (vary it as a key)");
         return BD_RUN_BAD_INPUT;
     }
-    if (!sweep && check_start_options(o, err, errlen))
+    if (!sweep && !o->load_cases && check_start_options(o, err, errlen))
         return BD_RUN_BAD_INPUT;
-    s->kind = !sweep ? BD_STUDY_START : (o->nvary > 0 ? BD_STUDY_GRID : BD_STUDY_SAMPLE);
+    s->kind = o->load_cases ? BD_STUDY_CASES
+            : !sweep ? BD_STUDY_START : (o->nvary > 0 ? BD_STUDY_GRID : BD_STUDY_SAMPLE);
     s->nkeys = s->kind == BD_STUDY_GRID ? o->nvary : (s->kind == BD_STUDY_SAMPLE ? o->nrange : 0);
     s->keys = s->kind == BD_STUDY_GRID ? o->vary : o->range;
     if (bd_read_file(o->model_path, &s->text, &s->text_len) != BD_READ_OK) {
@@ -401,7 +407,8 @@ static int setup(study_run *R, char *err, size_t errlen)
         snprintf(err, errlen, "%s: the model has errors", o->model_path);
         return BD_RUN_BAD_INPUT;
     }
-    int rc = s->kind == BD_STUDY_START ? make_start_cases(R, err, errlen)
+    int rc = s->kind == BD_STUDY_START   ? make_start_cases(R, err, errlen)
+           : s->kind == BD_STUDY_CASES ? bd_load_cases_make(s, &R->cost, err, errlen)
                                        : make_sweep_cases(R, err, errlen);
     if (rc != BD_RUN_OK)
         return rc;
@@ -416,15 +423,18 @@ static int prepare_dir(study_run *R, char *err, size_t errlen)
 {
     bd_study *s = &R->s;
     const bd_study_options *o = s->opt;
-    static const char *const mark[1] = {"study.json"};
+    char mark_name[16];
+    snprintf(mark_name, sizeof mark_name, "%s.json", bd_study_table_name(s));
+    const char *const mark[1] = {mark_name};
     int state = bd_dir_state(o->out_dir, mark, 1);
     if (state == BD_DIR_BAD) {
         snprintf(err, errlen, "'%s' is not a directory", o->out_dir);
         return BD_RUN_BAD_INPUT;
     }
     if (state == BD_DIR_OTHER && !o->force) {
-        snprintf(err, errlen, "'%s' is not empty and holds no study (no study.json): give "
-                 "another -o DIR, or --force to write into it", o->out_dir);
+        snprintf(err, errlen, "'%s' is not empty and holds no %s (no %s): give "
+                 "another -o DIR, or --force to write into it", o->out_dir,
+                 s->kind == BD_STUDY_CASES ? "load cases" : "study", mark_name);
         return BD_RUN_BAD_INPUT;
     }
     if (mkdir(o->out_dir, 0777) != 0 && errno != EEXIST) {
@@ -509,6 +519,8 @@ static void run_case(void *ctx, int job, const bd_job_env *env, bd_job_result *o
         ro.progress = env->progress;
         ro.progress_ctx = env->progress_ctx;
         ro.interrupted = env->interrupted;
+        ro.records_from_s = c->records_from;
+        ro.end_at_rest_after_s = c->records_from;
         case_message cm = {env, c->name};
         if (env->message) {
             ro.message = say_case_warning;
@@ -617,8 +629,8 @@ static int finish(study_run *R, int runner_status, char *err, size_t errlen)
         int complete = 0;
         for (int j = 0; j < s->n; j++)
             complete += s->cases[j].status == BD_RUN_OK || s->cases[j].status == BD_RUN_FAILED;
-        snprintf(err, errlen, "interrupted: %d of %d cases complete, in %s/study.csv; "
-                 "--resume runs the others", complete, s->n, o->out_dir);
+        snprintf(err, errlen, "interrupted: %d of %d cases complete, in %s/%s.csv; "
+                 "--resume runs the others", complete, s->n, o->out_dir, bd_study_table_name(s));
     }
     if (runner_status != BD_RUN_OK)
         return runner_status;
@@ -683,9 +695,9 @@ int bd_study_run(const bd_study_options *opt, FILE *table, char *err, size_t err
     if (R->table && status == BD_RUN_OK) {
         int w = launched ? R->ranks : (workers < R->to_run ? workers : R->to_run);
         fprintf(R->table, "%s of %s: %d cases in %s/", R->s.kind == BD_STUDY_START
-                ? "start study" : (R->s.kind == BD_STUDY_GRID ? "sweep (grid)"
-                                   : "sweep (Latin hypercube)"), R->s.def.name, R->s.n,
-                opt->out_dir);
+                ? "start study" : R->s.kind == BD_STUDY_CASES ? "load cases"
+                : (R->s.kind == BD_STUDY_GRID ? "sweep (grid)" : "sweep (Latin hypercube)"),
+                R->s.def.name, R->s.n, opt->out_dir);
         if (R->skipped > 0)
             fprintf(R->table, " (%d complete before, %d to run)", R->skipped, R->to_run);
         fprintf(R->table, ", %d %s\n", w > 0 ? w : 1,

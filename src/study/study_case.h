@@ -15,8 +15,11 @@
 typedef enum bd_study_kind {
     BD_STUDY_START = 0,    /* start curves × start times × delays */
     BD_STUDY_GRID,         /* --vary */
-    BD_STUDY_SAMPLE        /* --sample, --range */
+    BD_STUDY_SAMPLE,       /* --sample, --range */
+    BD_STUDY_CASES         /* the standard load cases (load_cases.c) */
 } bd_study_kind;
+
+#define BD_LOAD_CASES 5
 
 typedef struct bd_study_case {
     char name[96];             /* its directory in out_dir */
@@ -25,6 +28,8 @@ typedef struct bd_study_case {
     double time, delay, creep; /* s, s, m/s */
     double duration;           /* s simulated */
     const double *values;      /* [nkeys] a sweep's key values, or NULL */
+    char setup[240];           /* a load case: what it sets, in words */
+    double records_from;       /* s, a stop case's records start there; 0 */
     /* its result: status BD_RUN_*, or -1 while it has none */
     int status;
     double wall_s;
@@ -79,6 +84,12 @@ int bd_study_best_find(const bd_study *s);
 void bd_study_best_describe(const bd_study *s, char *buf, size_t len);
 /* the column --best names, without its "max:" */
 const char *bd_study_best_column(const bd_study *s);
+
+/* load_cases.c: the load cases' models in s->case_defs and s->cases, their
+ * costs in *cost (malloc'd); a BD_RUN_* status, the reason in err */
+int bd_load_cases_make(bd_study *s, double **cost, char *err, size_t errlen);
+/* "cases" or "study": the tables' and the directory mark's base name */
+const char *bd_study_table_name(const bd_study *s);
 
 /* case_cost.c: the estimated wall time of a run of def over duration s,
  * in seconds of this machine (relative: it orders the cases) */

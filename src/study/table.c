@@ -59,10 +59,15 @@ const char *bd_study_status_word(int status)
     }
 }
 
+const char *bd_study_table_name(const bd_study *s)
+{
+    return s->kind == BD_STUDY_CASES ? "cases" : "study";
+}
+
 /* the columns before `status` */
 static int lead_count(const bd_study *s)
 {
-    return s->kind == BD_STUDY_START ? 5 : 1 + s->nkeys;
+    return s->kind == BD_STUDY_START ? 5 : s->kind == BD_STUDY_CASES ? 3 : 1 + s->nkeys;
 }
 
 static int column_count(const bd_study *s)
@@ -72,11 +77,16 @@ static int column_count(const bd_study *s)
 
 static const char *const start_lead[] = {"case", "curve", "start_time_s", "delay_s",
                                           "creep_speed_mps"};
+static const char *const cases_lead[] = {"case", "setup", "records_from_s"};
 
 /* column i's name and CSV format */
 static const char *column_at(const bd_study *s, int i, const char **fmt)
 {
     int lead = lead_count(s);
+    if (i < lead && s->kind == BD_STUDY_CASES) {
+        *fmt = i < 2 ? "%s" : "%g";
+        return cases_lead[i];
+    }
     if (i < lead) {
         if (i == 0 || (s->kind == BD_STUDY_START && i == 1)) {
             *fmt = "%s";
@@ -128,7 +138,16 @@ int bd_study_column(const bd_study *s, const bd_study_case *c, const char *col, 
         *num = c->wall_s;
         return 1;
     }
-    if (s->kind == BD_STUDY_START) {
+    if (s->kind == BD_STUDY_CASES) {
+        if (strcmp(col, "setup") == 0) {
+            *text = c->setup;
+            return 2;
+        }
+        if (strcmp(col, "records_from_s") == 0) {
+            *num = c->records_from;
+            return 1;
+        }
+    } else if (s->kind == BD_STUDY_START) {
         if (strcmp(col, "curve") == 0) {
             *text = bd_start_curve_name(c->curve);
             return 2;
@@ -230,7 +249,9 @@ static char *json_text(const bd_study *s)
     cJSON_AddStringToObject(root, "slip_definition",
                             "drive pulley surface speed and belt speed at the pulley differ by "
                             "more than 0.05 m/s + 2% of the surface speed for at least 0.2 s");
-    if (s->kind != BD_STUDY_START) {
+    if (s->kind == BD_STUDY_CASES)
+        cJSON_AddStringToObject(root, "kind", "load_cases");
+    if (s->kind == BD_STUDY_GRID || s->kind == BD_STUDY_SAMPLE) {
         cJSON *sw = cJSON_AddObjectToObject(root, "sweep");
         cJSON_AddStringToObject(sw, "method", s->kind == BD_STUDY_GRID ? "grid"
                                                                        : "latin_hypercube");
@@ -306,18 +327,21 @@ int bd_study_write_tables(const bd_study *s, char *err, size_t errlen)
     }
     free(text);
     /* each whole through a temporary name and a rename */
-    if (bd_path_join(path, sizeof path, s->opt->out_dir, "study.json")) {
+    char csv_name[16], json_name[16];
+    snprintf(csv_name, sizeof csv_name, "%s.csv", bd_study_table_name(s));
+    snprintf(json_name, sizeof json_name, "%s.json", bd_study_table_name(s));
+    if (bd_path_join(path, sizeof path, s->opt->out_dir, json_name)) {
         free(csv.p);
         free(json.p);
         snprintf(err, errlen, "%s: path too long", s->opt->out_dir);
         return 1;
     }
-    bd_path_join(path, sizeof path, s->opt->out_dir, "study.csv");   /* shorter: fits */
+    bd_path_join(path, sizeof path, s->opt->out_dir, csv_name);   /* as long: fits */
     if (bd_html_write(&csv, path, err, errlen)) {
         free(json.p);
         return 1;
     }
-    bd_path_join(path, sizeof path, s->opt->out_dir, "study.json");
+    bd_path_join(path, sizeof path, s->opt->out_dir, json_name);
     return bd_html_write(&json, path, err, errlen) ? 1 : 0;
 }
 

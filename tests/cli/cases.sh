@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# beltdyn cases (cli.md) on a small loaded conveyor (tests/data/cases_small.yaml,
+# axial belt, S-curve start of 4 s): five case directories with the run's
+# outputs, cases.csv and cases.json with one completed row each, each case's
+# report and DIR/report.html linking them. Physics each row must show:
+# - a loaded start pulls harder than an empty one (peak belt tension higher);
+# - the stop cases' records start at t_stop = 4 + max(2, 0.8) = 6 s, and the
+#   run ends once the belt has stopped (head pulley at rest);
+# - braking stops the belt sooner than coasting and drops the slack side
+#   further (lowest belt tension lower) — the brake pulls the belt back.
+# Options of `study` are refused (exit 2, nothing written).
+set -euo pipefail
+. "$(dirname "$0")/lib/setup.sh"
+model="$TEST_DATA/cases_small.yaml"
+check() { local what=$1; shift; if "$@"; then ok "$what"; else bad "$what" "it did not hold"; fi; }
+fail() { bad "$1" "stopped here"; tally; exit 1; }
+out="$tmp/cases"
+
+"$BELTDYN" cases "$model" -o "$out" -j 2 >"$tmp/out" 2>"$tmp/err" || { cat "$tmp/err" >&2; fail "cases exited $?"; }
+names="empty_start loaded_start loaded_coast_stop loaded_brake_stop partial_load_start"
+for c in $names; do
+  for f in summary.json history.csv envelope.csv report.html; do
+    check "$c/$f written" test -s "$out/$c/$f"
+  done
+  check "a row for $c on stdout" grep -q "^$c " "$tmp/out"
+done
+check "cases.csv: header and 5 rows" test "$(wc -l <"$out/cases.csv")" -eq 6
+check "cases.csv header" bash -c "head -1 '$out/cases.csv' | grep -q '^case,setup,records_from_s,status,'"
+check "report.html links every case" bash -c "for c in $names; do grep -q \"href=\\\"\$c/report.html\\\"\" '$out/report.html' || exit 1; done"
+check "report.html embeds its plot" grep -q 'data:image/png;base64,' "$out/report.html"
+check "the physics of the cases" python3 - "$out" <<'PY'
+import json, sys
+d = sys.argv[1]
+t = {c["case"]: c for c in json.load(open(d + "/cases.json"))["cases"]}
+s = {c: json.load(open("%s/%s/summary.json" % (d, c))) for c in t}
+bad = []
+for c, row in t.items():
+    if row["status"] != "completed": bad.append(c + " " + row["status"])
+if not t["loaded_start"]["belt_tension_max_N"] > 1.05 * t["empty_start"]["belt_tension_max_N"]:
+    bad.append("loaded start not above empty start")
+for c in ("loaded_coast_stop", "loaded_brake_stop"):
+    if abs(s[c].get("records_from_s", 0) - 6.0) > 0.01: bad.append(c + " records_from_s")
+    if abs(t[c]["records_from_s"] - 6.0) > 0.01: bad.append(c + " table records_from_s")
+    if abs(s[c]["pulleys"]["head"]["omega_final_rad_s"]) * 0.5 > 0.02: bad.append(c + " not at rest")
+if not s["loaded_brake_stop"]["duration_s"] < s["loaded_coast_stop"]["duration_s"]:
+    bad.append("braking not sooner than coasting")
+if not t["loaded_brake_stop"]["belt_tension_min_N"] < t["loaded_coast_stop"]["belt_tension_min_N"]:
+    bad.append("braking did not drop the slack side below coasting's")
+print("\n".join(bad))
+sys.exit(1 if bad else 0)
+PY
+
+if "$BELTDYN" cases "$model" -o "$tmp/bad" --curves linear >"$tmp/out" 2>"$tmp/err"; then rc=0; else rc=$?; fi
+check "cases --curves: exit 2" test "$rc" -eq 2
+check "cases --curves: says why" grep -q "belong to study" "$tmp/err"
+check "cases --curves: nothing written" test ! -e "$tmp/bad"
+tally
