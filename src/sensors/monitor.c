@@ -35,13 +35,18 @@ static double offset_on(const bd_path_segment *span)
     return d < MONITOR_OFFSET ? d : MONITOR_OFFSET;
 }
 
-void bd_monitor_init(bd_sim *sim, bd_pulley_body *p)
+void bd_wrap_side_points(const bd_sim *sim, int i, double *s_in, double *s_out)
 {
-    int i = (int)(p - sim->pulleys);
     int before = (i + sim->model->pulley_count - 1) % sim->model->pulley_count;
     const bd_path_segment *arc = bd_path_arc(&sim->model->path, i);
-    double s_in = arc->s0 - offset_on(bd_path_span(&sim->model->path, before));
-    double s_out = arc->s0 + arc->length + offset_on(bd_path_span(&sim->model->path, i));
+    *s_in = arc->s0 - offset_on(bd_path_span(&sim->model->path, before));
+    *s_out = arc->s0 + arc->length + offset_on(bd_path_span(&sim->model->path, i));
+}
+
+void bd_monitor_init(bd_sim *sim, bd_pulley_body *p)
+{
+    double s_in, s_out;
+    bd_wrap_side_points(sim, (int)(p - sim->pulleys), &s_in, &s_out);
     sim->model->belt->point_init(sim, &p->mon.tight, s_in);
     sim->model->belt->point_init(sim, &p->mon.slack, s_out);
     bd_monitor_reset(sim, p);

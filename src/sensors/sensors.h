@@ -8,6 +8,10 @@
 
 /* monitor.c: drive monitors (set up in build, reset when a run starts) */
 void bd_monitor_init(bd_sim *sim, bd_pulley_body *p);
+/* the belt points just before and after pulley i's wrap (0.5 m, at most a
+ * quarter of the span), path coordinates: where the drive monitor and a
+ * pulley's own resistance (sim/pulley_resistance.c) read the tensions */
+void bd_wrap_side_points(const bd_sim *sim, int i, double *s_in, double *s_out);
 void bd_monitor_reset(bd_sim *sim, bd_pulley_body *p);
 double bd_monitor_swing(const bd_drive_monitor *m);
 void bd_monitor_update(bd_sim *sim, bd_pulley_body *p);

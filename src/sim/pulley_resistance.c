@@ -10,16 +10,7 @@
 
 #include "laws/rolling.h"
 #include "model/secondary.h"
-
-/* m before / after the wrap where the tensions are read, at most 1/4 span
- * (the drive monitor's points, sensors/monitor.c) */
-#define RESISTANCE_OFFSET 0.5
-
-static double offset_on(const bd_path_segment *span)
-{
-    double d = 0.25 * span->length;
-    return d < RESISTANCE_OFFSET ? d : RESISTANCE_OFFSET;
-}
+#include "sensors/sensors.h"
 
 void bd_pulley_resistance_init(bd_sim *sim)
 {
@@ -30,10 +21,8 @@ void bd_pulley_resistance_init(bd_sim *sim)
         p->resists = bd_secondary_at_pulley(def, i);
         if (!p->resists)
             continue;
-        int before = (i + n - 1) % n;
-        const bd_path_segment *arc = bd_path_arc(&sim->model->path, i);
-        double s_in = arc->s0 - offset_on(bd_path_span(&sim->model->path, before));
-        double s_out = arc->s0 + arc->length + offset_on(bd_path_span(&sim->model->path, i));
+        double s_in, s_out;
+        bd_wrap_side_points(sim, i, &s_in, &s_out);
         sim->model->belt->point_init(sim, &p->res_in, s_in);
         sim->model->belt->point_init(sim, &p->res_out, s_out);
         p->res_force = 0.0;
