@@ -8,6 +8,14 @@
 #   run ends once the belt has stopped (head pulley at rest);
 # - braking stops the belt sooner than coasting and drops the slack side
 #   further (lowest belt tension lower) — the brake pulls the belt back.
+# The worst partial loading of a valley (tests/data/cases_valley.yaml): the
+# slope in the 2000 m bottom curve runs from -10/300 rad linearly with arc
+# length s/R, and passes -atan(0.02) = -0.019997 rad (f = 0.02) at
+# (0.033320 - 0.019997)·2000 = 26.65 m into the curve; the curve begins
+# hypot(300, 10) - 2000·tan(Δ/2) = 300.17 - 133.10 = 167.07 m along the
+# carry, Δ = atan(0.1) + atan(1/30): the case loads from 193.7 m, within the
+# 1.5 m the search samples the region at; and it pulls harder than the full
+# loaded start (the decline's material helps the drive).
 # Options of `study` are refused (exit 2, nothing written).
 set -euo pipefail
 . "$(dirname "$0")/lib/setup.sh"
@@ -48,6 +56,18 @@ if not t["loaded_brake_stop"]["belt_tension_min_N"] < t["loaded_coast_stop"]["be
     bad.append("braking did not drop the slack side below coasting's")
 print("\n".join(bad))
 sys.exit(1 if bad else 0)
+PY
+
+"$BELTDYN" cases "$TEST_DATA/cases_valley.yaml" -o "$tmp/valley" -j 2 >"$tmp/out" 2>"$tmp/err" || { cat "$tmp/err" >&2; fail "cases on the valley exited $?"; }
+check "the valley's worst partial loading" python3 - "$tmp/valley" <<'PY'
+import json, re, sys
+t = {c["case"]: c for c in json.load(open(sys.argv[1] + "/cases.json"))["cases"]}
+p = t["partial_load_start"]
+m = re.search(r"loaded from ([0-9.]+) m past the feed point", p["setup"])
+ok = m and abs(float(m.group(1)) - 193.7) <= 1.6
+ok = ok and p["belt_tension_max_N"] > t["loaded_start"]["belt_tension_max_N"]
+print(p["setup"], p["belt_tension_max_N"], t["loaded_start"]["belt_tension_max_N"])
+sys.exit(0 if ok else 1)
 PY
 
 if "$BELTDYN" cases "$model" -o "$tmp/bad" --curves linear >"$tmp/out" 2>"$tmp/err"; then rc=0; else rc=$?; fi
