@@ -4,6 +4,7 @@
  * complete; an interrupted or failed run still renames its CSVs, which are
  * valid up to the last complete row. */
 #include "io/outputs.h"
+#include "io/checks.h"
 #include "base/file.h"
 #include "base/json_util.h"
 
@@ -221,14 +222,37 @@ static int write_envelope(bd_outputs *o, const bd_sim *sim)
 /* the model's design-standard calculation (cli.md `static --json`) as
  * "static", with its T_min_sag_N also at the top level; a warning instead
  * when it cannot be computed */
-static int add_static(cJSON *root, cJSON *warnings, const bd_model_def *def)
+/* summary.json's "checks": the pass/fail table (io/checks.c) */
+static void add_checks(cJSON *root, const bd_sim *sim, const bd_static_result *st)
 {
+    bd_check checks[BD_CHECK_MAX];
+    int n = bd_run_checks(sim, st, checks, BD_CHECK_MAX), failed = 0;
+    cJSON *a = cJSON_AddArrayToObject(root, "checks");
+    for (int i = 0; i < n; i++) {
+        cJSON *c = cJSON_CreateObject();
+        cJSON_AddStringToObject(c, "check", checks[i].name);
+        bd_json_add_number(c, "value", checks[i].value);
+        bd_json_add_number(c, "limit", checks[i].limit);
+        cJSON_AddStringToObject(c, "unit", checks[i].unit);
+        cJSON_AddStringToObject(c, "limit_is", checks[i].upper ? "at most" : "at least");
+        cJSON_AddBoolToObject(c, "pass", checks[i].pass);
+        cJSON_AddItemToArray(a, c);
+        failed += !checks[i].pass;
+    }
+    cJSON_AddNumberToObject(root, "checks_failed", failed);
+}
+
+static int add_static(cJSON *root, cJSON *warnings, const bd_sim *sim)
+{
+    const bd_model_def *def = sim->model->def;
     int count = 1;   /* the failure's message, unless it computes */
     bd_diag diag;
     bd_diag_init(&diag);
     bd_static_result res;
     cJSON *st = NULL;
-    if (bd_static_compute(def, &res, &diag) == 0) {
+    int computed = bd_static_compute(def, &res, &diag) == 0;
+    add_checks(root, sim, computed ? &res : NULL);
+    if (computed) {
         char *text = bd_static_to_json(&res, def);
         st = text ? cJSON_Parse(text) : NULL;
         free(text);
@@ -359,7 +383,9 @@ static int write_summary(bd_outputs *o, const bd_sim *sim, double wall, const ch
     for (int i = 0; i < sim->warning_count; i++)
         cJSON_AddItemToArray(w, cJSON_CreateString(sim->warnings[i]));
     if (def->design.present)
-        o->static_warnings = add_static(root, w, def);
+        o->static_warnings = add_static(root, w, sim);
+    else
+        add_checks(root, sim, NULL);
     char *text = cJSON_Print(root);
     cJSON_Delete(root);
     FILE *f = open_part(o, BD_OUT_SUMMARY, "summary.json", o->err, sizeof o->err);

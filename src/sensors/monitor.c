@@ -18,7 +18,7 @@
  *   pulley (the mean of the tight- and slack-side speeds; elastic creep
  *   makes them differ by ΔT/EA of the speed, a fraction of a percent). The
  *   drive slips when they differ by more than SLIP_SPEED + SLIP_FRACTION·|ωR|
- *   for at least SLIP_TIME without a break. */
+ *   for at least BD_SLIP_TIME without a break. */
 #include "sensors/sensors.h"
 
 #include <math.h>
@@ -27,7 +27,6 @@
 #define ACCEL_WINDOW 0.1     /* s */
 #define SLIP_SPEED 0.05      /* m/s */
 #define SLIP_FRACTION 0.02   /* of the surface speed */
-#define SLIP_TIME 0.2        /* s */
 
 static double offset_on(const bd_path_segment *span)
 {
@@ -109,7 +108,7 @@ static void slip(bd_drive_monitor *m, double v_surface, double v_belt, double t)
     double lasted = t - m->slip_since;
     if (lasted > m->slip_longest)
         m->slip_longest = lasted;
-    if (lasted >= SLIP_TIME && m->slip_first_t < 0.0)
+    if (lasted >= BD_SLIP_TIME && m->slip_first_t < 0.0)
         m->slip_first_t = m->slip_since;
 }
 

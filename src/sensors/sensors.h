@@ -7,6 +7,8 @@
 #include "belt/belt.h"
 
 /* monitor.c: drive monitors (set up in build, reset when a run starts) */
+/* s a drive's slip must last to count as slip (the drive monitor) */
+#define BD_SLIP_TIME 0.2
 void bd_monitor_init(bd_sim *sim, bd_pulley_body *p);
 /* the belt points just before and after pulley i's wrap (0.5 m, at most a
  * quarter of the span), path coordinates: where the drive monitor and a

@@ -56,6 +56,36 @@ PY
 then ok "run: the peak against rated/4.8 warns, against rated/4 not; the factors in summary.json"
 else bad "run" "exit $rc1 $rc2: $(head -c 400 "$tmp/r1.err")"; fi
 
+# the pass/fail table (summary.json "checks"): the two strength checks fail
+# with the default factors and pass with the lower ones, each failed check
+# has its warning (the run's or the static design's), and the failures are
+# counted in checks_failed
+if python3 - "$tmp/r1/summary.json" "$tmp/r2/summary.json" <<'PY'
+import json, sys
+a, b = (json.load(open(p)) for p in sys.argv[1:])
+def chk(d, name):
+    c = [c for c in d["checks"] if c["check"].startswith(name)]
+    assert len(c) == 1, (name, d["checks"])
+    return c[0]
+for name, limit in (("belt strength, starts and stops", 100000 / 4.8),
+                    ("belt strength, steady running", 100000 / 6.7)):
+    c = chk(a, name)
+    assert not c["pass"] and abs(c["limit"] - limit) < 1e-6 * limit and c["value"] > limit, c
+for name in ("belt strength, starts and stops", "belt strength, steady running"):
+    assert chk(b, name)["pass"], b["checks"]
+assert a["checks_failed"] == sum(not c["pass"] for c in a["checks"]), a
+words = {"belt strength, starts and stops": "allowable during starts and stops",
+         "belt strength, steady running (static)": "allowable in steady running",
+         "lift-off from the idlers": "lifted off its idlers"}
+warnings = a["warnings"] + a["static"]["warnings"]
+for c in a["checks"]:
+    if not c["pass"]:
+        assert c["check"] in words, c
+        assert any(words[c["check"]] in w for w in warnings), (c, warnings)
+PY
+then ok "checks: strength fails at 6.7/4.8, passes at 6/4; every failed check has its warning"
+else bad "checks" "$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["checks"])' "$tmp/r1/summary.json" | head -c 800)"; fi
+
 "$BELTDYN" check "$tmp/bad.yaml" >/dev/null 2>"$tmp/bad.err"
 rc=$?
 if [ $rc -eq 2 ] && grep -q "bad.yaml:[0-9]*:[0-9]*: error: design.safety_factor.running: expected a number > 0" "$tmp/bad.err"; then

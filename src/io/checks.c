@@ -1,0 +1,85 @@
+/* The pass/fail table (io/checks.h). Each check is one a conveyor
+ * engineer signs a design off with:
+ *   - belt strength in starts and stops: the run's peak tension against
+ *     belt.rated_tension / safety_factor.starting (DIN 22101's non-steady
+ *     states);
+ *   - belt strength in steady running: the static maximum against
+ *     rated / safety_factor.running;
+ *   - slip margin: the static slack-side tension T2 against the least
+ *     that keeps the drive from slipping, Te/(e^(μφ) − 1) (Euler–Eytelwein);
+ *   - sag: the static lowest tension of the carrying run against
+ *     (m'G + m'L)·g·a/(8·sag_ratio);
+ *   - drive slip in the run (the drive monitor's confirmed slip);
+ *   - takeup travel against the takeup's travel limits, when given;
+ *   - lift-off from the idlers (the 2D belts);
+ *   - the run's energy balance (a trust check: 1 %). */
+#include "io/checks.h"
+
+#include "sensors/sensors.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+static bd_check *add(bd_check *out, int *n, int max, const char *name, const char *unit,
+                     double value, double limit, int upper)
+{
+    if (*n >= max)
+        return NULL;
+    bd_check *c = &out[(*n)++];
+    snprintf(c->name, sizeof c->name, "%s", name);
+    snprintf(c->unit, sizeof c->unit, "%s", unit);
+    c->value = value;
+    c->limit = limit;
+    c->upper = upper;
+    c->pass = upper ? value <= limit : value >= limit;
+    return c;
+}
+
+int bd_run_checks(const bd_sim *sim, const bd_static_result *st, bd_check *out, int max)
+{
+    const bd_model_def *def = sim->model->def;
+    const double rated = def->belt.rated_tension;
+    int n = 0;
+    if (rated > 0.0 && sim->tension_max > -INFINITY)
+        add(out, &n, max, "belt strength, starts and stops", "N", sim->tension_max,
+            rated / def->design.safety_factor.starting, 1);
+    if (st) {
+        if (rated > 0.0)
+            add(out, &n, max, "belt strength, steady running (static)", "N", st->T_max_N,
+                rated / def->design.safety_factor.running, 1);
+        add(out, &n, max, "slip margin, T2 (static)", "N", st->T2_N, st->T2_min_slip_N, 0);
+        double low = INFINITY;
+        for (int i = 0; i < st->span_count; i++)
+            if (st->spans[i].loaded || st->spans[i].carry)
+                low = fmin(low, fmin(st->spans[i].T_start_N, st->spans[i].T_end_N));
+        if (isfinite(low) && st->T_min_sag_N > 0.0)
+            add(out, &n, max, "sag, carrying run (static)", "N", low, st->T_min_sag_N, 0);
+    }
+    for (int i = 0; i < sim->model->pulley_count; i++) {
+        const bd_pulley_body *p = &sim->pulleys[i];
+        const bd_pulley_def *pd = &def->pulleys[i];
+        char name[112];
+        if (pd->has_drive) {
+            snprintf(name, sizeof name, "drive slip, %s", pd->name);
+            /* slip counts once it lasts BD_SLIP_TIME (the monitor's rule) */
+            bd_check *c = add(out, &n, max, name, "s", p->mon.slip_longest, BD_SLIP_TIME, 1);
+            if (c)
+                c->pass = p->mon.slip_first_t < 0.0;
+        }
+        if (pd->has_takeup && p->m->movable
+            && (isfinite(pd->takeup.travel_min) || isfinite(pd->takeup.travel_max))) {
+            snprintf(name, sizeof name, "takeup travel, %s", pd->name);
+            int up = isfinite(pd->takeup.travel_max);
+            bd_check *c = add(out, &n, max, name, "m", up ? p->travel_max : p->travel_min,
+                              up ? pd->takeup.travel_max : pd->takeup.travel_min, up);
+            if (c)
+                c->pass = p->travel_max <= pd->takeup.travel_max
+                          && p->travel_min >= pd->takeup.travel_min;
+        }
+    }
+    if (sim->model->belt->records_lift_off)
+        add(out, &n, max, "lift-off from the idlers", "s", sim->lift.total, 0.0, 1);
+    add(out, &n, max, "energy balance of the run", "-", sim->energy.balance_error_rel, 0.01, 1);
+    return n;
+}
