@@ -281,8 +281,10 @@ static int cmd_run(int argc, char **argv)
     if (rc != BD_RUN_OK)
         fprintf(stderr, "beltdyn: %s%s\n", rc == BD_RUN_FAILED ? "error: " : "", err);
     if ((rc == BD_RUN_OK || rc == BD_RUN_FAILED || rc == BD_RUN_INTERRUPTED) && !quiet
-        && isatty(STDOUT_FILENO))
+        && isatty(STDOUT_FILENO)) {
         print_summary(sim, &def, stdout);
+        bd_report_print_checks(dir, stdout);
+    }
     bd_sim_free(sim);
     bd_model_def_free(&def);
     return rc;

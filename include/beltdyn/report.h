@@ -4,6 +4,7 @@
 #define BELTDYN_REPORT_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 #ifdef __cplusplus
 extern "C" {
@@ -25,6 +26,11 @@ extern "C" {
  * no summary.json) gets the start-curve comparison instead:
  * DIR/plots/study_{tension,peaks}.{png,svg} and DIR/report.html. */
 int bd_report_write(const char *dir, char *err, size_t errlen);
+
+/* the pass/fail table of a finished run (DIR/summary.json "checks") on f,
+ * one line per check, failures first marked FAIL; returns the number of
+ * failed checks, or -1 when DIR has no readable summary.json */
+int bd_report_print_checks(const char *dir, FILE *f);
 
 #ifdef __cplusplus
 }

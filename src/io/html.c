@@ -151,6 +151,7 @@ const char *const bd_html_css =
     "border-radius:6px;padding:10px 14px;flex:1 1 220px;max-width:calc(25% - 9px);"
     "box-sizing:border-box}"
     ".card.bad{border-left-color:#c00000}.card.ok{border-left-color:#009e73}"
+    "td.bad{color:#c00000;font-weight:600}td.ok{color:#007a5a;font-weight:600}"
     ".card .k{font-size:13px;color:#555;text-transform:uppercase;letter-spacing:.04em}"
     ".card .v{font-size:28px;font-weight:bold;margin:2px 0}"
     ".card .d{font-size:14px;color:#333}"

@@ -199,6 +199,12 @@ static double json_num(const cJSON *obj, const char *key)
     return cJSON_IsNumber(v) ? v->valuedouble : NAN;
 }
 
+static const char *json_str(const cJSON *obj, const char *key)
+{
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(obj, key);
+    return cJSON_IsString(v) ? v->valuestring : "";
+}
+
 static int write_plot(report *r, const bd_plot_figure *f, const char *name, const char *caption,
                       char *err, size_t errlen)
 {
@@ -1167,6 +1173,29 @@ static int write_html(report *r, char *err, size_t errlen)
 
     headline(r, &b);
 
+    /* the pass/fail table (summary.json "checks", io/checks.c) */
+    const cJSON *checks = cJSON_GetObjectItemCaseSensitive(r->summary, "checks");
+    if (cJSON_IsArray(checks) && cJSON_GetArraySize(checks) > 0) {
+        bd_sb_puts(&b, "<h2 id=checks>Checks</h2>\n<table><tr><th>check</th><th>result</th>"
+                       "<th>value</th><th>limit</th><th>unit</th></tr>\n");
+        const cJSON *c;
+        cJSON_ArrayForEach(c, checks) {
+            int pass = cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(c, "pass"));
+            bd_sb_puts(&b, "<tr><td>");
+            bd_sb_html(&b, json_str(c, "check"));
+            bd_sb_printf(&b, "</td><td class=%s>%s</td>", pass ? "ok" : "bad",
+                         pass ? "pass" : "FAIL");
+            bd_sb_json_cell(&b, cJSON_GetObjectItemCaseSensitive(c, "value"));
+            bd_sb_printf(&b, "<td class=n>%s %.4g</td>",
+                         strcmp(json_str(c, "limit_is"), "at least") == 0 ? "≥" : "≤",
+                         json_num(c, "limit"));
+            bd_sb_puts(&b, "<td>");
+            bd_sb_html(&b, json_str(c, "unit"));
+            bd_sb_puts(&b, "</td></tr>\n");
+        }
+        bd_sb_puts(&b, "</table>\n");
+    }
+
     /* warnings: the run's, then the static design's */
     const cJSON *warn = cJSON_GetObjectItemCaseSensitive(r->summary, "warnings");
     bd_sb_puts(&b, "<h2 id=warnings>Warnings</h2>\n");
@@ -1278,6 +1307,34 @@ static int read_summary(report *r, char *err, size_t errlen)
     if (isfinite(v))
         r->tmin = (point){1, v, json_num(ten, "min_time_s"), json_num(ten, "min_s_m")};
     return 0;
+}
+
+int bd_report_print_checks(const char *dir, FILE *f)
+{
+    char path[PATH_LEN], *text;
+    size_t len;
+    if (bd_path_join(path, sizeof path, dir, "summary.json")
+        || bd_read_file(path, &text, &len) != BD_READ_OK)
+        return -1;
+    cJSON *root = cJSON_Parse(text);
+    free(text);
+    const cJSON *checks = cJSON_GetObjectItemCaseSensitive(root, "checks"), *c;
+    if (!cJSON_IsArray(checks)) {
+        cJSON_Delete(root);
+        return -1;
+    }
+    int failed = 0, n = cJSON_GetArraySize(checks);
+    cJSON_ArrayForEach(c, checks) failed += !cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(c, "pass"));
+    fprintf(f, "checks: %d of %d failed\n", failed, n);
+    cJSON_ArrayForEach(c, checks) {
+        int pass = cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(c, "pass"));
+        fprintf(f, "  %-4s %-42s %12.5g %s %-12.5g %s\n", pass ? "pass" : "FAIL",
+                json_str(c, "check"), json_num(c, "value"),
+                strcmp(json_str(c, "limit_is"), "at least") == 0 ? ">=" : "<=",
+                json_num(c, "limit"), json_str(c, "unit"));
+    }
+    cJSON_Delete(root);
+    return failed;
 }
 
 int bd_report_write(const char *dir, char *err, size_t errlen)

@@ -86,6 +86,15 @@ PY
 then ok "checks: strength fails at 6.7/4.8, passes at 6/4; every failed check has its warning"
 else bad "checks" "$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["checks"])' "$tmp/r1/summary.json" | head -c 800)"; fi
 
+# the report shows the same table at its top: as many FAIL cells as
+# summary.json counts
+"$BELTDYN" report "$tmp/r1" >/dev/null 2>&1
+fails=$(grep -o '<td class=bad>FAIL</td>' "$tmp/r1/report.html" | wc -l)
+want=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["checks_failed"])' "$tmp/r1/summary.json")
+if grep -q '<h2 id=checks>Checks</h2>' "$tmp/r1/report.html" && [ "$fails" -eq "$want" ] && [ "$want" -ge 2 ]
+then ok "report: the checks table with $fails FAIL, as summary.json counts"
+else bad "report checks" "$fails FAIL cells, summary.json says $want"; fi
+
 "$BELTDYN" check "$tmp/bad.yaml" >/dev/null 2>"$tmp/bad.err"
 rc=$?
 if [ $rc -eq 2 ] && grep -q "bad.yaml:[0-9]*:[0-9]*: error: design.safety_factor.running: expected a number > 0" "$tmp/bad.err"; then
