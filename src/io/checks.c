@@ -10,11 +10,15 @@
  *   - sag: the static lowest tension of the carrying run against
  *     (m'G + m'L)·g·a/(8·sag_ratio);
  *   - drive slip in the run (the drive monitor's confirmed slip);
+ *   - the drive's peak torque against what it can give (max_torque, a
+ *     motor's breakdown torque × gear ratio): reaching it, the drive could
+ *     not follow its start;
  *   - takeup travel against the takeup's travel limits, when given;
  *   - lift-off from the idlers (the 2D belts);
  *   - the run's energy balance (a trust check: 1 %). */
 #include "io/checks.h"
 
+#include "parts/parts.h"
 #include "sensors/sensors.h"
 
 #include <math.h>
@@ -66,6 +70,16 @@ int bd_run_checks(const bd_sim *sim, const bd_static_result *st, bd_check *out, 
             bd_check *c = add(out, &n, max, name, "s", p->mon.slip_longest, BD_SLIP_TIME, 1);
             if (c)
                 c->pass = p->mon.slip_first_t < 0.0;
+        }
+        const bd_part *dp = bd_pulley_drive_part(sim, p);
+        if (dp && dp->type == BD_PART_DRIVE) {
+            double limit = bd_drive_torque_limit(&dp->u.drive);
+            if (isfinite(limit)) {
+                snprintf(name, sizeof name, "drive torque, %s", pd->name);
+                bd_check *c = add(out, &n, max, name, "N·m", p->torque_max_abs, limit, 1);
+                if (c)
+                    c->pass = p->torque_max_abs < BD_DRIVE_AT_LIMIT * limit;
+            }
         }
         if (pd->has_takeup && p->m->movable
             && (isfinite(pd->takeup.travel_min) || isfinite(pd->takeup.travel_max))) {

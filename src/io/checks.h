@@ -11,7 +11,7 @@
 
 typedef struct bd_check {
     char name[112];     /* what is checked, e.g. "belt strength, starts and stops" */
-    char unit[8];       /* of value and limit */
+    char unit[12];      /* of value and limit */
     double value, limit;
     int upper;          /* 1: value must not exceed limit; 0: must reach it */
     int pass;

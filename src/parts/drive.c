@@ -105,6 +105,15 @@ void bd_drive_prepare(bd_sim *sim, bd_drive *dr, const bd_pulley_body *p,
     }
 }
 
+double bd_drive_torque_limit(const bd_drive *dr)
+{
+    const bd_drive_def *d = dr->def;
+    double limit = d->max_torque;
+    if (d->control == BD_CONTROL_MOTOR)
+        limit = fmin(limit, dr->motor_breakdown * d->motor.gear_ratio);
+    return limit;
+}
+
 double bd_drive_torque(const bd_sim *sim, bd_drive *dr, const bd_pulley_body *p, double omega,
                        double *slope)
 {

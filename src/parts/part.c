@@ -3,6 +3,7 @@
  * one switch per phase. */
 #include "parts/parts.h"
 
+#include <math.h>
 #include <stdlib.h>
 
 #include "base/alloc.h"
@@ -191,7 +192,16 @@ void bd_part_report_events(bd_sim *sim, const bd_part *part)
                         tk->limit_first_t, tk->limit_hits > 1 ? " and again later" : "");
         break;
     }
-    case BD_PART_DRIVE:
+    case BD_PART_DRIVE: {
+        const bd_pulley_body *pb = &sim->pulleys[part->pulley];
+        double limit = bd_drive_torque_limit(&part->u.drive);
+        if (isfinite(limit) && pb->torque_max_abs >= BD_DRIVE_AT_LIMIT * limit)
+            bd_sim_warn(sim, "drive '%s' reached its torque limit, %.4g N·m (%s): the belt "
+                        "needed more than it can give", pb->m->def->name, limit,
+                        limit < pb->m->def->drive.max_torque ? "the motor's breakdown torque"
+                                                              : "drive.max_torque");
+        break;
+    }
     case BD_PART_TRANSMISSION: break;
     }
 }

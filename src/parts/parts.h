@@ -114,6 +114,11 @@ double bd_drive_torque(const bd_sim *sim, bd_drive *d, const bd_pulley_body *p, 
 /* a speed loop takes over torque (N·m) from the holdback that held its
  * pulley (after stabilization) */
 void bd_drive_take_over(bd_drive *d, double torque);
+/* the most torque the drive can put on its pulley, N·m: its max_torque
+ * (INFINITY when not given), for a motor also the breakdown torque × gear
+ * ratio; a drive whose peak came within 0.1 % of it was at its limit */
+double bd_drive_torque_limit(const bd_drive *d);
+#define BD_DRIVE_AT_LIMIT 0.999
 
 /* takeup.c */
 double bd_takeup_force(const bd_takeup *tk, double t);

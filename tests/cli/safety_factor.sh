@@ -95,6 +95,24 @@ if grep -q '<h2 id=checks>Checks</h2>' "$tmp/r1/report.html" && [ "$fails" -eq "
 then ok "report: the checks table with $fails FAIL, as summary.json counts"
 else bad "report checks" "$fails FAIL cells, summary.json says $want"; fi
 
+# the drive's torque against its limit: head_drive's start needs ~2.0 kN·m
+# at its peak; with max_torque 1500 N·m the drive saturates, the check
+# fails and a warning says it (with 6000 N·m it passed above)
+sed -e 's/max_torque: 6000/max_torque: 1500/' "$tmp/default.yaml" >"$tmp/weak.yaml"
+"$BELTDYN" run "$tmp/weak.yaml" -o "$tmp/r3" --quiet >/dev/null 2>&1
+if python3 - "$tmp/r3/summary.json" "$tmp/r1/summary.json" <<'PY'
+import json, sys
+a, b = (json.load(open(p)) for p in sys.argv[1:])
+ca = [c for c in a["checks"] if c["check"] == "drive torque, head"][0]
+cb = [c for c in b["checks"] if c["check"] == "drive torque, head"][0]
+assert not ca["pass"] and ca["limit"] == 1500 and ca["value"] >= 0.999 * 1500, ca
+assert cb["pass"] and cb["limit"] == 6000, cb
+assert any("reached its torque limit, 1500" in w for w in a["warnings"]), a["warnings"]
+assert not any("torque limit" in w for w in b["warnings"]), b["warnings"]
+PY
+then ok "drive torque: at max_torque 1500 N·m the check fails with its warning, at 6000 it passes"
+else bad "drive torque" "$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["checks"])' "$tmp/r3/summary.json" | head -c 600)"; fi
+
 "$BELTDYN" check "$tmp/bad.yaml" >/dev/null 2>"$tmp/bad.err"
 rc=$?
 if [ $rc -eq 2 ] && grep -q "bad.yaml:[0-9]*:[0-9]*: error: design.safety_factor.running: expected a number > 0" "$tmp/bad.err"; then
