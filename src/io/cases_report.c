@@ -18,6 +18,7 @@
 #include <unistd.h>
 
 #include "base/file.h"
+#include "base/json_util.h"
 #include "beltdyn/report.h"
 #include "io/html.h"
 #include "io/plot.h"
@@ -36,18 +37,6 @@ static const quantity Q[NQ] = {
     {"belt_tension_min_N", "Lowest belt tension [kN]", 1e-3},
     {"drive_torque_max_Nm", "Peak drive torque [kN·m]", 1e-3},
 };
-
-static double jnum(const cJSON *o, const char *key)
-{
-    const cJSON *v = cJSON_GetObjectItemCaseSensitive(o, key);
-    return cJSON_IsNumber(v) ? v->valuedouble : NAN;
-}
-
-static const char *jstr(const cJSON *o, const char *key)
-{
-    const cJSON *v = cJSON_GetObjectItemCaseSensitive(o, key);
-    return cJSON_IsString(v) ? v->valuestring : "";
-}
 
 /* bars as thick vertical segments, one series per case, x = its index */
 static int plot_peaks(const char *plots, const char *model, const cJSON *cases, int n,
@@ -79,8 +68,8 @@ static int plot_peaks(const char *plots, const char *model, const cJSON *cases, 
         const cJSON *o;
         cJSON_ArrayForEach(o, cases) {
             if (i >= MAX_CASES) break;
-            double v = jnum(o, Q[q].column) * Q[q].scale;
-            snprintf(names[i], sizeof names[i], "%d %s", i + 1, jstr(o, "case"));
+            double v = bd_json_num(o, Q[q].column) * Q[q].scale;
+            snprintf(names[i], sizeof names[i], "%d %s", i + 1, bd_json_str(o, "case"));
             xs[q][i][0] = xs[q][i][1] = i + 1;
             ys[q][i][0] = 0.0;
             ys[q][i][1] = isfinite(v) ? v : 0.0;
@@ -118,7 +107,7 @@ static void html_table(bd_strbuf *b, const char *dir, const cJSON *cases)
     bd_sb_puts(b, "</tr>\n");
     const cJSON *o;
     cJSON_ArrayForEach(o, cases) {
-        const char *name = jstr(o, "case");
+        const char *name = bd_json_str(o, "case");
         char report[PATH_LEN];
         int linked = !strchr(name, '/') && !strstr(name, "..")
                      && snprintf(report, sizeof report, "%s/%s/report.html", dir, name)
@@ -148,14 +137,11 @@ int bd_cases_report_write(const char *dir, char *err, size_t errlen)
         snprintf(err, errlen, "%s: path too long", dir);
         return BD_REPORT_EINPUT;
     }
-    char *text;
-    size_t len;
-    if (bd_read_file(path, &text, &len) != BD_READ_OK) {
+    cJSON *json = bd_json_load(path);
+    if (!json && errno) {
         snprintf(err, errlen, "%s: %s (cases.csv without cases.json?)", path, strerror(errno));
         return BD_REPORT_EINPUT;
     }
-    cJSON *json = cJSON_Parse(text);
-    free(text);
     const cJSON *cases = cJSON_GetObjectItemCaseSensitive(json, "cases");
     if (!cJSON_IsArray(cases)) {
         cJSON_Delete(json);
@@ -163,7 +149,7 @@ int bd_cases_report_write(const char *dir, char *err, size_t errlen)
         return BD_REPORT_EINPUT;
     }
     int n = cJSON_GetArraySize(cases);
-    const char *model = jstr(json, "model");
+    const char *model = bd_json_str(json, "model");
     int rc = 0;
     if (mkdir(plots, 0777) != 0 && errno != EEXIST) {
         snprintf(err, errlen, "%s: %s", plots, strerror(errno));
@@ -182,7 +168,7 @@ int bd_cases_report_write(const char *dir, char *err, size_t errlen)
                        "table's numbers) start when its drives stop "
                        "(<code>records_from_s</code>); its time history is the whole run. "
                        "Slip: ");
-        bd_sb_html(&b, jstr(json, "slip_definition"));
+        bd_sb_html(&b, bd_json_str(json, "slip_definition"));
         bd_sb_puts(&b, ".</p>\n<h2 id=plots>Cases compared</h2>\n");
         if (n > 0 && bd_sb_figure(&b, plots, "cases_peaks",
                                   "Peak and lowest belt tension and peak drive torque of every "

@@ -2,6 +2,7 @@
 #include "beltdyn/report.h"
 
 #include "base/file.h"
+#include "base/json_util.h"
 #include "io/csv_read.h"
 #include "io/html.h"
 #include "io/cases_report.h"
@@ -193,17 +194,6 @@ static char *lbl(report *r)
     return r->labels[r->nlabels++];
 }
 
-static double json_num(const cJSON *obj, const char *key)
-{
-    const cJSON *v = cJSON_GetObjectItemCaseSensitive(obj, key);
-    return cJSON_IsNumber(v) ? v->valuedouble : NAN;
-}
-
-static const char *json_str(const cJSON *obj, const char *key)
-{
-    const cJSON *v = cJSON_GetObjectItemCaseSensitive(obj, key);
-    return cJSON_IsString(v) ? v->valuestring : "";
-}
 
 static int write_plot(report *r, const bd_plot_figure *f, const char *name, const char *caption,
                       char *err, size_t errlen)
@@ -572,7 +562,7 @@ static void mark_extreme(report *r, bd_plot_axes *a, const char *what, const cha
     const char *at = "at";
     if (in && s->label) {
         const cJSON *g = cJSON_GetObjectItemCaseSensitive(r->summary, in);
-        double exact = json_num(cJSON_GetObjectItemCaseSensitive(g, s->label), key);
+        double exact = bd_json_num(cJSON_GetObjectItemCaseSensitive(g, s->label), key);
         if (isfinite(exact) && scale > 0.0) {
             value = magnitude ? copysign(exact / scale, s->y[bi]) : exact / scale;
             at = "near";   /* the step's own peak, by the sample that shows it */
@@ -591,7 +581,7 @@ static void mark_extreme(report *r, bd_plot_axes *a, const char *what, const cha
 static double drive_radius(const report *r, const char *name)
 {
     const cJSON *p = cJSON_GetObjectItemCaseSensitive(r->summary, "pulleys");
-    return json_num(cJSON_GetObjectItemCaseSensitive(p, name), "radius_m");
+    return bd_json_num(cJSON_GetObjectItemCaseSensitive(p, name), "radius_m");
 }
 
 /* the drives' surface speed ω·R in m/s (1), or 0 when a radius is
@@ -1077,7 +1067,7 @@ static void headline(report *r, bd_strbuf *b)
     const cJSON *pulleys = cJSON_GetObjectItemCaseSensitive(r->summary, "pulleys");
     const cJSON *p;
     cJSON_ArrayForEach(p, pulleys) {
-        double lo = json_num(p, "travel_min_m"), hi = json_num(p, "travel_max_m");
+        double lo = bd_json_num(p, "travel_min_m"), hi = bd_json_num(p, "travel_max_m");
         if (isfinite(lo) || isfinite(hi)) {
             char a1[64], a2[64], a3[64];
             fmt_num(a1, sizeof a1, lo);
@@ -1089,13 +1079,13 @@ static void headline(report *r, bd_strbuf *b)
         }
     }
     cJSON_ArrayForEach(p, pulleys) {
-        double tq = json_num(p, "torque_max_Nm");
+        double tq = bd_json_num(p, "torque_max_Nm");
         if (isfinite(tq)) {
             unit u = pick_unit(fabs(tq), "N·m");
             char num[64];
             fmt_num(num, sizeof num, tq / u.scale);
             snprintf(v, sizeof v, "%s %s", num, u.name);
-            double w = json_num(p, "omega_final_rad_s");
+            double w = bd_json_num(p, "omega_final_rad_s");
             if (isfinite(w)) snprintf(d, sizeof d, "%s; final speed %.4g rad/s", p->string, w);
             else snprintf(d, sizeof d, "%s", p->string);
             card(b, NULL, "drive peak torque", v, d);
@@ -1136,7 +1126,7 @@ static void headline(report *r, bd_strbuf *b)
         }
     }
     const cJSON *energy = cJSON_GetObjectItemCaseSensitive(r->summary, "energy");
-    double be = json_num(energy, "balance_error_rel");
+    double be = bd_json_num(energy, "balance_error_rel");
     if (isfinite(be)) {
         snprintf(v, sizeof v, "%.3g %%", 100.0 * be);
         card(b, be > 0.01 ? "bad" : "ok", "energy balance error", v,
@@ -1160,10 +1150,10 @@ static int write_html(report *r, char *err, size_t errlen)
     bd_sb_puts(&b, "</style></head><body><main>\n<h1>");
     bd_sb_html(&b, r->model);
     bd_sb_puts(&b, "</h1>\n<p class=sub>beltdyn transient run");
-    double dur = json_num(r->summary, "duration_s"), len = json_num(r->summary, "belt_length_m");
+    double dur = bd_json_num(r->summary, "duration_s"), len = bd_json_num(r->summary, "belt_length_m");
     if (isfinite(dur)) bd_sb_printf(&b, " · %.4g s simulated", dur);
     if (isfinite(len)) bd_sb_printf(&b, " · belt length %.1f m", len);
-    double nodes = json_num(r->summary, "nodes");
+    double nodes = bd_json_num(r->summary, "nodes");
     if (isfinite(nodes)) bd_sb_printf(&b, " · %.0f nodes", nodes);
     bd_sb_puts(&b, "</p>\n<nav>");
     bd_sb_puts(&b, "<a href=\"#plots\">plots</a><a href=\"#summary\">summary</a>");
@@ -1182,15 +1172,15 @@ static int write_html(report *r, char *err, size_t errlen)
         cJSON_ArrayForEach(c, checks) {
             int pass = cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(c, "pass"));
             bd_sb_puts(&b, "<tr><td>");
-            bd_sb_html(&b, json_str(c, "check"));
+            bd_sb_html(&b, bd_json_str(c, "check"));
             bd_sb_printf(&b, "</td><td class=%s>%s</td>", pass ? "ok" : "bad",
                          pass ? "pass" : "FAIL");
             bd_sb_json_cell(&b, cJSON_GetObjectItemCaseSensitive(c, "value"));
             bd_sb_printf(&b, "<td class=n>%s %.4g</td>",
-                         strcmp(json_str(c, "limit_is"), "at least") == 0 ? "≥" : "≤",
-                         json_num(c, "limit"));
+                         strcmp(bd_json_str(c, "limit_is"), "at least") == 0 ? "≥" : "≤",
+                         bd_json_num(c, "limit"));
             bd_sb_puts(&b, "<td>");
-            bd_sb_html(&b, json_str(c, "unit"));
+            bd_sb_html(&b, bd_json_str(c, "unit"));
             bd_sb_puts(&b, "</td></tr>\n");
         }
         bd_sb_puts(&b, "</table>\n");
@@ -1283,13 +1273,13 @@ static int read_summary(report *r, char *err, size_t errlen)
 
     /* design limits: top level, else from the static table */
     const cJSON *stat = cJSON_GetObjectItemCaseSensitive(r->summary, "static");
-    r->rated_N = json_num(r->summary, "rated_tension_N");
-    r->safety_factor = json_num(r->summary, "safety_factor_starting");
+    r->rated_N = bd_json_num(r->summary, "rated_tension_N");
+    r->safety_factor = bd_json_num(r->summary, "safety_factor_starting");
     if (!(r->safety_factor > 0.0))
-        r->safety_factor = json_num(r->summary, "safety_factor");   /* older outputs */
-    r->t_min_sag_N = json_num(r->summary, "T_min_sag_N");
-    if (!isfinite(r->t_min_sag_N)) r->t_min_sag_N = json_num(stat, "T_min_sag_N");
-    if (!isfinite(r->rated_N)) r->rated_N = json_num(stat, "rated_tension_N");
+        r->safety_factor = bd_json_num(r->summary, "safety_factor");   /* older outputs */
+    r->t_min_sag_N = bd_json_num(r->summary, "T_min_sag_N");
+    if (!isfinite(r->t_min_sag_N)) r->t_min_sag_N = bd_json_num(stat, "T_min_sag_N");
+    if (!isfinite(r->rated_N)) r->rated_N = bd_json_num(stat, "rated_tension_N");
     /* the static table's "safety_factor" is rated / computed maximum tension,
      * an outcome, not the design factor: never take the allowable from it */
     if (!(r->rated_N > 0.0)) r->rated_N = NAN;
@@ -1300,24 +1290,20 @@ static int read_summary(report *r, char *err, size_t errlen)
     }
 
     const cJSON *ten = cJSON_GetObjectItemCaseSensitive(r->summary, "tension");
-    double v = json_num(ten, "max_N");
+    double v = bd_json_num(ten, "max_N");
     if (isfinite(v))
-        r->tmax = (point){1, v, json_num(ten, "max_time_s"), json_num(ten, "max_s_m")};
-    v = json_num(ten, "min_N");
+        r->tmax = (point){1, v, bd_json_num(ten, "max_time_s"), bd_json_num(ten, "max_s_m")};
+    v = bd_json_num(ten, "min_N");
     if (isfinite(v))
-        r->tmin = (point){1, v, json_num(ten, "min_time_s"), json_num(ten, "min_s_m")};
+        r->tmin = (point){1, v, bd_json_num(ten, "min_time_s"), bd_json_num(ten, "min_s_m")};
     return 0;
 }
 
 int bd_report_print_checks(const char *dir, FILE *f)
 {
-    char path[PATH_LEN], *text;
-    size_t len;
-    if (bd_path_join(path, sizeof path, dir, "summary.json")
-        || bd_read_file(path, &text, &len) != BD_READ_OK)
-        return -1;
-    cJSON *root = cJSON_Parse(text);
-    free(text);
+    char path[PATH_LEN];
+    cJSON *root = bd_path_join(path, sizeof path, dir, "summary.json") ? NULL
+                                                                        : bd_json_load(path);
     const cJSON *checks = cJSON_GetObjectItemCaseSensitive(root, "checks"), *c;
     if (!cJSON_IsArray(checks)) {
         cJSON_Delete(root);
@@ -1329,9 +1315,9 @@ int bd_report_print_checks(const char *dir, FILE *f)
     cJSON_ArrayForEach(c, checks) {
         int pass = cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(c, "pass"));
         fprintf(f, "  %-4s %-42s %12.5g %s %-12.5g %s\n", pass ? "pass" : "FAIL",
-                json_str(c, "check"), json_num(c, "value"),
-                strcmp(json_str(c, "limit_is"), "at least") == 0 ? ">=" : "<=",
-                json_num(c, "limit"), json_str(c, "unit"));
+                bd_json_str(c, "check"), bd_json_num(c, "value"),
+                strcmp(bd_json_str(c, "limit_is"), "at least") == 0 ? ">=" : "<=",
+                bd_json_num(c, "limit"), bd_json_str(c, "unit"));
     }
     cJSON_Delete(root);
     return failed;

@@ -19,6 +19,7 @@
 #include <sys/stat.h>
 
 #include "base/file.h"
+#include "base/json_util.h"
 #include "beltdyn/report.h"
 #include "io/csv_read.h"
 #include "io/html.h"
@@ -58,18 +59,6 @@ static int curve_index(const char *name)
     return 0;
 }
 
-static const char *jstr(const cJSON *o, const char *key)
-{
-    const cJSON *v = cJSON_GetObjectItemCaseSensitive(o, key);
-    return cJSON_IsString(v) ? v->valuestring : "";
-}
-
-static double jnum(const cJSON *o, const char *key)
-{
-    const cJSON *v = cJSON_GetObjectItemCaseSensitive(o, key);
-    return cJSON_IsNumber(v) ? v->valuedouble : NAN;
-}
-
 static int read_study(study *s, char *err, size_t errlen)
 {
     char path[PATH_LEN];
@@ -77,31 +66,28 @@ static int read_study(study *s, char *err, size_t errlen)
         snprintf(err, errlen, "%s: path too long", s->dir);
         return BD_REPORT_EINPUT;
     }
-    char *text;
-    size_t len;
-    if (bd_read_file(path, &text, &len) != BD_READ_OK) {
+    s->json = bd_json_load(path);
+    if (!s->json && errno) {
         snprintf(err, errlen, "%s: %s (study.csv without study.json?)", path, strerror(errno));
         return BD_REPORT_EINPUT;
     }
-    s->json = cJSON_Parse(text);
-    free(text);
     const cJSON *cases = cJSON_GetObjectItemCaseSensitive(s->json, "cases");
     if (!cJSON_IsArray(cases)) {
         snprintf(err, errlen, "%s: not a study table (no \"cases\" list)", path);
         return BD_REPORT_EINPUT;
     }
-    s->model = jstr(s->json, "model");
+    s->model = bd_json_str(s->json, "model");
     const cJSON *o;
     cJSON_ArrayForEach(o, cases) {
         if (s->n >= MAX_CASES) break;
         scase *c = &s->c[s->n++];
-        c->name = jstr(o, "case");
-        c->curve = jstr(o, "curve");
-        c->status = jstr(o, "status");
-        c->time = jnum(o, "start_time_s");
-        c->delay = jnum(o, "delay_s");
-        c->tight_max = jnum(o, "tight_tension_max_N");
-        c->accel_max = fabs(jnum(o, "belt_accel_max_mps2"));
+        c->name = bd_json_str(o, "case");
+        c->curve = bd_json_str(o, "curve");
+        c->status = bd_json_str(o, "status");
+        c->time = bd_json_num(o, "start_time_s");
+        c->delay = bd_json_num(o, "delay_s");
+        c->tight_max = bd_json_num(o, "tight_tension_max_N");
+        c->accel_max = fabs(bd_json_num(o, "belt_accel_max_mps2"));
         c->curve_index = curve_index(c->curve);
         if (!c->name[0] || strchr(c->name, '/') || strstr(c->name, "..")) {
             snprintf(err, errlen, "%s: case %d has no usable name", path, s->n);
@@ -300,7 +286,7 @@ static int write_html(study *s, const char *const *plots, const char *const *cap
                      "and report in its directory</p>\n<h2>Cases</h2>\n", s->n);
     html_table(&b, cJSON_GetObjectItemCaseSensitive(s->json, "cases"));
     bd_sb_puts(&b, "<p class=sub>Slip: ");
-    bd_sb_html(&b, jstr(s->json, "slip_definition"));
+    bd_sb_html(&b, bd_json_str(s->json, "slip_definition"));
     bd_sb_puts(&b, ".</p>\n<h2 id=plots>Start curves compared</h2>\n");
     for (int i = 0; i < nplots; i++)
         if (bd_sb_figure(&b, s->plots, plots[i], captions[i], err, errlen)) {

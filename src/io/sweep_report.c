@@ -23,6 +23,7 @@
 #include <sys/stat.h>
 
 #include "base/file.h"
+#include "base/json_util.h"
 #include "beltdyn/report.h"
 #include "io/html.h"
 #include "io/plot.h"
@@ -64,12 +65,13 @@ typedef struct sweep {
     double rho[3][MAX_KEYS];
 } sweep;
 
+/* a table cell as a number: slipped (a bool) as 0 or 1 */
 static double jnum(const cJSON *o, const char *key)
 {
     const cJSON *v = cJSON_GetObjectItemCaseSensitive(o, key);
     if (cJSON_IsBool(v))
         return cJSON_IsTrue(v) ? 1.0 : 0.0;
-    return cJSON_IsNumber(v) ? v->valuedouble : NAN;
+    return bd_json_num(o, key);
 }
 
 static const outspec *spec_of(int q)

@@ -13,6 +13,7 @@
 #include "base/constants.h"
 
 #include <math.h>
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -475,16 +476,17 @@ void bd_path_free(bd_path *path)
     memset(path, 0, sizeof *path);
 }
 
-int bd_path_segment_at(const bd_path *path, double s)
+/* the last of items lo..hi (in s0 order) that starts at or before s: a
+ * binary search on the double `s0` at offset `at` of items `stride`
+ * bytes apart (segments and route pieces alike) */
+static int last_starting_by(const void *items, size_t stride, size_t at, int lo, int hi, double s)
 {
-    s = fmod(s, path->length);
-    if (s < 0.0)
-        s += path->length;
-    /* binary search on s0 */
-    int lo = 0, hi = path->segment_count - 1;
+    const char *base = (const char *)items + at;
     while (lo < hi) {
         int mid = (lo + hi + 1) / 2;
-        if (path->segments[mid].s0 <= s)
+        double s0;
+        memcpy(&s0, base + (size_t)mid * stride, sizeof s0);
+        if (s0 <= s)
             lo = mid;
         else
             hi = mid - 1;
@@ -492,18 +494,21 @@ int bd_path_segment_at(const bd_path *path, double s)
     return lo;
 }
 
+int bd_path_segment_at(const bd_path *path, double s)
+{
+    s = fmod(s, path->length);
+    if (s < 0.0)
+        s += path->length;
+    return last_starting_by(path->segments, sizeof *path->segments,
+                            offsetof(bd_path_segment, s0), 0, path->segment_count - 1, s);
+}
+
 /* the piece of routed span g holding s */
 static const bd_path_piece *span_piece_at(const bd_path *path, const bd_path_segment *g, double s)
 {
-    int lo = g->piece_first, hi = g->piece_first + g->piece_count - 1;
-    while (lo < hi) {
-        int mid = (lo + hi + 1) / 2;
-        if (path->pieces[mid].s0 <= s)
-            lo = mid;
-        else
-            hi = mid - 1;
-    }
-    return &path->pieces[lo];
+    return &path->pieces[last_starting_by(path->pieces, sizeof *path->pieces,
+                                          offsetof(bd_path_piece, s0), g->piece_first,
+                                          g->piece_first + g->piece_count - 1, s)];
 }
 
 void bd_path_point(const bd_path *path, double s, double p[2], double tangent[2])
