@@ -544,11 +544,15 @@ static void mark_extreme(report *r, bd_plot_axes *a, const char *what, const cha
     int bs = -1;
     size_t bi = 0;
     double best = -INFINITY;
+    /* a run whose records start late (a stop case, records_from_s): its
+     * summary's extremes are from then on, and so is the marked sample */
+    double from = bd_json_num(r->summary, "records_from_s");
+    if (!isfinite(from)) from = -INFINITY;
     for (int i = 0; i < a->nseries; i++) {
         const bd_plot_series *s = &a->series[i];
         for (size_t k = 0; k < s->n; k++) {
             double v = magnitude ? fabs(s->y[k]) : s->y[k];
-            if (isfinite(v) && isfinite(s->x[k]) && v > best) {
+            if (isfinite(v) && isfinite(s->x[k]) && s->x[k] >= from - 1e-9 && v > best) {
                 best = v;
                 bs = i;
                 bi = k;

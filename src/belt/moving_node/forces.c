@@ -45,24 +45,15 @@ static void elements(bd_sim *sim)
     const bd_mn_model *mm = bd_mn_model_of(sim);
     bd_mn *mn = bd_mn_of(sim);
     const int n = sim->model->n;
-    const double EA = sim->model->EA, *v = sim->vx, *w = mn->w;
+    const double EA = sim->model->EA, *v = sim->vx;
     for (int e = 0; e < n; e++) {
         int j = bd_mn_next(e, n);
-        double ds = bd_mn_element_ds(mm, mn, e), rate = v[j] - v[e];
+        double rate = v[j] - v[e];
         if (mm->eq[e] >= 0)
             rate += mm->dsq[e] * sim->pulleys[mm->eq[e]].qdot;
-        double l = ds, cs = 1.0, sn = 0.0;
-        if (!mm->on_arc[e]) {
-            /* in a vertical curve the chord shortens as the belt moves
-             * towards the centre of curvature: by kw·(w_e + w_j), the
-             * turn over the element times its mean offset (plane
-             * geometry: an arc of radius R − w is (1 − w/R) as long);
-             * its derivative is the pull T·Δθ across (below) */
-            double dw = w[j] - w[e], dl = ds - mm->kw[e] * (w[e] + w[j]);
-            l = sqrt(dl * dl + dw * dw);
-            cs = dl / l;
-            sn = dw / l;
-        }
+        /* its length in space, shortened in a vertical curve (the pull
+         * T·Δθ across, below) */
+        double cs, sn, l = bd_mn_element_length(mm, mn, e, n, &cs, &sn);
         mn->len[e] = l;
         mn->cos_e[e] = cs;
         mn->sin_e[e] = sn;

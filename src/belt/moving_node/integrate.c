@@ -98,18 +98,6 @@ void bd_mn_takeup_geometry(bd_sim *sim)
     }
 }
 
-/* element e's length in space (as forces.c) */
-static double element_length(const bd_sim *sim, int e)
-{
-    const bd_mn_model *mm = bd_mn_model_of(sim);
-    const bd_mn *mn = bd_mn_of(sim);
-    double ds = bd_mn_element_ds(mm, mn, e);
-    if (mm->on_arc[e])
-        return ds;
-    double dw = mn->w[bd_mn_next(e, sim->model->n)] - mn->w[e];
-    return sqrt(ds * ds + dw * dw);
-}
-
 /* ½·EA·ε²·ΔX of every element, and ½·EI·κ²·h of every span node */
 double bd_mn_elastic_energy(const bd_sim *sim)
 {
@@ -119,7 +107,8 @@ double bd_mn_elastic_energy(const bd_sim *sim)
     const double EA = sim->model->EA, EI = sim->model->EI;
     double e = 0.0;
     for (int k = 0; k < n; k++) {
-        double eps = element_length(sim, k) / mn->dX[k] - 1.0;
+        double cs, sn;
+        double eps = bd_mn_element_length(mm, mn, k, n, &cs, &sn) / mn->dX[k] - 1.0;
         e += 0.5 * EA * eps * eps * mn->dX[k];
     }
     if (EI > 0.0)

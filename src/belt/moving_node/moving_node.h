@@ -25,6 +25,8 @@
 #ifndef BD_MOVING_NODE_H
 #define BD_MOVING_NODE_H
 
+#include <math.h>
+
 #include "belt/belt.h"
 #include "belt/load_fronts.h"
 
@@ -156,6 +158,30 @@ static inline double bd_mn_element_ds(const bd_mn_model *mm, const bd_mn *mn, in
     if (mm->eq[e] >= 0)
         ds += mm->dsq[e] * mn->q_seen[mm->eq[e]];
     return ds;
+}
+
+/* element e's length in space and its direction against the path (cos,
+ * sin): on a wrap its length along the arc; on a span the chord between
+ * its nodes' offsets w, which in a vertical curve shortens as the belt
+ * moves towards the centre of curvature, by kw·(w_e + w_j) — the turn
+ * over the element times its mean offset (plane geometry: an arc of
+ * radius R − w is (1 − w/R) as long); its derivative is the pull T·Δθ
+ * across. forces.c takes the tension from it, integrate.c the elastic
+ * energy, so the energy booked is the forces' own. */
+static inline double bd_mn_element_length(const bd_mn_model *mm, const bd_mn *mn, int e, int n,
+                                          double *cs, double *sn)
+{
+    double ds = bd_mn_element_ds(mm, mn, e);
+    *cs = 1.0;
+    *sn = 0.0;
+    if (mm->on_arc[e])
+        return ds;
+    int j = bd_mn_next(e, n);
+    double dw = mn->w[j] - mn->w[e], dl = ds - mm->kw[e] * (mn->w[e] + mn->w[j]);
+    double l = sqrt(dl * dl + dw * dw);
+    *cs = dl / l;
+    *sn = dw / l;
+    return l;
 }
 
 /* layout.c: the nodes on the path */
