@@ -10,9 +10,9 @@
  *   - sag: the static lowest tension of the carrying run against
  *     (m'G + m'L)·g·a/(8·sag_ratio);
  *   - drive slip in the run (the drive monitor's confirmed slip);
- *   - the drive's peak torque against what it can give (max_torque, a
- *     motor's breakdown torque × gear ratio): reaching it, the drive could
- *     not follow its start;
+ *   - the drive's peak torque while driving against its max_torque:
+ *     reaching it, the speed loop was saturated and could not follow its
+ *     start (a brake's torque after a stop is not the drive's);
  *   - takeup travel against the takeup's travel limits, when given;
  *   - lift-off from the idlers (the 2D belts);
  *   - the run's energy balance (a trust check: 1 %). */
@@ -25,19 +25,24 @@
 #include <stdio.h>
 #include <string.h>
 
-static bd_check *add(bd_check *out, int *n, int max, const char *name, const char *unit,
-                     double value, double limit, int upper)
+const char *bd_check_rule_name(bd_check_rule rule)
+{
+    return rule == BD_CHECK_AT_LEAST ? "at least" : rule == BD_CHECK_BELOW ? "below" : "at most";
+}
+
+static void add(bd_check *out, int *n, int max, const char *name, const char *unit, double value,
+                double limit, bd_check_rule rule)
 {
     if (*n >= max)
-        return NULL;
+        return;
     bd_check *c = &out[(*n)++];
     snprintf(c->name, sizeof c->name, "%s", name);
     snprintf(c->unit, sizeof c->unit, "%s", unit);
     c->value = value;
     c->limit = limit;
-    c->upper = upper;
-    c->pass = upper ? value <= limit : value >= limit;
-    return c;
+    c->rule = rule;
+    c->pass = rule == BD_CHECK_AT_MOST ? value <= limit
+            : rule == BD_CHECK_AT_LEAST ? value >= limit : value < limit;
 }
 
 int bd_run_checks(const bd_sim *sim, const bd_static_result *st, bd_check *out, int max)
@@ -47,53 +52,54 @@ int bd_run_checks(const bd_sim *sim, const bd_static_result *st, bd_check *out, 
     int n = 0;
     if (rated > 0.0 && sim->tension_max > -INFINITY)
         add(out, &n, max, "belt strength, starts and stops", "N", sim->tension_max,
-            rated / def->design.safety_factor.starting, 1);
+            rated / def->design.safety_factor.starting, BD_CHECK_AT_MOST);
     if (st) {
         if (rated > 0.0)
             add(out, &n, max, "belt strength, steady running (static)", "N", st->T_max_N,
-                rated / def->design.safety_factor.running, 1);
-        add(out, &n, max, "slip margin, T2 (static)", "N", st->T2_N, st->T2_min_slip_N, 0);
+                rated / def->design.safety_factor.running, BD_CHECK_AT_MOST);
+        add(out, &n, max, "slip margin, T2 (static)", "N", st->T2_N, st->T2_min_slip_N,
+            BD_CHECK_AT_LEAST);
         double low = INFINITY;
         for (int i = 0; i < st->span_count; i++)
             if (st->spans[i].loaded || st->spans[i].carry)
                 low = fmin(low, fmin(st->spans[i].T_start_N, st->spans[i].T_end_N));
         if (isfinite(low) && st->T_min_sag_N > 0.0)
-            add(out, &n, max, "sag, carrying run (static)", "N", low, st->T_min_sag_N, 0);
+            add(out, &n, max, "sag, carrying run (static)", "N", low, st->T_min_sag_N,
+                BD_CHECK_AT_LEAST);
     }
     for (int i = 0; i < sim->model->pulley_count; i++) {
         const bd_pulley_body *p = &sim->pulleys[i];
         const bd_pulley_def *pd = &def->pulleys[i];
         char name[112];
         if (pd->has_drive) {
-            snprintf(name, sizeof name, "drive slip, %s", pd->name);
             /* slip counts once it lasts BD_SLIP_TIME (the monitor's rule) */
-            bd_check *c = add(out, &n, max, name, "s", p->mon.slip_longest, BD_SLIP_TIME, 1);
-            if (c)
-                c->pass = p->mon.slip_first_t < 0.0;
+            snprintf(name, sizeof name, "drive slip, %s", pd->name);
+            add(out, &n, max, name, "s", p->mon.slip_longest, BD_SLIP_TIME, BD_CHECK_BELOW);
         }
         const bd_part *dp = bd_pulley_drive_part(sim, p);
-        if (dp && dp->type == BD_PART_DRIVE) {
-            double limit = bd_drive_torque_limit(&dp->u.drive);
-            if (isfinite(limit)) {
-                snprintf(name, sizeof name, "drive torque, %s", pd->name);
-                bd_check *c = add(out, &n, max, name, "N·m", p->torque_max_abs, limit, 1);
-                if (c)
-                    c->pass = p->torque_max_abs < BD_DRIVE_AT_LIMIT * limit;
-            }
+        if (dp && dp->type == BD_PART_DRIVE && isfinite(pd->drive.max_torque)) {
+            /* the drive's torque is clipped to max_torque: at it, saturated */
+            snprintf(name, sizeof name, "drive torque, %s", pd->name);
+            add(out, &n, max, name, "N·m", dp->u.drive.driving_peak, pd->drive.max_torque,
+                BD_CHECK_BELOW);
         }
-        if (pd->has_takeup && p->m->movable
-            && (isfinite(pd->takeup.travel_min) || isfinite(pd->takeup.travel_max))) {
-            snprintf(name, sizeof name, "takeup travel, %s", pd->name);
-            int up = isfinite(pd->takeup.travel_max);
-            bd_check *c = add(out, &n, max, name, "m", up ? p->travel_max : p->travel_min,
-                              up ? pd->takeup.travel_max : pd->takeup.travel_min, up);
-            if (c)
-                c->pass = p->travel_max <= pd->takeup.travel_max
-                          && p->travel_min >= pd->takeup.travel_min;
+        if (pd->has_takeup && p->m->movable) {
+            if (isfinite(pd->takeup.travel_max)) {
+                snprintf(name, sizeof name, "takeup travel out, %s", pd->name);
+                add(out, &n, max, name, "m", p->travel_max, pd->takeup.travel_max,
+                    BD_CHECK_AT_MOST);
+            }
+            if (isfinite(pd->takeup.travel_min)) {
+                snprintf(name, sizeof name, "takeup travel in, %s", pd->name);
+                add(out, &n, max, name, "m", p->travel_min, pd->takeup.travel_min,
+                    BD_CHECK_AT_LEAST);
+            }
         }
     }
     if (sim->model->belt->records_lift_off)
-        add(out, &n, max, "lift-off from the idlers", "s", sim->lift.total, 0.0, 1);
-    add(out, &n, max, "energy balance of the run", "-", sim->energy.balance_error_rel, 0.01, 1);
+        add(out, &n, max, "lift-off from the idlers", "s", sim->lift.total, 0.0,
+            BD_CHECK_AT_MOST);
+    add(out, &n, max, "energy balance of the run", "-", sim->energy.balance_error_rel, 0.01,
+        BD_CHECK_AT_MOST);
     return n;
 }

@@ -9,13 +9,24 @@
 
 #define BD_CHECK_MAX 24
 
+/* how value must stand to limit; pass follows from it alone */
+typedef enum bd_check_rule {
+    BD_CHECK_AT_MOST = 0,   /* value <= limit */
+    BD_CHECK_AT_LEAST,      /* value >= limit */
+    BD_CHECK_BELOW          /* value < limit: reaching it fails (a torque
+                               clipped at its limit, a slip that lasted) */
+} bd_check_rule;
+
 typedef struct bd_check {
     char name[112];     /* what is checked, e.g. "belt strength, starts and stops" */
     char unit[12];      /* of value and limit */
     double value, limit;
-    int upper;          /* 1: value must not exceed limit; 0: must reach it */
+    bd_check_rule rule;
     int pass;
 } bd_check;
+
+/* "at most", "at least", "below": summary.json's limit_is */
+const char *bd_check_rule_name(bd_check_rule rule);
 
 /* the checks that apply to this run (st: the static calculation, or NULL
  * when the model has no design or it failed); how many, at most max */

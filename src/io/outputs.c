@@ -234,7 +234,7 @@ static void add_checks(cJSON *root, const bd_sim *sim, const bd_static_result *s
         bd_json_add_number(c, "value", checks[i].value);
         bd_json_add_number(c, "limit", checks[i].limit);
         cJSON_AddStringToObject(c, "unit", checks[i].unit);
-        cJSON_AddStringToObject(c, "limit_is", checks[i].upper ? "at most" : "at least");
+        cJSON_AddStringToObject(c, "limit_is", bd_check_rule_name(checks[i].rule));
         cJSON_AddBoolToObject(c, "pass", checks[i].pass);
         cJSON_AddItemToArray(a, c);
         failed += !checks[i].pass;

@@ -1143,6 +1143,12 @@ static void headline(report *r, bd_strbuf *b)
     bd_sb_puts(b, "</div>\n");
 }
 
+/* a check's limit_is as a sign: at most ≤, at least ≥, below < */
+static const char *rule_sign(const char *limit_is)
+{
+    return strcmp(limit_is, "at least") == 0 ? "≥" : strcmp(limit_is, "below") == 0 ? "<" : "≤";
+}
+
 static int write_html(report *r, char *err, size_t errlen)
 {
     bd_strbuf b = {0};
@@ -1180,8 +1186,7 @@ static int write_html(report *r, char *err, size_t errlen)
             bd_sb_printf(&b, "</td><td class=%s>%s</td>", pass ? "ok" : "bad",
                          pass ? "pass" : "FAIL");
             bd_sb_json_cell(&b, cJSON_GetObjectItemCaseSensitive(c, "value"));
-            bd_sb_printf(&b, "<td class=n>%s %.4g</td>",
-                         strcmp(bd_json_str(c, "limit_is"), "at least") == 0 ? "≥" : "≤",
+            bd_sb_printf(&b, "<td class=n>%s %.4g</td>", rule_sign(bd_json_str(c, "limit_is")),
                          bd_json_num(c, "limit"));
             bd_sb_puts(&b, "<td>");
             bd_sb_html(&b, bd_json_str(c, "unit"));
@@ -1320,7 +1325,7 @@ int bd_report_print_checks(const char *dir, FILE *f)
         int pass = cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(c, "pass"));
         fprintf(f, "  %-4s %-42s %12.5g %s %-12.5g %s\n", pass ? "pass" : "FAIL",
                 bd_json_str(c, "check"), bd_json_num(c, "value"),
-                strcmp(bd_json_str(c, "limit_is"), "at least") == 0 ? ">=" : "<=",
+                rule_sign(bd_json_str(c, "limit_is")),
                 bd_json_num(c, "limit"), bd_json_str(c, "unit"));
     }
     cJSON_Delete(root);

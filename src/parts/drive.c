@@ -105,13 +105,9 @@ void bd_drive_prepare(bd_sim *sim, bd_drive *dr, const bd_pulley_body *p,
     }
 }
 
-double bd_drive_torque_limit(const bd_drive *dr)
+int bd_drive_stopped(const bd_drive *dr, double t)
 {
-    const bd_drive_def *d = dr->def;
-    double limit = d->max_torque;
-    if (d->control == BD_CONTROL_MOTOR)
-        limit = fmin(limit, dr->motor_breakdown * d->motor.gear_ratio);
-    return limit;
+    return dr->def->stop_mode != BD_STOP_NONE && t >= dr->def->stop_at;
 }
 
 double bd_drive_torque(const bd_sim *sim, bd_drive *dr, const bd_pulley_body *p, double omega,
@@ -122,7 +118,7 @@ double bd_drive_torque(const bd_sim *sim, bd_drive *dr, const bd_pulley_body *p,
     double K = 0.0;   /* −dT/dω where the torque is not clipped */
     if (slope)
         *slope = 0.0;
-    int stopped = d->stop_mode != BD_STOP_NONE && t >= d->stop_at;
+    int stopped = bd_drive_stopped(dr, t);
     if (stopped && d->stop_mode == BD_STOP_COAST)
         return 0.0;
     if (stopped && d->stop_mode == BD_STOP_BRAKE) {

@@ -123,9 +123,13 @@ void bd_part_advance(bd_sim *sim, bd_part *part, double omega_old, double w_mid,
     bd_pulley_body *p = &sim->pulleys[part->pulley];
     bd_energy *en = &sim->energy;
     switch (part->type) {
-    case BD_PART_DRIVE:
+    case BD_PART_DRIVE: {
+        bd_drive *dr = &part->u.drive;
         en->input += p->drive_torque * w_mid * sim->model->dt;
+        if (!bd_drive_stopped(dr, sim->t) && fabs(p->drive_torque) > dr->driving_peak)
+            dr->driving_peak = fabs(p->drive_torque);
         break;
+    }
     case BD_PART_TRANSMISSION:
         bd_transmission_advance(sim, part, omega_old, ke, w_nc);
         break;
@@ -166,6 +170,16 @@ void bd_part_reset(bd_part *part)
     switch (part->type) {
     case BD_PART_DRIVE: part->u.drive.integral = 0.0; break;
     case BD_PART_TRANSMISSION: part->u.transmission.drive.integral = 0.0; break;
+    case BD_PART_TAKEUP: break;
+    }
+    bd_part_records_clear(part);
+}
+
+void bd_part_records_clear(bd_part *part)
+{
+    switch (part->type) {
+    case BD_PART_DRIVE: part->u.drive.driving_peak = 0.0; break;
+    case BD_PART_TRANSMISSION: part->u.transmission.drive.driving_peak = 0.0; break;
     case BD_PART_TAKEUP: part->u.takeup.limit_hits = 0; break;
     }
 }
@@ -193,13 +207,13 @@ void bd_part_report_events(bd_sim *sim, const bd_part *part)
         break;
     }
     case BD_PART_DRIVE: {
-        const bd_pulley_body *pb = &sim->pulleys[part->pulley];
-        double limit = bd_drive_torque_limit(&part->u.drive);
-        if (isfinite(limit) && pb->torque_max_abs >= BD_DRIVE_AT_LIMIT * limit)
-            bd_sim_warn(sim, "drive '%s' reached its torque limit, %.4g N·m (%s): the belt "
-                        "needed more than it can give", pb->m->def->name, limit,
-                        limit < pb->m->def->drive.max_torque ? "the motor's breakdown torque"
-                                                              : "drive.max_torque");
+        /* the speed loop's torque is clipped to max_torque: at it exactly,
+         * the drive was saturated */
+        const bd_drive *dr = &part->u.drive;
+        if (dr->driving_peak >= dr->def->max_torque)
+            bd_sim_warn(sim, "drive '%s' reached its torque limit, %.4g N·m (drive.max_torque): "
+                        "the belt needed more than it can give",
+                        sim->pulleys[part->pulley].m->def->name, dr->def->max_torque);
         break;
     }
     case BD_PART_TRANSMISSION: break;

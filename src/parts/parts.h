@@ -26,6 +26,8 @@ typedef struct bd_drive {
     double motor_breakdown; /* build: N·m at the motor shaft (motor control) */
     double motor_slip_b;    /* build: breakdown slip, - */
     double integral;        /* step: speed-controller integral state (rad) */
+    double driving_peak;    /* stats: N·m, largest |torque| applied while it
+                               drives (not stopped: a brake is not the drive) */
 } bd_drive;
 
 /* a takeup's pull and travel limits (takeup.c); the carriage itself is the
@@ -68,8 +70,11 @@ void bd_part_advance(bd_sim *sim, bd_part *part, double omega_old, double w_mid,
 double bd_part_potential(const bd_sim *sim, const bd_part *part);
 /* the transmissions' stored energy, J */
 double bd_parts_stored_energy(const bd_sim *sim);
-/* run statistics back to zero (after stabilization) */
+/* its state and run statistics back to zero (after stabilization) */
 void bd_part_reset(bd_part *part);
+/* its run statistics alone (a drive's driving peak, a takeup's limit
+ * hits): the records start again (bd_sim_records_restart) */
+void bd_part_records_clear(bd_part *part);
 /* after stabilization, the pulley's holdback lets go: a drive takes over
  * the torque it held (N·m on the pulley) */
 void bd_part_release(bd_part *part, double holding_torque);
@@ -114,11 +119,8 @@ double bd_drive_torque(const bd_sim *sim, bd_drive *d, const bd_pulley_body *p, 
 /* a speed loop takes over torque (N·m) from the holdback that held its
  * pulley (after stabilization) */
 void bd_drive_take_over(bd_drive *d, double torque);
-/* the most torque the drive can put on its pulley, N·m: its max_torque
- * (INFINITY when not given), for a motor also the breakdown torque × gear
- * ratio; a drive whose peak came within 0.1 % of it was at its limit */
-double bd_drive_torque_limit(const bd_drive *d);
-#define BD_DRIVE_AT_LIMIT 0.999
+/* 1: the drive has been stopped (its stop mode acts) at time t */
+int bd_drive_stopped(const bd_drive *d, double t);
 
 /* takeup.c */
 double bd_takeup_force(const bd_takeup *tk, double t);

@@ -123,18 +123,15 @@ static int restart_clock(bd_sim *sim)
     for (int i = 0; i < sim->model->pulley_count; i++) {
         bd_pulley_body *p = &sim->pulleys[i];
         p->q = 0.0;
-        p->travel_min = p->travel_max = 0.0;
-        p->torque_max_abs = 0.0;
         /* what the held pulley's holdback carried: the belt's friction
          * torque on it, reversed */
         for (int m = p->m->first_part; m < p->m->first_part + p->m->part_count; m++) {
             bd_part_reset(&sim->parts[m]);
             bd_part_release(&sim->parts[m], -p->torque_friction);
         }
-        if (p->m->def->has_drive)
-            bd_monitor_reset(sim, p);
     }
-    bd_run_records_clear(sim);
+    /* travel from q = 0, extremes, monitors, probes, lift-off */
+    bd_sim_records_restart(sim);
     memset(&sim->energy, 0, sizeof sim->energy);
     return bd_sim_start_at_rest(sim);
 }

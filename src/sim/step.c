@@ -104,6 +104,8 @@ void bd_sim_records_restart(bd_sim *sim)
         if (p->m->def->has_drive)
             bd_monitor_reset(sim, p);
     }
+    for (int k = 0; k < sim->part_count; k++)
+        bd_part_records_clear(&sim->parts[k]);
     for (int i = 0; i < sim->model->probe_count; i++) {
         sim->probes[i].tension_max = -INFINITY;
         sim->probes[i].tension_min = INFINITY;
