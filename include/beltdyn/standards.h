@@ -59,7 +59,6 @@ typedef struct bd_static_result {
     double skirts_N;            /* F_gl over the skirts' whole length */
     double cleaners_N;          /* F_r */
     double acceleration_length_m;  /* l_b */
-    int individual_iterations;  /* tension ↔ wrap/bearing fixed point */
     bd_static_pulley *pulleys;  /* [span_count] (NULL unless individual) */
     double effective_tension_N; /* N, Te = T1 - T2 over all drives; < 0 regenerative */
     double power_kW;            /* kW, Te * speed at the drive pulley(s) */

@@ -112,6 +112,8 @@ void bd_setup_probes_and_feed(bd_sim *sim);
 /* idlers of set k that fit its span evenly (0 on a vertical span, with a
  * warning) and their actual spacing */
 int bd_idler_set_layout(bd_sim *sim, int k, double *spacing);
+/* 1: span `span` starts vertical (no idlers can stand on it) */
+int bd_span_vertical(const bd_path *path, int span);
 /* the rule it follows, without a sim: idler set k's count on its span
  * (none on a vertical one) and the spacing that fits the span evenly */
 int bd_idler_count(const bd_model_def *def, const bd_path *path, int k, double *spacing);

@@ -67,12 +67,14 @@ double bd_feed_force(const bd_sim *sim, double v, double m, int landing, int loa
     bd_secondary_feed(def, fabs(v), &fr);
     double skirts = (sim->has_feed ? fr.loading_skirts : 0.0) + (loaded ? fr.skirts : 0.0);
     if (skirts > 0.0) {
-        double fade = fmax(BD_ROLLING_SPEED, 4.0 * skirts * sim->model->dt / m);
-        double sat = v / fade;
-        sat = sat > 1.0 ? 1.0 : (sat < -1.0 ? -1.0 : sat);
-        F -= skirts * sat;
+        F -= skirts * bd_coulomb_share(v, bd_coulomb_fade(skirts, 1.0, sim->model->dt, m));
     }
     return F;
+}
+
+int bd_span_vertical(const bd_path *path, int span)
+{
+    return fabs(bd_path_span(path, span)->dir[0]) < 1e-6;
 }
 
 int bd_idler_count(const bd_model_def *def, const bd_path *path, int k, double *spacing)
@@ -80,7 +82,7 @@ int bd_idler_count(const bd_model_def *def, const bd_path *path, int k, double *
     const bd_idler_set_def *set = &def->idler_sets[k];
     const bd_path_segment *sp = bd_path_span(path, set->span);
     *spacing = set->spacing;
-    if (fabs(sp->dir[0]) < 1e-6)
+    if (bd_span_vertical(path, set->span))
         return 0;
     /* the closest spacing to the given one that fits the span evenly
      * (documented in docs/model-format.md) */
@@ -96,7 +98,7 @@ int bd_idler_set_layout(bd_sim *sim, int k, double *spacing)
     const bd_model_def *def = sim->model->def;
     int count = bd_idler_count(def, &sim->model->path, k, spacing);
     sim->own->idlers_per_set[k] = count;
-    if (fabs(bd_path_span(&sim->model->path, def->idler_sets[k].span)->dir[0]) < 1e-6)
+    if (bd_span_vertical(&sim->model->path, def->idler_sets[k].span))
         bd_sim_warn(sim, "idlers on span '%s': the span is vertical; no idlers placed",
                     def->pulleys[def->idler_sets[k].span].name);
     return count;

@@ -30,14 +30,21 @@ double bd_res_cleaners(double count, double width, double thickness, double pres
     return count * width * thickness * pressure * mu3;
 }
 
+void bd_res_wrap_coeffs(int steel_cord, double B, double d, double D, double *a, double *b)
+{
+    *a = *b = 0.0;
+    if (D <= 0.0 || B <= 0.0)
+        return;
+    double k = steel_cord ? 12.0 : 9.0, base = steel_cord ? 200.0 : 140.0;
+    *a = k * B * base * d / D;
+    *b = k * 0.01 * d / D;
+}
+
 double bd_res_wrap(int steel_cord, double B, double F, double d, double D)
 {
-    if (D <= 0.0 || B <= 0.0)
-        return 0.0;
-    if (F < 0.0)
-        F = 0.0;
-    return steel_cord ? 12.0 * B * (200.0 + 0.01 * F / B) * d / D
-                      : 9.0 * B * (140.0 + 0.01 * F / B) * d / D;
+    double a, b;
+    bd_res_wrap_coeffs(steel_cord, B, d, D, &a, &b);
+    return a + b * (F > 0.0 ? F : 0.0);
 }
 
 double bd_res_bearing(double d0, double D, double FT)

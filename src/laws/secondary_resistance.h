@@ -34,6 +34,9 @@ double bd_res_cleaners(double count, double width, double thickness, double pres
  * B belt width (m), F the mean belt tension on the pulley (N), d belt
  * thickness (m), D pulley diameter (m) */
 double bd_res_wrap(int steel_cord, double B, double F, double d, double D);
+/* the same as F_l = a + b·F: a = 9·140·B·d/D, b = 0.09·d/D (fabric), or
+ * a = 12·200·B·d/D, b = 0.12·d/D (steel cord) */
+void bd_res_wrap_coeffs(int steel_cord, double B, double d, double D, double *a, double *b);
 
 /* pulley bearing resistance, F_t = 0.005·(d0/D)·F_T (ISO 5048 Table 3),
  * F_T the vector sum of the belt tensions on the pulley and the weight of

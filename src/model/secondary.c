@@ -34,18 +34,9 @@ static const bd_bearing_def *bearing_of(const bd_model_def *m, int p)
     return NULL;
 }
 
-int bd_secondary_at_pulley(const bd_model_def *m, int p)
+void bd_secondary_pulley_law(const bd_model_def *m, int p, bd_pulley_resistance_law *law)
 {
-    if (!bd_secondary_individual(m))
-        return 0;
-    return !m->pulleys[p].has_drive || bearing_of(m, p) || bd_secondary_cleaner_pulley(m) == p;
-}
-
-void bd_secondary_pulley(const bd_model_def *m, int p, double T_in, double T_out,
-                         const double u_in[2], const double u_out[2],
-                         bd_pulley_resistance *out)
-{
-    memset(out, 0, sizeof *out);
+    memset(law, 0, sizeof *law);
     if (!bd_secondary_individual(m))
         return;
     const bd_design_def *d = &m->design;
@@ -55,21 +46,38 @@ void bd_secondary_pulley(const bd_model_def *m, int p, double T_in, double T_out
      * (a drive pulley's losses are in the drive's efficiency) */
     if (!pd->has_drive) {
         double thick = d->belt_thickness > 0.0 ? d->belt_thickness : m->belt.thickness;
-        double F = 0.5 * (fmax(T_in, 0.0) + fmax(T_out, 0.0));
-        out->wrap = bd_res_wrap(d->carcass == BD_CARCASS_STEEL_CORD, m->belt.width, F, thick, D);
+        bd_res_wrap_coeffs(d->carcass == BD_CARCASS_STEEL_CORD, m->belt.width, thick, D,
+                           &law->wrap0, &law->wrap_per_N);
+        law->active = 1;
     }
     const bd_bearing_def *b = bearing_of(m, p);
     if (b) {
-        /* F_T: the belt pulls the pulley back along its arriving end and
-         * forward along its leaving end; its rotating parts weigh m·g */
-        double fx = fmax(T_out, 0.0) * u_out[0] - fmax(T_in, 0.0) * u_in[0];
-        double fy = fmax(T_out, 0.0) * u_out[1] - fmax(T_in, 0.0) * u_in[1] - b->mass * m->gravity;
-        out->bearing = bd_res_bearing(b->bore, D, hypot(fx, fy));
+        law->bearing_per_N = bd_res_bearing(b->bore, D, 1.0);
+        law->weight = b->mass * m->gravity;
+        law->active = 1;
     }
     if (bd_secondary_cleaner_pulley(m) == p) {
         const bd_cleaners_def *c = &d->cleaners;
-        out->cleaners = bd_res_cleaners(c->count, c->width, c->thickness, c->pressure, c->mu);
+        law->cleaners = bd_res_cleaners(c->count, c->width, c->thickness, c->pressure, c->mu);
+        law->active = 1;
     }
+}
+
+void bd_secondary_pulley_eval(const bd_pulley_resistance_law *law, double T_in, double T_out,
+                              const double u_in[2], const double u_out[2],
+                              bd_pulley_resistance *out)
+{
+    double ti = T_in > 0.0 ? T_in : 0.0, to = T_out > 0.0 ? T_out : 0.0;
+    out->wrap = law->wrap0 + law->wrap_per_N * 0.5 * (ti + to);
+    out->bearing = 0.0;
+    if (law->bearing_per_N > 0.0) {
+        /* F_T: the belt pulls the pulley back along its arriving end and
+         * forward along its leaving end; its rotating parts weigh m·g */
+        double fx = to * u_out[0] - ti * u_in[0];
+        double fy = to * u_out[1] - ti * u_in[1] - law->weight;
+        out->bearing = law->bearing_per_N * hypot(fx, fy);
+    }
+    out->cleaners = law->cleaners;
 }
 
 void bd_secondary_feed(const bd_model_def *m, double v, bd_feed_resistance *out)

@@ -24,18 +24,29 @@ typedef struct bd_feed_resistance {
     double skirts;               /* F_gl: skirts over their whole length */
 } bd_feed_resistance;
 
+/* a pulley's resistance as a function of its belt tensions, with its
+ * constants taken once from the definition (a run evaluates it every
+ * step) */
+typedef struct bd_pulley_resistance_law {
+    int active;               /* it has a resistance of its own */
+    double wrap0, wrap_per_N; /* F_l = wrap0 + wrap_per_N·(mean tension) */
+    double bearing_per_N;     /* F_t = bearing_per_N·|F_T|; 0 without bearings */
+    double weight;            /* N, its rotating parts' weight (in F_T) */
+    double cleaners;          /* N, the cleaners scraping there */
+} bd_pulley_resistance_law;
+
 /* 1: the model asks for the resistances one by one */
 int bd_secondary_individual(const bd_model_def *m);
 /* the pulley the cleaners scrape at: design.cleaners.pulley, else the
  * discharge pulley, else the first drive; -1 without cleaners */
 int bd_secondary_cleaner_pulley(const bd_model_def *m);
-/* 1: pulley p has a resistance of its own (wrap, bearing or cleaners) */
-int bd_secondary_at_pulley(const bd_model_def *m, int p);
-/* pulley p's resistances with T_in arriving along the unit direction
- * u_in and T_out leaving along u_out (N) */
-void bd_secondary_pulley(const bd_model_def *m, int p, double T_in, double T_out,
-                         const double u_in[2], const double u_out[2],
-                         bd_pulley_resistance *out);
+/* pulley p's resistance law (active 0 when it has none) */
+void bd_secondary_pulley_law(const bd_model_def *m, int p, bd_pulley_resistance_law *law);
+/* its resistances with T_in arriving along the unit direction u_in and
+ * T_out leaving along u_out (N) */
+void bd_secondary_pulley_eval(const bd_pulley_resistance_law *law, double T_in, double T_out,
+                              const double u_in[2], const double u_out[2],
+                              bd_pulley_resistance *out);
 /* the feed point's resistances at belt speed v (zero without material) */
 void bd_secondary_feed(const bd_model_def *m, double v, bd_feed_resistance *out);
 

@@ -21,6 +21,7 @@
 #include "beltdyn/model.h"
 #include "beltdyn/sim.h"
 #include "model/path.h"
+#include "model/secondary.h"
 
 struct bd_belt_ops;
 struct bd_part;
@@ -72,6 +73,8 @@ typedef struct bd_pulley_model {
     int movable;            /* a gravity or constant_force takeup */
     double axis[2];         /* unit axis of the carriage */
     double carriage_mass;   /* kg moving along the axis (pulley + takeup) */
+    bd_pulley_resistance_law resistance; /* its own resistance (design.secondary:
+                               individual; active 0: none) */
     double wrap_pull;       /* N along the axis: the weight of a wrap the belt
                                formulation does not resolve (axial), else 0 */
     double x0, y0;          /* m, centre at t = 0 (a takeup's as laid) */
@@ -91,9 +94,8 @@ typedef struct bd_pulley_body {
     double bearing_torque;  /* N·m bearing torque this step (with its own
                                resistance below) */
     /* its own resistance, design.secondary: individual (wrap, bearings,
-     * cleaners; sim/pulley_resistance.c): a force on its surface against
-     * its motion, fading linearly to 0 below res_fade */
-    int resists;
+     * cleaners; m->resistance, sim/pulley_resistance.c): a force on its
+     * surface against its motion, fading linearly to 0 below res_fade */
     bd_tracker res_in, res_out;  /* belt points arriving at / leaving the wrap */
     double res_force;       /* N, this step, from the tensions there */
     double res_fade;        /* m/s */

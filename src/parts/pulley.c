@@ -8,6 +8,7 @@
 #include <math.h>
 
 #include "base/constants.h"
+#include "laws/rolling.h"
 
 void bd_pulley_model_init(bd_model *model, bd_pulley_model *pm, const bd_pulley_def *pd)
 {
@@ -17,6 +18,8 @@ void bd_pulley_model_init(bd_model *model, bd_pulley_model *pm, const bd_pulley_
     pm->mu_s = pd->friction.mu_static;
     pm->mu_d = pd->friction.mu_dynamic;
     pm->bearing_damping = pd->bearing_damping;
+    /* its own resistance (design.secondary: individual, model/secondary.c) */
+    bd_secondary_pulley_law(model->def, (int)(pd - model->def->pulleys), &pm->resistance);
     pm->inertia = pd->inertia + (pd->has_drive ? pd->drive.inertia : 0.0);
     /* a massless pulley would have an undefined speed when the belt
      * slips on it everywhere: floor its inertia at 1% of the inertia of
@@ -46,11 +49,10 @@ double bd_pulley_external_torque(bd_sim *sim, bd_pulley_body *p)
     p->drive_torque = T_drive;
     p->torque_damping = K;
     p->bearing_torque = -p->m->bearing_damping * p->omega;
-    if (p->resists) {
+    if (p->m->resistance.active) {
         /* its own resistance against the surface's motion (a Coulomb force
          * faded near rest, as the idlers' rolling resistance) */
-        double R = p->m->radius, sat = p->omega * R / p->res_fade;
-        sat = sat > 1.0 ? 1.0 : (sat < -1.0 ? -1.0 : sat);
+        double R = p->m->radius, sat = bd_coulomb_share(p->omega * R, p->res_fade);
         p->bearing_torque -= p->res_force * R * sat;
     }
     return T_drive + p->bearing_torque;

@@ -14,12 +14,10 @@
 
 void bd_pulley_resistance_init(bd_sim *sim)
 {
-    const bd_model_def *def = sim->model->def;
     const int n = sim->model->pulley_count;
     for (int i = 0; i < n; i++) {
         bd_pulley_body *p = &sim->pulleys[i];
-        p->resists = bd_secondary_at_pulley(def, i);
-        if (!p->resists)
+        if (!p->m->resistance.active)
             continue;
         double s_in, s_out;
         bd_wrap_side_points(sim, i, &s_in, &s_out);
@@ -33,11 +31,10 @@ void bd_pulley_resistance_init(bd_sim *sim)
 void bd_pulley_resistance_update(bd_sim *sim)
 {
     const bd_belt_ops *belt = sim->model->belt;
-    const bd_model_def *def = sim->model->def;
     const int n = sim->model->pulley_count;
     for (int i = 0; i < n; i++) {
         bd_pulley_body *p = &sim->pulleys[i];
-        if (!p->resists)
+        if (!p->m->resistance.active)
             continue;
         bd_belt_sample in, out;
         belt->point_update(sim, &p->res_in);
@@ -47,13 +44,10 @@ void bd_pulley_resistance_update(bd_sim *sim)
         const double *u_in = bd_path_span(&sim->model->path, (i + n - 1) % n)->dir1;
         const double *u_out = bd_path_span(&sim->model->path, i)->dir;
         bd_pulley_resistance r;
-        bd_secondary_pulley(def, i, in.tension, out.tension, u_in, u_out, &r);
+        bd_secondary_pulley_eval(&p->m->resistance, in.tension, out.tension, u_in, u_out, &r);
         p->res_force = r.wrap + r.bearing + r.cleaners;
-        /* faded below the rolling resistance's speed, and no steeper than
-         * a quarter of what the explicit step bears on the pulley's own
-         * inertia: c = F·R²/fade, c·Δt/J ≤ 1/4 */
+        /* faded for the explicit step on the pulley's own inertia */
         double R = p->m->radius;
-        p->res_fade = fmax(BD_ROLLING_SPEED,
-                           4.0 * p->res_force * R * R * sim->model->dt / p->m->inertia);
+        p->res_fade = bd_coulomb_fade(p->res_force, R * R, sim->model->dt, p->m->inertia);
     }
 }

@@ -58,13 +58,14 @@ int bd_individual_resistances(bd_std_ctx *c)
                        "(ISO 5048's skirt friction is that of the material)");
     }
 
-    /* the cleaners scrape the belt leaving their pulley: a constant force */
-    int cp = bd_secondary_cleaner_pulley(m);
-    if (cp >= 0) {
-        bd_pulley_resistance pr;
-        static const double none[2] = {0.0, 0.0};
-        bd_secondary_pulley(m, cp, 0.0, 0.0, none, none, &pr);
-        c->sec[bd_std_first_sec(c, cp)].local_special += pr.cleaners;
+    /* each pulley's law, once; the cleaners scrape the belt leaving their
+     * pulley, a constant force */
+    bd_pulley_resistance_law *law = calloc((size_t)c->n, sizeof *law);
+    if (!law)
+        return 1;
+    for (int p = 0; p < c->n; p++) {
+        bd_secondary_pulley_law(m, p, &law[p]);
+        c->sec[bd_std_first_sec(c, p)].local_special += law[p].cleaners;
     }
 
     /* the pulleys' wrap and bearings, to a fixed point with the tensions */
@@ -74,13 +75,13 @@ int bd_individual_resistances(bd_std_ctx *c)
     while (change > 1e-9 * (fabs(bd_std_total(c)) + 1.0) && pass < MAX_PASSES) {
         change = 0.0;
         for (int p = 0; p < c->n; p++) {
-            if (!bd_secondary_at_pulley(m, p))
+            if (!law[p].active)
                 continue;
             const double *u_in = bd_path_span(&c->path, (p + c->n - 1) % c->n)->dir1;
             const double *u_out = bd_path_span(&c->path, p)->dir;
             bd_pulley_resistance pr;
-            double T_in = bd_std_T_arrive(c, p), T_out = bd_std_T_leave(c, p);
-            bd_secondary_pulley(m, p, T_in, T_out, u_in, u_out, &pr);
+            bd_secondary_pulley_eval(&law[p], bd_std_T_arrive(c, p), bd_std_T_leave(c, p), u_in,
+                                     u_out, &pr);
             bd_std_section *s = &c->sec[bd_std_first_sec(c, p)];
             change = fmax(change, fabs(pr.wrap + pr.bearing - s->pulley_res));
             s->pulley_res = pr.wrap + pr.bearing;
@@ -91,7 +92,7 @@ int bd_individual_resistances(bd_std_ctx *c)
         bd_std_propagate(c);
         pass++;
     }
-    r->individual_iterations = pass;
+    free(law);
     if (change > 1e-9 * (fabs(bd_std_total(c)) + 1.0))
         bd_std_warn(r, "secondary: individual: the pulleys' resistances and the tensions did "
                        "not settle in %d passes (last change %.3g N)", MAX_PASSES, change);

@@ -50,8 +50,7 @@ static void element_pass(bd_sim *sim)
 /* rolling resistance on node i at speed v, smoothed through zero */
 static inline double rolling(double resist, double v)
 {
-    double sat = v / BD_ROLLING_SPEED;
-    sat = sat > 1.0 ? 1.0 : (sat < -1.0 ? -1.0 : sat);
+    double sat = bd_coulomb_share(v, BD_ROLLING_SPEED);
     return -resist * sat;
 }
 

@@ -428,9 +428,8 @@ void bd_lumped_estimate(const bd_model_def *def, const bd_path *path, bd_belt_es
     out->nodes = fmax(8.0, floor(path->length / l + 0.5));
     out->idlers = 0.0;
     for (int k = 0; k < def->idler_set_count; k++) {
-        const bd_idler_set_def *set = &def->idler_sets[k];
-        double count = floor(bd_path_span(path, set->span)->length / set->spacing + 0.5) - 1.0;
-        out->idlers += fmax(0.0, count);
+        double spacing;
+        out->idlers += bd_idler_count(def, path, k, &spacing);
     }
     /* the peak is after the layout: the node arrays, the lumped arrays,
      * seg_hint and s_node0, with the layout's s and tension still held (the

@@ -219,8 +219,7 @@ void bd_mn_forces(bd_sim *sim)
                 }
                 /* rolling resistance against the belt's motion (seed 004
                  * §5; faded below BD_ROLLING_SPEED) */
-                double sat = vi / BD_ROLLING_SPEED;
-                sat = sat > 1.0 ? 1.0 : (sat < -1.0 ? -1.0 : sat);
+                double sat = bd_coulomb_share(vi, BD_ROLLING_SPEED);
                 double r = -mm->rolling[i] * mn->normal[i] * sat;
                 F += r;
                 Fn += r;

@@ -31,8 +31,7 @@ double bd_mn_span_target(const bd_model_def *def, const bd_path *path, int span)
         return def->belt.span_element_length;
     for (int k = 0; k < def->idler_set_count; k++) {
         double a;
-        if (def->idler_sets[k].span != span
-            || fabs(bd_path_span(path, span)->dir[0]) < 1e-6)
+        if (def->idler_sets[k].span != span || bd_span_vertical(path, span))
             continue;
         /* the spacing the idlers get; the given one on a span too short
          * for any */
