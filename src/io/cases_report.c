@@ -5,7 +5,8 @@
  *   tension anywhere and the peak drive torque (a stop case's from its
  *   stop on: its records start there);
  * - the table of cases (what each sets, its status and numbers), each
- *   case's name linking to its own report (CASE/report.html). */
+ *   case's name linking to its own report, DIR/CASE/report.html, which is
+ *   written first for every case that has a run (summary.json). */
 #include "io/cases_report.h"
 
 #include <cjson/cJSON.h>
@@ -79,8 +80,7 @@ static int plot_peaks(const char *plots, const char *model, const cJSON *cases, 
             i++;
         }
     }
-    f.panel[NQ - 1].xlabel = "Case (1 empty start, 2 loaded start, 3 coast stop, 4 brake stop, "
-                             "5 partial load start)";
+    f.panel[NQ - 1].xlabel = "Case (numbered as in the legend and the table)";
     char png[PATH_LEN], svg[PATH_LEN];
     if (snprintf(png, sizeof png, "%s/cases_peaks.png", plots) >= (int)sizeof png ||
         snprintf(svg, sizeof svg, "%s/cases_peaks.svg", plots) >= (int)sizeof svg) {
@@ -151,7 +151,22 @@ int bd_cases_report_write(const char *dir, char *err, size_t errlen)
     int n = cJSON_GetArraySize(cases);
     const char *model = bd_json_str(json, "model");
     int rc = 0;
-    if (mkdir(plots, 0777) != 0 && errno != EEXIST) {
+    /* each case's own report, where the case has a run */
+    const cJSON *o;
+    cJSON_ArrayForEach(o, cases) {
+        const char *name = bd_json_str(o, "case");
+        char sub[PATH_LEN], summary[PATH_LEN], cerr[1024];
+        if (!name[0] || strchr(name, '/') || strstr(name, "..")
+            || bd_path_join(sub, sizeof sub, dir, name)
+            || bd_path_join(summary, sizeof summary, sub, "summary.json")
+            || access(summary, R_OK) != 0)
+            continue;
+        if (bd_report_write(sub, cerr, sizeof cerr) != BD_REPORT_OK) {
+            snprintf(err, errlen, "%s: %s", sub, cerr);
+            rc = BD_REPORT_EOUTPUT;
+        }
+    }
+    if (!rc && mkdir(plots, 0777) != 0 && errno != EEXIST) {
         snprintf(err, errlen, "%s: %s", plots, strerror(errno));
         rc = BD_REPORT_EOUTPUT;
     }

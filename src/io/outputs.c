@@ -219,9 +219,6 @@ static int write_envelope(bd_outputs *o, const bd_sim *sim)
     return finish_part(o, BD_OUT_ENVELOPE, &f);
 }
 
-/* the model's design-standard calculation (cli.md `static --json`) as
- * "static", with its T_min_sag_N also at the top level; a warning instead
- * when it cannot be computed */
 /* summary.json's "checks": the pass/fail table (io/checks.c) */
 static void add_checks(cJSON *root, const bd_sim *sim, const bd_static_result *st)
 {
@@ -242,6 +239,9 @@ static void add_checks(cJSON *root, const bd_sim *sim, const bd_static_result *s
     cJSON_AddNumberToObject(root, "checks_failed", failed);
 }
 
+/* the model's design-standard calculation (cli.md `static --json`) as
+ * "static", with its T_min_sag_N also at the top level, and the checks
+ * that use it; a warning instead when it cannot be computed */
 static int add_static(cJSON *root, cJSON *warnings, const bd_sim *sim)
 {
     const bd_model_def *def = sim->model->def;

@@ -406,11 +406,6 @@ static void parse_list(ctx *c, const listspec *ls, yaml_node_t *v, const char *p
         type_error(c, v, path, "a list");
         return;
     }
-    if (*(void **)((char *)base + off)) {
-        err(c, mark_of(v), path, "given twice (a profile lays these out: its carry_idlers and "
-            "return_idlers)");
-        return;
-    }
     n = seq_len(v);
     if (n < ls->min) {
         snprintf(buf, sizeof buf, "%d", n);
@@ -746,12 +741,17 @@ static void takeup_post(ctx *c, const fieldset *fs, yaml_node_t *const *found, b
 }
 
 static const char *const takeup_names[] = {"gravity", "constant_force", "fixed", NULL};
+/* a takeup's own fields, for a pulley's takeup and a profile's (whose
+ * bd_profile_takeup holds a bd_takeup_def first) */
+#define TAKEUP_BODY_FIELDS                                          \
+    ENUM("type", bd_takeup_def, type, REQ, takeup_names, NULL),     \
+    NONNEG("mass", bd_takeup_def, mass, 0),                         \
+    TABLE("force", bd_takeup_def, force, SCALAR, 0.0),              \
+    FN("travel", takeup_travel)
+
 static const field takeup_fields[] = {
-    ENUM("type", bd_takeup_def, type, REQ, takeup_names, NULL),
-    NONNEG("mass", bd_takeup_def, mass, 0),
-    TABLE("force", bd_takeup_def, force, SCALAR, 0.0),
+    TAKEUP_BODY_FIELDS,
     FN("axis", takeup_axis),
-    FN("travel", takeup_travel),
 };
 FIELDSET(takeup_fs, takeup_fields, takeup_post);
 
@@ -951,12 +951,10 @@ static const field profile_end_fields[] = {PULLEY_BODY_FIELDS};
 FIELDSET(profile_end_fs, profile_end_fields, pulley_body_post);
 
 static const char *const end_names[] = {"tail", "head", NULL};
+_Static_assert(offsetof(bd_profile_takeup, t) == 0, "a profile's takeup parses as a takeup");
 static const field profile_takeup_fields[] = {
     ENUM("at", bd_profile_takeup, at_head, REQ, end_names, NULL),
-    ENUM("type", bd_profile_takeup, t.type, REQ, takeup_names, NULL),
-    NONNEG("mass", bd_profile_takeup, t.mass, 0),
-    TABLE("force", bd_profile_takeup, t.force, SCALAR, 0.0),
-    FN("travel", takeup_travel),
+    TAKEUP_BODY_FIELDS,
     POS("depth", bd_profile_takeup, depth, 0),
 };
 FIELDSET(profile_takeup_fs, profile_takeup_fields, takeup_post);
@@ -1021,6 +1019,21 @@ static void profile_fn(ctx *c, const field *f, yaml_node_t *v, bd_mark key, cons
         bd_profile_free_tables(&p);
     }
     bd_profile_free(&p);
+}
+
+/* the top-level idlers: a profile lays out its own (carry_idlers,
+ * return_idlers), so both are refused */
+static void idlers_fn(ctx *c, const field *f, yaml_node_t *v, bd_mark key, const char *path,
+                      void *base)
+{
+    bd_model_def *m = base;
+    (void)f;
+    if (m->from_profile) {
+        err(c, key, path, "give either idlers or a profile's carry_idlers and return_idlers, "
+            "not both");
+        return;
+    }
+    parse_list(c, &idler_list, v, path, base, offsetof(bd_model_def, idler_sets));
 }
 
 /* ---- material ---- */
@@ -1294,7 +1307,7 @@ static const field model_fields[] = {
     MAP("belt", bd_model_def, belt, REQ, &belt_fs),
     LIST("pulleys", bd_model_def, pulleys, 0, &pulley_list),
     FN("profile", profile_fn),
-    LIST("idlers", bd_model_def, idler_sets, 0, &idler_list),
+    FN("idlers", idlers_fn),
     MAP("material", bd_model_def, material, 0, &material_fs),
     MAP("design", bd_model_def, design, 0, &design_fs),
     MAP("simulation", bd_model_def, simulation, 0, &simulation_fs),

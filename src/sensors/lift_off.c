@@ -21,7 +21,6 @@ void bd_lift_off_update(bd_sim *sim)
     double dt = sim->model->dt;
     if (l->step_count == 0) {
         l->since = -1.0;
-        l->step_count = 0;
         return;
     }
     if (l->first_t < 0.0) {

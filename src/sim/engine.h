@@ -12,10 +12,10 @@ int bd_step_once(bd_sim *sim);
  * the state now; 0, or 1 when it diverged (message in sim->fail_msg) */
 int bd_step_forces(bd_sim *sim);
 /* v(−Δt/2) for a start from rest */
-int bd_sim_start_at_rest(bd_sim *sim);
+int bd_sim_start_at_rest(bd_sim *sim);   /* 1: the forces failed (fail_msg) */
 /* the run's records of belt tension and lift-off cleared: a run starts
  * (build) or starts again after stabilizing (step.c) */
-void bd_run_records_clear(bd_sim *sim);   /* 1: the forces failed (fail_msg) */
+void bd_run_records_clear(bd_sim *sim);
 
 /* pulley_resistance.c: each pulley's own resistance (design.secondary:
  * individual): its tension points placed (build, after the time step), and

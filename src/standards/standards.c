@@ -90,7 +90,7 @@ int bd_std_first_sec(const bd_std_ctx *c, int span)
     return 0;
 }
 
-int bd_std_last_sec(const bd_std_ctx *c, int span)
+static int last_sec(const bd_std_ctx *c, int span)
 {
     for (int k = c->nsec - 1; k >= 0; k--)
         if (c->sec[k].span == span)
@@ -101,7 +101,7 @@ int bd_std_last_sec(const bd_std_ctx *c, int span)
 /* tension arriving at and leaving pulley p */
 double bd_std_T_arrive(const bd_std_ctx *c, int p)
 {
-    return c->sec[bd_std_last_sec(c, (p + c->n - 1) % c->n)].T1;
+    return c->sec[last_sec(c, (p + c->n - 1) % c->n)].T1;
 }
 
 double bd_std_T_leave(const bd_std_ctx *c, int p)
@@ -626,7 +626,7 @@ int bd_static_compute(const bd_model_def *m, bd_static_result *out, bd_diag *dia
         os->slope_N += s->slope;
         if (s->mL > 0.0)
             os->loaded_length_m += s->length;
-        if (s->carry || k == bd_std_last_sec(&c, s->span)) {
+        if (s->carry || k == last_sec(&c, s->span)) {
             os->cema_Kx = s->Kx;
             os->cema_Ky = s->Ky;
         }

@@ -62,10 +62,8 @@ void bd_std_note(bd_static_result *r, const char *fmt, ...)
 /* total resistance of the loop (Σ main + secondary + slope and the
  * individual resistances), N */
 double bd_std_total(const bd_std_ctx *c);
-/* first and last section of a span; tension arriving at and leaving
- * pulley p */
+/* the first section of a span; tension arriving at and leaving pulley p */
 int bd_std_first_sec(const bd_std_ctx *c, int span);
-int bd_std_last_sec(const bd_std_ctx *c, int span);
 double bd_std_T_arrive(const bd_std_ctx *c, int p);
 double bd_std_T_leave(const bd_std_ctx *c, int p);
 /* tensions T0/T1 of every section from the resistances and the level rule

@@ -78,9 +78,10 @@ static double moving_mass(const bd_model_def *def, const bd_static_result *r, do
 
 /* the feed point of the worst partial loading: the point of the loaded
  * region beyond which the material's drive force, Σ m'_L·g·(f·cos δ·ds +
- * dy) to the discharge, is largest; as (span, at) */
-static void worst_feed(const bd_model_def *def, const bd_path *path, double f, int *span,
-                       double *at)
+ * dy) to the discharge, is largest; as (span, at), and its distance from
+ * the model's feed point along the path, m */
+static double worst_feed(const bd_model_def *def, const bd_path *path, double f, int *span,
+                         double *at)
 {
     double s0, len;
     bd_path_loaded_region(path, &def->material, &s0, &len);
@@ -98,21 +99,14 @@ static void worst_feed(const bd_model_def *def, const bd_path *path, double f, i
             s_best = s0 + k * ds;
         }
     }
-    /* onto the span it lies on (the start of the next one when on a wrap) */
+    /* onto the span it lies on (the start of the span after it when on a
+     * wrap: a wrap's segment and the next span share the pulley's index) */
     double s = fmod(s_best, path->length);
-    int g = bd_path_segment_at(path, s);
-    const bd_path_segment *seg = &path->segments[g];
-    if (seg->kind == BD_SEGMENT_SPAN) {
-        *span = seg->pulley;
-        *at = seg->length > 0.0 ? (s - seg->s0) / seg->length : 0.0;
-    } else {
-        *span = seg->pulley;
-        *at = 0.0;
-    }
-    if (*at < 0.0)
-        *at = 0.0;
-    if (*at > 1.0)
-        *at = 1.0;
+    const bd_path_segment *seg = &path->segments[bd_path_segment_at(path, s)];
+    *span = seg->pulley;
+    *at = seg->kind == BD_SEGMENT_SPAN && seg->length > 0.0 ? (s - seg->s0) / seg->length : 0.0;
+    *at = fmin(fmax(*at, 0.0), 1.0);
+    return fmod(bd_path_span_s(path, *span, *at) - s0 + path->length, path->length);
 }
 
 int bd_load_cases_make(bd_study *s, double **cost, char *err, size_t errlen)
@@ -216,10 +210,14 @@ int bd_load_cases_make(bd_study *s, double **cost, char *err, size_t errlen)
             if (j == 2)
                 snprintf(c->setup, sizeof c->setup, "loaded; drives off at %.3g s (power "
                          "failure), coast-down ~%.3g s", t_stop, t_coast);
+            else if (own_brake)
+                snprintf(c->setup, sizeof c->setup, "loaded; drives brake at %.3g s with %.4g N "
+                         "at the belt (the model's brakes), braking ~%.3g s", t_stop,
+                         brake_total, t_window);
             else
                 snprintf(c->setup, sizeof c->setup, "loaded; drives brake at %.3g s with %.4g N "
-                         "at the belt (%s), braking ~%.3g s", t_stop, brake_total,
-                         own_brake ? "the model's brakes" : "1.5 x running torque", t_window);
+                         "at the belt (%g x running torque), braking ~%.3g s", t_stop,
+                         brake_total, BRAKE_FACTOR, t_window);
             break;
         }
         case 4: {
@@ -229,15 +227,11 @@ int bd_load_cases_make(bd_study *s, double **cost, char *err, size_t errlen)
             }
             int span;
             double at;
-            worst_feed(d, &path, r.f > 0.0 ? r.f : 0.02, &span, &at);
+            double from = worst_feed(d, &path, r.f > 0.0 ? r.f : 0.02, &span, &at);
             mat->feed_span = span;
             mat->feed_at = at;
             mat->initially_loaded = 1;
             mat->feeding = 0;
-            double s_feed = bd_path_span_s(&path, span, at);
-            double s0, len;
-            bd_path_loaded_region(&path, &m->material, &s0, &len);
-            double from = fmod(s_feed - s0 + path.length, path.length);
             snprintf(c->setup, sizeof c->setup, "loaded from %.4g m past the feed point (span "
                      "'%s' at %.3f) to the discharge, not feeding; the model's start", from,
                      d->pulleys[span].name, at);

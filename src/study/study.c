@@ -362,7 +362,7 @@ static int setup(study_run *R, char *err, size_t errlen)
     bd_study *s = &R->s;
     const bd_study_options *o = s->opt;
     int sweep = o->nvary > 0 || o->samples > 0 || o->nrange > 0;
-    if (o->load_cases && (sweep || o->after > 0.0 || o->best)) {
+    if (o->load_cases && (sweep || o->after > 0.0 || o->best || o->nwhere > 0)) {
         snprintf(err, errlen, "cases runs the five standard load cases: it takes -o, -j, "
                  "--resume and --force only");
         return BD_RUN_BAD_INPUT;

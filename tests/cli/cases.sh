@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
-# beltdyn cases (cli.md) on a small loaded conveyor (tests/data/cases_small.yaml,
-# axial belt, S-curve start of 4 s): five case directories with the run's
+# beltdyn cases (cli.md) on a small loaded conveyor (tests/data/
+# static_individual.yaml on the axial belt, rated 120 kN, a tight-side probe,
+# 10 s; S-curve start of 4 s): five case directories with the run's
 # outputs, cases.csv and cases.json with one completed row each, each case's
 # report and DIR/report.html linking them. Physics each row must show:
 # - a loaded start pulls harder than an empty one (peak belt tension higher);
 # - the stop cases' records start at t_stop = 4 + max(2, 0.8) = 6 s, and the
-#   run ends once the belt has stopped (head pulley at rest);
+#   run ends once the belt has stopped (head pulley at rest), before the
+#   limit t_stop + 5·(the static stopping time in its setup) + 10 s;
 # - braking stops the belt sooner than coasting and drops the slack side
 #   further (lowest belt tension lower) — the brake pulls the belt back.
 # The worst partial loading of a valley (tests/data/cases_valley.yaml): the
@@ -19,7 +21,11 @@
 # Options of `study` are refused (exit 2, nothing written).
 set -euo pipefail
 . "$(dirname "$0")/lib/setup.sh"
-model="$TEST_DATA/cases_small.yaml"
+model="$tmp/cases_small.yaml"
+sed -e 's/^name: static individual/name: cases small/' \
+    -e 's/^  axial_stiffness: 1.0e7/  axial_stiffness: 1.0e7\n  formulation: axial\n  rated_tension: 120e3/' \
+    "$TEST_DATA/static_individual.yaml" >"$model"
+printf 'simulation:\n  duration: 10\n  output_interval: 0.05\n  stabilize: true\n  probes:\n    - {name: tight, span: tail, at: 0.95}\n' >>"$model"
 check() { local what=$1; shift; if "$@"; then ok "$what"; else bad "$what" "it did not hold"; fi; }
 fail() { bad "$1" "stopped here"; tally; exit 1; }
 out="$tmp/cases"
@@ -37,7 +43,7 @@ check "cases.csv header" bash -c "head -1 '$out/cases.csv' | grep -q '^case,setu
 check "report.html links every case" bash -c "for c in $names; do grep -q \"href=\\\"\$c/report.html\\\"\" '$out/report.html' || exit 1; done"
 check "report.html embeds its plot" grep -q 'data:image/png;base64,' "$out/report.html"
 check "the physics of the cases" python3 - "$out" <<'PY'
-import json, sys
+import json, re, sys
 d = sys.argv[1]
 t = {c["case"]: c for c in json.load(open(d + "/cases.json"))["cases"]}
 s = {c: json.load(open("%s/%s/summary.json" % (d, c))) for c in t}
@@ -50,6 +56,9 @@ for c in ("loaded_coast_stop", "loaded_brake_stop"):
     if abs(s[c].get("records_from_s", 0) - 6.0) > 0.01: bad.append(c + " records_from_s")
     if abs(t[c]["records_from_s"] - 6.0) > 0.01: bad.append(c + " table records_from_s")
     if abs(s[c]["pulleys"]["head"]["omega_final_rad_s"]) * 0.5 > 0.02: bad.append(c + " not at rest")
+    window = float(re.search(r"(?:coast-down|braking) ~([0-9.e+]+) s", t[c]["setup"]).group(1))
+    if not s[c]["duration_s"] < 6.0 + 5.0 * window + 10.0 - 1.0:
+        bad.append(c + " ran to its limit instead of ending at rest")
 if not s["loaded_brake_stop"]["duration_s"] < s["loaded_coast_stop"]["duration_s"]:
     bad.append("braking not sooner than coasting")
 if not t["loaded_brake_stop"]["belt_tension_min_N"] < t["loaded_coast_stop"]["belt_tension_min_N"]:
