@@ -323,6 +323,9 @@ typedef struct bd_simulation_def {
     double duration;         /* s */
     double time_step;        /* s, 0 = auto */
     double output_interval;  /* s */
+    double tension_interval; /* s between tension.csv rows, 0 = output_interval */
+    double tension_spacing;  /* m between tension.csv rows along the belt,
+                                0 = every element */
     bd_initial_state initial_state;
     int stabilize;           /* kinetic-energy damping before t = 0 */
     int probe_count;

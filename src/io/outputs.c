@@ -111,6 +111,12 @@ int bd_outputs_open(bd_outputs *o, const bd_sim *sim, const char *dir, int hdf5,
     o->env_max = malloc((size_t)o->bins * sizeof *o->env_max);
     o->env_min = malloc((size_t)o->bins * sizeof *o->env_min);
     bd_outputs_records_restart(o, 0.0);
+    /* tension.csv's spacing: every k-th element, k the spacing over the
+     * mean element length (at least 1) */
+    double spacing = sim->model->def->simulation.tension_spacing;
+    double mean_element = sim->model->path.length / sim->model->n;
+    o->field_stride = spacing > mean_element ? (int)floor(spacing / mean_element + 0.5) : 1;
+    o->next_tension = 0.0;
     /* history header */
     const bd_model_def *def = sim->model->def;
     fprintf(o->history, "t_s");
@@ -150,23 +156,35 @@ void bd_outputs_row(bd_outputs *o, bd_sim *sim, double t)
     bd_energy_at_t(en, &dissipated, &input);
     fprintf(h, ",%.9g,%.9g,%.9g,%.9g\n", en->kinetic, en->potential, dissipated, input);
 
-    /* tension along the belt, and the Eulerian envelope */
+    /* tension along the belt (at its own interval and spacing,
+     * model-format.md `tension_interval`, `tension_spacing`), and the
+     * Eulerian envelope (every history row, every element) */
+    const bd_simulation_def *sd = &def->simulation;
+    /* due as history rows are (io/run.c): within half a step */
+    double half_step = 0.5 * sim->model->dt;
+    int write_field = sd->tension_interval <= 0.0 || t >= o->next_tension - half_step;
+    if (write_field && sd->tension_interval > 0.0)
+        while (o->next_tension <= t + half_step)
+            o->next_tension += sd->tension_interval;
     FILE *f = o->tension;
     double L = sim->model->path.length;
-    double *h5s = o->h5 ? bd_h5_s(o->h5) : NULL;
-    double *h5T = o->h5 ? bd_h5_tension(o->h5) : NULL;
-    double *h5v = o->h5 ? bd_h5_speed(o->h5) : NULL;
+    double *h5s = o->h5 && write_field ? bd_h5_s(o->h5) : NULL;
+    double *h5T = h5s ? bd_h5_tension(o->h5) : NULL;
+    double *h5v = h5s ? bd_h5_speed(o->h5) : NULL;
     for (int e = 0; e < sim->model->n; e++) {
-        int j = e + 1 == sim->model->n ? 0 : e + 1;
         double s = bd_element_s(sim, e);
         double T = sim->tension[e];
-        double v = bd_element_speed(sim, e);
-        fprintf(f, "%.6f,%.4f,%.4f,%.4f,%.6g,%.5g\n", t, s, 0.5 * (sim->x[e] + sim->x[j]),
-                0.5 * (sim->y[e] + sim->y[j]), T, v);
-        if (h5s) {
-            h5s[e] = s;
-            h5T[e] = T;
-            h5v[e] = v;
+        if (write_field && (h5s || e % o->field_stride == 0)) {
+            int j = e + 1 == sim->model->n ? 0 : e + 1;
+            double v = bd_element_speed(sim, e);
+            if (e % o->field_stride == 0)
+                fprintf(f, "%.6f,%.4f,%.4f,%.4f,%.6g,%.5g\n", t, s, 0.5 * (sim->x[e] + sim->x[j]),
+                        0.5 * (sim->y[e] + sim->y[j]), T, v);
+            if (h5s) {
+                h5s[e] = s;
+                h5T[e] = T;
+                h5v[e] = v;
+            }
         }
         int b = (int)(s / L * o->bins);
         if (b >= o->bins)
@@ -178,7 +196,7 @@ void bd_outputs_row(bd_outputs *o, bd_sim *sim, double t)
         if (T < o->env_min[b])
             o->env_min[b] = T;
     }
-    if (o->h5 && bd_h5_row(o->h5, t, o->err, sizeof o->err) != 0) {
+    if (h5s && bd_h5_row(o->h5, t, o->err, sizeof o->err) != 0) {
         /* stop writing it; bd_outputs_close reports the failure */
         bd_h5_close(o->h5);
         o->h5 = NULL;

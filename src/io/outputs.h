@@ -23,6 +23,8 @@ typedef struct bd_outputs {
     double *env_max;       /* [bins] N */
     double *env_min;       /* [bins] N */
     long rows;
+    int field_stride;      /* tension.csv: every field_stride-th element */
+    double next_tension;   /* s, when the next tension.csv rows are due */
     double records_from;   /* s, when the records started again (0: t = 0) */
     int static_warnings;   /* summary.json's static-design warnings, and its
                               own failure as one (set by bd_outputs_close) */

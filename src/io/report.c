@@ -328,7 +328,7 @@ static int plot_tension_surface(report *r, char *err, size_t errlen)
     snprintf(cbar, LABEL_LEN, "Belt tension T [%s]", u.name);
     set_title(r, title, LABEL_LEN, "belt tension along the belt over time");
     snprintf(sub, LABEL_LEN,
-             "%zu elements × %zu output times; colour: the largest tension within each pixel",
+             "%zu points along the belt × %zu times; colour: the largest tension within each pixel",
              first_block, nblocks);
     bd_plot_figure f;
     bd_plot_figure_init(&f, title, FIG_W, FIG_H + 100);

@@ -1258,10 +1258,17 @@ static void simulation_post(ctx *c, const fieldset *fs, yaml_node_t *const *foun
 {
     bd_simulation_def *s = base;
     yaml_node_t *ts = got(fs, found, "time_step");
-    (void)c, (void)path;
+    yaml_node_t *ti = got(fs, found, "tension_interval");
     s->mark = at;
     if (ts)
         s->time_step_mark = mark_of(ts);
+    /* tension.csv rows are a subset of the history rows */
+    if (ti && s->tension_interval > 0.0 && s->tension_interval < s->output_interval * (1.0 - 1e-9)) {
+        char sub[512];
+        snprintf(sub, sizeof sub, "%s.tension_interval", path);
+        err(c, mark_of(ti), sub, "expected at least output_interval (%g s), got %g s",
+            s->output_interval, s->tension_interval);
+    }
 }
 
 static const char *const initial_names[] = {"static", "rest", NULL};
@@ -1269,6 +1276,8 @@ static const field simulation_fields[] = {
     POS("duration", bd_simulation_def, duration, 0),
     POS("time_step", bd_simulation_def, time_step, AUTO),
     POS("output_interval", bd_simulation_def, output_interval, 0),
+    POS("tension_interval", bd_simulation_def, tension_interval, 0),
+    NONNEG("tension_spacing", bd_simulation_def, tension_spacing, 0),
     ENUM("initial_state", bd_simulation_def, initial_state, 0, initial_names, NULL),
     BOOL("stabilize", bd_simulation_def, stabilize),
     LIST("probes", bd_simulation_def, probes, 0, &probe_list),

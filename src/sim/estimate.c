@@ -33,6 +33,9 @@
 #define LONG_RUN_S 600.0
 /* and one longer than this is refused, s */
 #define REFUSED_RUN_S (30.0 * 86400.0)
+/* tension.csv sizes above this get a warning (a policy choice: a file a
+ * spreadsheet or a plot still opens quickly) */
+#define TENSION_CSV_WARN_BYTES 100e6
 
 /* bytes this process may use: physical memory, or a lower limit on its
  * address space or data less what it maps already (Linux /proc) */
@@ -178,6 +181,21 @@ int bd_cost_estimate(bd_sim *sim, bd_diag *diag)
     }
     if (c->seconds > LONG_RUN_S)
         bd_diag_warning(diag, def->source, def->belt.mark, "a long run: %s: %s", makes, steps);
+    /* tension.csv: one row of about 50 bytes per written element and time
+     * (io/outputs.c); big files are worth a word before the run */
+    const bd_simulation_def *sd = &def->simulation;
+    double every = sd->tension_interval > 0.0 ? sd->tension_interval : sd->output_interval;
+    double stride = sd->tension_spacing > loop / c->nodes
+                        ? floor(sd->tension_spacing / (loop / c->nodes) + 0.5) : 1.0;
+    double field = (floor(sd->duration / every) + 2.0) * ceil(c->nodes / stride) * 50.0;
+    if (field > TENSION_CSV_WARN_BYTES) {
+        char size[32];
+        bd_cost_bytes_text(field, size, sizeof size);
+        bd_diag_warning(diag, def->source, sd->mark,
+                        "tension.csv will be about %s (%.0f elements every %g s for %g s); "
+                        "set simulation.tension_interval and/or tension_spacing to thin it",
+                        size, ceil(c->nodes / stride), every, sd->duration);
+    }
     return 0;
 }
 
