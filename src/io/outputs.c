@@ -1,10 +1,13 @@
 /* Writers of a run's outputs (cli.md `run` outputs): history.csv and
  * tension.csv row by row at output intervals, envelope.csv and summary.json
- * at the end. Every file is written under a temporary name and renamed when
+ * at the end. Beside the contract: parts.csv (the drives' tight and slack
+ * side tensions and the takeups' pull, at history's rows) and summary.json's
+ * "layout" (io/layout.c), which the report draws. Every file is written under a temporary name and renamed when
  * complete; an interrupted or failed run still renames its CSVs, which are
  * valid up to the last complete row. */
 #include "io/outputs.h"
 #include "io/checks.h"
+#include "io/layout.h"
 #include "base/file.h"
 #include "base/json_util.h"
 
@@ -64,6 +67,19 @@ static int finish_part(bd_outputs *o, int which, FILE **f)
     return bad;
 }
 
+/* a failed open: the CSVs opened so far closed and removed */
+static void drop_parts(bd_outputs *o)
+{
+    FILE **f[] = {&o->history, &o->tension, &o->parts};
+    int which[] = {BD_OUT_HISTORY, BD_OUT_TENSION, BD_OUT_PARTS};
+    for (int k = 0; k < 3; k++)
+        if (*f[k]) {
+            fclose(*f[k]);
+            *f[k] = NULL;
+            remove(o->part_path[which[k]]);
+        }
+}
+
 int bd_outputs_open(bd_outputs *o, const bd_sim *sim, const char *dir, int hdf5, char *err,
                     size_t errlen)
 {
@@ -77,11 +93,15 @@ int bd_outputs_open(bd_outputs *o, const bd_sim *sim, const char *dir, int hdf5,
     }
     if (make_dir(dir, err, errlen))
         return 1;
+    const bd_model_def *def = sim->model->def;
+    int parts = 0;
+    for (int i = 0; i < sim->model->pulley_count; i++)
+        parts += def->pulleys[i].has_drive || def->pulleys[i].has_takeup;
     o->history = open_part(o, BD_OUT_HISTORY, "history.csv", err, errlen);
     o->tension = o->history ? open_part(o, BD_OUT_TENSION, "tension.csv", err, errlen) : NULL;
-    if (!o->history || !o->tension) {
-        if (o->history)
-            fclose(o->history);
+    o->parts = o->tension && parts ? open_part(o, BD_OUT_PARTS, "parts.csv", err, errlen) : NULL;
+    if (!o->history || !o->tension || (parts && !o->parts)) {
+        drop_parts(o);
         return 1;
     }
     if (hdf5) {
@@ -93,10 +113,7 @@ int bd_outputs_open(bd_outputs *o, const bd_sim *sim, const char *dir, int hdf5,
         o->h5 = bd_h5_open(o->part_path[BD_OUT_HDF5], sim->model->def->name, sim->model->n,
                            sim->model->path.length, err, errlen);
         if (!o->h5) {
-            fclose(o->history);
-            fclose(o->tension);
-            remove(o->part_path[BD_OUT_HISTORY]);
-            remove(o->part_path[BD_OUT_TENSION]);
+            drop_parts(o);
             remove(o->part_path[BD_OUT_HDF5]);
             return 1;
         }
@@ -118,7 +135,6 @@ int bd_outputs_open(bd_outputs *o, const bd_sim *sim, const char *dir, int hdf5,
     o->field_stride = spacing > mean_element ? (int)floor(spacing / mean_element + 0.5) : 1;
     o->next_tension = 0.0;
     /* history header */
-    const bd_model_def *def = sim->model->def;
     fprintf(o->history, "t_s");
     for (int i = 0; i < sim->model->probe_count; i++)
         fprintf(o->history, ",%s.tension_N,%s.speed_mps", def->simulation.probes[i].name,
@@ -132,7 +148,36 @@ int bd_outputs_open(bd_outputs *o, const bd_sim *sim, const char *dir, int hdf5,
             fprintf(o->history, ",%s.travel_m", def->pulleys[i].name);
     fprintf(o->history, ",kinetic_J,potential_J,dissipated_J,input_J\n");
     fprintf(o->tension, "t_s,s_m,x_m,y_m,tension_N,speed_mps\n");
+    if (o->parts) {
+        fprintf(o->parts, "t_s");
+        for (int i = 0; i < sim->model->pulley_count; i++)
+            if (def->pulleys[i].has_drive)
+                fprintf(o->parts, ",%s.tight_N,%s.slack_N", def->pulleys[i].name,
+                        def->pulleys[i].name);
+        for (int i = 0; i < sim->model->pulley_count; i++)
+            if (def->pulleys[i].has_takeup)
+                fprintf(o->parts, ",%s.pull_N", def->pulleys[i].name);
+        fputc('\n', o->parts);
+    }
     return 0;
+}
+
+/* parts.csv's row: a drive's tension arriving at its wrap and leaving it
+ * (its monitor's points, sensors/monitor.c), a takeup's pull: the belt's
+ * force on the carriage along its axis, taken positive as it pulls against
+ * the takeup */
+static void parts_row(bd_outputs *o, const bd_sim *sim, double t)
+{
+    const bd_model_def *def = sim->model->def;
+    fprintf(o->parts, "%.6f", t);
+    for (int i = 0; i < sim->model->pulley_count; i++)
+        if (def->pulleys[i].has_drive)
+            fprintf(o->parts, ",%.6g,%.6g", sim->pulleys[i].mon.tight_now,
+                    sim->pulleys[i].mon.slack_now);
+    for (int i = 0; i < sim->model->pulley_count; i++)
+        if (def->pulleys[i].has_takeup)
+            fprintf(o->parts, ",%.6g", -sim->pulleys[i].f_axis);
+    fputc('\n', o->parts);
 }
 
 void bd_outputs_row(bd_outputs *o, bd_sim *sim, double t)
@@ -155,6 +200,8 @@ void bd_outputs_row(bd_outputs *o, bd_sim *sim, double t)
     double dissipated, input;
     bd_energy_at_t(en, &dissipated, &input);
     fprintf(h, ",%.9g,%.9g,%.9g,%.9g\n", en->kinetic, en->potential, dissipated, input);
+    if (o->parts)
+        parts_row(o, sim, t);
 
     /* tension along the belt (at its own interval and spacing,
      * model-format.md `tension_interval`, `tension_spacing`), and the
@@ -211,6 +258,8 @@ void bd_outputs_flush(bd_outputs *o)
         fflush(o->history);
     if (o->tension)
         fflush(o->tension);
+    if (o->parts)
+        fflush(o->parts);
     bd_h5_flush(o->h5);
 }
 
@@ -397,6 +446,7 @@ static int write_summary(bd_outputs *o, const bd_sim *sim, double wall, const ch
         cJSON_AddBoolToObject(st, "converged", sim->stabilize_converged);
         bd_json_add_number(st, "kinetic_final_J", sim->stabilize_final_kinetic);
     }
+    bd_layout_to_json(root, sim);
     cJSON *w = cJSON_AddArrayToObject(root, "warnings");
     for (int i = 0; i < sim->warning_count; i++)
         cJSON_AddItemToArray(w, cJSON_CreateString(sim->warnings[i]));
@@ -421,6 +471,7 @@ int bd_outputs_close(bd_outputs *o, const bd_sim *sim, double wall, const char *
 {
     int bad = finish_part(o, BD_OUT_HISTORY, &o->history);
     bad |= finish_part(o, BD_OUT_TENSION, &o->tension);
+    bad |= finish_part(o, BD_OUT_PARTS, &o->parts);
     free(o->history_buf);
     free(o->tension_buf);
     o->history_buf = o->tension_buf = NULL;
@@ -476,6 +527,7 @@ int bd_run_dir_prepare(const char *dir, int force, char *err, size_t errlen)
         return BD_RUN_OK;   /* with --force a foreign DIR keeps its files */
     remove_in(dir, "report.html");
     remove_in(dir, "tension.h5");
+    remove_in(dir, "parts.csv");
     char plots[2048];
     DIR *d = bd_path_join(plots, sizeof plots, dir, "plots") == 0 ? opendir(plots) : NULL;
     if (!d)

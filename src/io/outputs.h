@@ -6,7 +6,10 @@
 
 #include "sim/engine.h"
 
-enum { BD_OUT_HISTORY = 0, BD_OUT_TENSION, BD_OUT_ENVELOPE, BD_OUT_SUMMARY, BD_OUT_HDF5, BD_OUT_COUNT };
+enum {
+    BD_OUT_HISTORY = 0, BD_OUT_TENSION, BD_OUT_ENVELOPE, BD_OUT_SUMMARY, BD_OUT_HDF5, BD_OUT_PARTS,
+    BD_OUT_COUNT
+};
 
 struct bd_h5;
 
@@ -15,6 +18,8 @@ typedef struct bd_outputs {
     char final_path[BD_OUT_COUNT][1100];
     char part_path[BD_OUT_COUNT][1100];
     FILE *history, *tension;
+    FILE *parts;           /* parts.csv: drive sides and takeup pulls, or
+                              NULL for a model with neither */
     char *history_buf, *tension_buf;   /* their stdio buffers (one per run:
                                           runs may write side by side) */
     struct bd_h5 *h5;      /* tension.h5 when asked for (run --hdf5), else NULL */

@@ -113,6 +113,20 @@ int bd_plot_add_marker(bd_plot_axes *a, double x, double y, const char *label)
     return a->nmarkers++;
 }
 
+int bd_plot_add_xmark(bd_plot_axes *a, double x, const char *label)
+{
+    if (a->nxmarks >= BD_PLOT_MAX_XMARKS || !isfinite(x)) return -1;
+    a->xmarks[a->nxmarks] = (bd_plot_xmark){x, label};
+    return a->nxmarks++;
+}
+
+int bd_plot_add_text(bd_plot_axes *a, double x, double y, const char *label)
+{
+    if (a->ntexts >= BD_PLOT_MAX_TEXTS || !isfinite(x) || !isfinite(y)) return -1;
+    a->texts[a->ntexts] = (bd_plot_text){x, y, label};
+    return a->ntexts++;
+}
+
 /* ---- ranges and ticks ---- */
 
 typedef struct range {
@@ -212,6 +226,10 @@ static range axes_range(const bd_plot_axes *a, int want_y)
 static range pad_y(const bd_plot_axes *a, range r)
 {
     if (a->map) return r;
+    if (a->aspect > 0.0) {   /* a drawing: 5 %, the aspect sets the rest */
+        double pad = 0.05 * (r.hi - r.lo);
+        return (range){r.lo - pad, r.hi + pad};
+    }
     double pad = 0.05 * (r.hi - r.lo);
     range p = {r.lo - pad, r.hi + pad};
     double step = nice_step(p.hi - p.lo, 6);
@@ -262,6 +280,8 @@ static int legend_items(const bd_plot_axes *a, legend_item *items, int max)
     int n = 0;
     if (a->has_band && a->band.label && n < max)
         items[n++] = (legend_item){a->band.label, a->band.color, 2, 0.0};
+    if (a->has_xspan && a->xspan.label && n < max)
+        items[n++] = (legend_item){a->xspan.label, a->xspan.color, 2, 0.0};
     for (int i = 0; i < a->nseries && n < max; i++)
         if (a->series[i].label)
             items[n++] = (legend_item){a->series[i].label, a->series[i].color,
@@ -281,7 +301,7 @@ static int legend_items(const bd_plot_axes *a, legend_item *items, int max)
 /* rows the legend needs in a strip of the given width */
 static int legend_rows(cairo_t *cr, const bd_plot_axes *a, double width)
 {
-    legend_item items[BD_PLOT_MAX_SERIES + BD_PLOT_MAX_HLINES + 1];
+    legend_item items[BD_PLOT_MAX_SERIES + BD_PLOT_MAX_HLINES + 2];
     int n = legend_items(a, items, (int)(sizeof items / sizeof items[0]));
     if (n == 0) return 0;
     set_font(cr, FS_LEGEND, 0);
@@ -367,6 +387,29 @@ static void compute_layout(cairo_t *cr, const bd_plot_figure *f, layout *L)
         y += ph;
         L->bottom[p] = y;
         y += (!f->share_x || p == np - 1) ? xaxis_h : 6.0;
+    }
+    /* a drawing: widen the y or the x range about its middle until a unit
+     * of y is `aspect` times as long as a unit of x */
+    for (int p = 0; p < np; p++) {
+        double aspect = f->panel[p].aspect;
+        if (aspect <= 0.0) continue;
+        double w = L->right - L->left, h = L->bottom[p] - L->top[p];
+        range *xr = &L->xr[p], *yr = &L->yr[p];
+        double xpad = 0.02 * (xr->hi - xr->lo);
+        xr->lo -= xpad;
+        xr->hi += xpad;
+        double ppx = w / (xr->hi - xr->lo);           /* px per x unit */
+        double yspan = h / (aspect * ppx);              /* y shown at that scale */
+        if (yspan >= yr->hi - yr->lo) {
+            double mid = 0.5 * (yr->lo + yr->hi);
+            *yr = (range){mid - 0.5 * yspan, mid + 0.5 * yspan};
+        } else {
+            double xspan = w * aspect * (yr->hi - yr->lo) / h;
+            double mid = 0.5 * (xr->lo + xr->hi);
+            *xr = (range){mid - 0.5 * xspan, mid + 0.5 * xspan};
+        }
+        L->xt[p] = make_ticks(*xr, 8);
+        L->yt[p] = make_ticks(*yr, np > 1 ? 4 : 6);
     }
 }
 
@@ -623,7 +666,7 @@ static void draw_colorbar(cairo_t *cr, const layout *L, int p, const bd_plot_map
 
 static void draw_legend(cairo_t *cr, const layout *L, int p, const bd_plot_axes *a)
 {
-    legend_item items[BD_PLOT_MAX_SERIES + BD_PLOT_MAX_HLINES + 1];
+    legend_item items[BD_PLOT_MAX_SERIES + BD_PLOT_MAX_HLINES + 2];
     int n = legend_items(a, items, (int)(sizeof items / sizeof items[0]));
     if (n == 0) return;
     set_font(cr, FS_LEGEND, 0);
@@ -697,6 +740,57 @@ static void draw_marker(cairo_t *cr, const xform *t, const bd_plot_marker *m)
     draw_text(cr, bx + 5.0, by + 0.5 * h, 0.0, 0.5, m->label);
 }
 
+static void draw_xspan(cairo_t *cr, const xform *t, const bd_plot_xspan *x)
+{
+    cairo_set_source_rgba(cr, x->color.r, x->color.g, x->color.b, x->alpha);
+    if (x->x1 >= x->x0) {
+        cairo_rectangle(cr, px(t, x->x0), t->y0, px(t, x->x1) - px(t, x->x0), t->y1 - t->y0);
+    } else {   /* wraps round the loop's end */
+        cairo_rectangle(cr, px(t, x->x0), t->y0, t->x1 - px(t, x->x0), t->y1 - t->y0);
+        cairo_rectangle(cr, t->x0, t->y0, px(t, x->x1) - t->x0, t->y1 - t->y0);
+    }
+    cairo_fill(cr);
+}
+
+/* thin dotted lines with their names written upward from the top */
+static void draw_xmarks(cairo_t *cr, const xform *t, const bd_plot_axes *a)
+{
+    set_font(cr, FS_TICK - 2.0, 0);
+    for (int i = 0; i < a->nxmarks; i++) {
+        double X = floor(px(t, a->xmarks[i].x)) + 0.5;
+        if (X < t->x0 || X > t->x1) continue;
+        double d[2] = {2.0, 3.0};
+        cairo_set_dash(cr, d, 2, 0.0);
+        cairo_set_line_width(cr, 1.0);
+        cairo_set_source_rgb(cr, 0.35, 0.35, 0.35);
+        cairo_move_to(cr, X, t->y0);
+        cairo_line_to(cr, X, t->y1);
+        cairo_stroke(cr);
+        cairo_set_dash(cr, NULL, 0, 0.0);
+        if (!a->xmarks[i].label) continue;
+        cairo_save(cr);
+        cairo_translate(cr, X - 3.0, t->y0 + 4.0);
+        cairo_rotate(cr, -BD_PI / 2.0);
+        draw_text(cr, 0.0, 0.0, 1.0, 1.0, a->xmarks[i].label);
+        cairo_restore(cr);
+    }
+}
+
+/* a short text up and right of its point, on a white halo */
+static void draw_note(cairo_t *cr, const xform *t, const bd_plot_text *n)
+{
+    if (!n->label) return;
+    set_font(cr, FS_TICK - 1.0, 0);
+    double X = px(t, n->x) + 6.0, Y = py(t, n->y) - 9.0;
+    double w = text_width(cr, n->label);
+    if (X + w > t->x1) X = px(t, n->x) - 6.0 - w;
+    cairo_set_source_rgba(cr, 1.0, 1.0, 1.0, 0.8);
+    cairo_rectangle(cr, X - 2.0, Y - FS_TICK * 0.6, w + 4.0, FS_TICK * 1.2);
+    cairo_fill(cr);
+    set_rgb(cr, text_rgb);
+    draw_text(cr, X, Y, 0.0, 0.5, n->label);
+}
+
 static void render(cairo_t *cr, const bd_plot_figure *f)
 {
     layout L;
@@ -746,6 +840,8 @@ static void render(cairo_t *cr, const bd_plot_figure *f)
         cairo_clip(cr);
         if (a->map) draw_map(cr, &t, a->map);
         if (a->has_band) draw_band(cr, &t, &a->band);
+        if (a->has_xspan) draw_xspan(cr, &t, &a->xspan);
+        draw_xmarks(cr, &t, a);
         /* a zero line when the range crosses zero */
         if (!a->map && L.yr[p].lo < 0.0 && L.yr[p].hi > 0.0) {
             double Y = floor(py(&t, 0.0)) + 0.5;
@@ -771,6 +867,7 @@ static void render(cairo_t *cr, const bd_plot_figure *f)
         }
         for (int i = 0; i < a->nseries; i++) draw_line_series(cr, &t, &a->series[i]);
         cairo_restore(cr);
+        for (int i = 0; i < a->ntexts; i++) draw_note(cr, &t, &a->texts[i]);
         for (int i = 0; i < a->nmarkers; i++) draw_marker(cr, &t, &a->markers[i]);
 
         /* frame and ticks */

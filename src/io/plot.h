@@ -48,6 +48,28 @@ typedef struct bd_plot_marker {
     const char *label;
 } bd_plot_marker;
 
+/* a place on the x axis marked by a thin vertical line and a short name
+ * at the top of the panel (the pulleys on an s axis) */
+typedef struct bd_plot_xmark {
+    double x;
+    const char *label;
+} bd_plot_xmark;
+
+/* a stretch of the x axis shaded over the panel's height; x1 < x0 wraps:
+ * [x0, right edge] and [left edge, x1] (a region of a closed belt loop) */
+typedef struct bd_plot_xspan {
+    double x0, x1;
+    const char *label;   /* legend text */
+    bd_rgb color;
+    double alpha;
+} bd_plot_xspan;
+
+/* a short text beside a data point */
+typedef struct bd_plot_text {
+    double x, y;
+    const char *label;
+} bd_plot_text;
+
 /* a colour map: a raster of values over the data rectangle
  * [x0, x1] x [y0, y1]; row 0 is at y0 (the bottom of the panel) */
 typedef struct bd_plot_map {
@@ -61,7 +83,9 @@ typedef struct bd_plot_map {
 #define BD_PLOT_MAX_SERIES 12
 #define BD_PLOT_MAX_HLINES 4
 #define BD_PLOT_MAX_MARKERS 4
-#define BD_PLOT_MAX_PANELS 3
+#define BD_PLOT_MAX_PANELS 4
+#define BD_PLOT_MAX_XMARKS 32
+#define BD_PLOT_MAX_TEXTS 32
 
 typedef struct bd_plot_axes {
     const char *xlabel;           /* quantity [unit] */
@@ -74,8 +98,16 @@ typedef struct bd_plot_axes {
     int has_band;
     bd_plot_marker markers[BD_PLOT_MAX_MARKERS];
     int nmarkers;
+    bd_plot_xmark xmarks[BD_PLOT_MAX_XMARKS];
+    int nxmarks;
+    bd_plot_xspan xspan;
+    int has_xspan;
+    bd_plot_text texts[BD_PLOT_MAX_TEXTS];
+    int ntexts;
     const bd_plot_map *map;       /* colour map, or NULL */
     int include_zero;             /* 1 = the y range includes 0 */
+    double aspect;                /* > 0: px per y unit = aspect × px per x
+                                     unit (1 = true shape; a drawing) */
 } bd_plot_axes;
 
 typedef struct bd_plot_figure {
@@ -95,6 +127,8 @@ int bd_plot_add_series(bd_plot_axes *a, const double *x, const double *y, size_t
                        const char *label, bd_rgb color);
 int bd_plot_add_hline(bd_plot_axes *a, double y, const char *label, bd_rgb color, int dashed);
 int bd_plot_add_marker(bd_plot_axes *a, double x, double y, const char *label);
+int bd_plot_add_xmark(bd_plot_axes *a, double x, const char *label);
+int bd_plot_add_text(bd_plot_axes *a, double x, double y, const char *label);
 
 /* size in px of panel p's plot area (where data is drawn) for this figure */
 void bd_plot_area_size(const bd_plot_figure *f, int p, int *w, int *h);

@@ -1,10 +1,12 @@
 /* beltdyn report DIR: plots of a run and one self-contained report.html */
 #include "beltdyn/report.h"
 
+#include "base/constants.h"
 #include "base/file.h"
 #include "base/json_util.h"
 #include "io/csv_read.h"
 #include "io/html.h"
+#include "io/layout_plot.h"
 #include "io/cases_report.h"
 #include "io/study_report.h"
 #include "io/plot.h"
@@ -167,7 +169,7 @@ typedef struct report {
     struct {
         char name[32];
         char caption[LABEL_LEN];
-    } plot[8];
+    } plot[10];
     /* temporary allocations freed at the end */
     void *owned[256];
     int nowned;
@@ -346,6 +348,7 @@ static int plot_tension_surface(report *r, char *err, size_t errlen)
     map.vmax = hi.value > lo.value ? hi.value / u.scale : lo.value / u.scale + 1.0;
     map.label = cbar;
     a->map = &map;
+    bd_layout_mark_s_axis(r->summary, a);
     /* markers first: they take part in the layout (legend rows none) */
     char v1[64], v2[64];
     fmt_num(v1, sizeof v1, hi.value / u.scale);
@@ -376,6 +379,30 @@ static int plot_tension_surface(report *r, char *err, size_t errlen)
     free(img);
 done:
     bd_csv_free(&csv);
+    return rc;
+}
+
+/* ---- the conveyor's layout (summary.json "layout") ---- */
+
+static int plot_layout(report *r, char *err, size_t errlen)
+{
+    char *title = lbl(r);
+    set_title(r, title, LABEL_LEN, "layout");
+    bd_plot_figure f;
+    bd_plot_figure_init(&f, title, FIG_W, FIG_H - 120);
+    bd_layout_drawing d;
+    int got = bd_layout_figure(r->summary, &f, &d);
+    if (got < 0) {
+        set_err(err, errlen, "out of memory");
+        return BD_REPORT_EOUTPUT;
+    }
+    if (got == 0) return 0;   /* a run from before summary.json had a layout */
+    int rc = write_plot(r, &f, "layout",
+                        "The conveyor as built: the belt path, the pulleys by name (drives red, "
+                        "takeups blue), the loaded stretch, and where the belt lifted off its "
+                        "idlers if it did.",
+                        err, errlen);
+    bd_layout_drawing_free(&d);
     return rc;
 }
 
@@ -414,6 +441,7 @@ static int plot_envelope(report *r, char *err, size_t errlen)
     a->include_zero = 1;
     a->has_band = 1;
     a->band = (bd_plot_band){x, lo, hi, n, "range during the run", {0.0, 0.447, 0.698}, 0.15};
+    bd_layout_mark_s_axis(r->summary, a);
     int k = bd_plot_add_series(a, x, hi, n, "maximum tension", (bd_rgb){0.80, 0.15, 0.10});
     a->series[k].width = 2.5;
     k = bd_plot_add_series(a, x, lo, n, "minimum tension", (bd_rgb){0.0, 0.35, 0.70});
@@ -625,19 +653,135 @@ static int drive_power_panel(report *r, bd_plot_axes *a, const bd_csv *h, const 
     return 0;
 }
 
+/* a pulley's entry in summary.json's layout (io/layout.c), or NULL */
+static const cJSON *layout_pulley(const report *r, const char *name)
+{
+    const cJSON *lay = cJSON_GetObjectItemCaseSensitive(r->summary, "layout"), *p;
+    cJSON_ArrayForEach(p, cJSON_GetObjectItemCaseSensitive(lay, "pulleys")) {
+        const char *n = bd_json_str(p, "name");
+        if (n && strcmp(n, name) == 0) return p;
+    }
+    return NULL;
+}
+
+/* a drive's torque rating at the pulley: its motor's rated torque, else its
+ * max_torque; NaN when it has neither. *what says which. */
+static double drive_rating(const report *r, const char *name, const char **what)
+{
+    const cJSON *p = layout_pulley(r, name);
+    double T = bd_json_num(p, "rated_torque_Nm");
+    *what = "motor rated";
+    if (!(T > 0.0)) {
+        T = bd_json_num(p, "max_torque_Nm");
+        *what = "max_torque";
+    }
+    return T > 0.0 ? T : NAN;
+}
+
+/* the drives' torque as % of their rating (1) when every drive has one, 0
+ * when one has none (the caller plots N·m), −1 out of memory */
+static int drive_torque_percent_panel(report *r, bd_plot_axes *a, const bd_csv *h, const group *g,
+                                      char *ylabel, double *scale)
+{
+    int n = 0;
+    for (int i = 0; i < g->n; i++) {
+        const char *what;
+        if (g->col[i][1] < 0) continue;
+        if (!isfinite(drive_rating(r, g->name[i], &what))) return 0;
+        n++;
+    }
+    if (n == 0) return 0;
+    snprintf(ylabel, LABEL_LEN, "Drive torque M [%% of rating]");
+    a->ylabel = ylabel;
+    *scale = NAN;
+    for (int i = 0, k = 0; i < g->n; i++) {
+        if (g->col[i][1] < 0) continue;
+        const char *what;
+        double rating = drive_rating(r, g->name[i], &what);
+        double *y = own(r, scaled(h->col[g->col[i][1]], h->nrows, rating / 100.0));
+        char *label = lbl(r), num[64];
+        if (!y) return -1;
+        fmt_num(num, sizeof num, rating);
+        snprintf(label, LABEL_LEN, "%s", g->name[i]);
+        int q = bd_plot_add_series(a, h->col[0], y, h->nrows, label, bd_plot_palette(k++));
+        (void)q;
+        char *line = lbl(r);
+        snprintf(line, LABEL_LEN, "100 %% = %s N·m (%s, %s)", num, g->name[i], what);
+        bd_plot_add_hline(a, 100.0, line, (bd_rgb){0.80, 0.0, 0.0}, 1);
+        /* one drive: its summary peak converts with its own rating */
+        *scale = n == 1 ? rating / 100.0 : NAN;
+    }
+    return 1;
+}
+
+/* the friction each drive pulley uses, ln(T₁/T₂)/(μ·φ) in % (Euler–
+ * Eytelwein: the belt slips at 100 %), from parts.csv and the layout's
+ * wrap and static friction; 0 when there is no parts.csv, −1 out of memory */
+static int drive_friction_panel(report *r, bd_plot_axes *a, const group *g, const bd_csv *parts,
+                                char *ylabel)
+{
+    if (!parts) return 0;
+    snprintf(ylabel, LABEL_LEN, "Friction used ln(T₁/T₂)/(μ·φ) [%%]");
+    a->ylabel = ylabel;
+    for (int i = 0, k = 0; i < g->n; i++) {
+        char c1[96], c2[96];
+        snprintf(c1, sizeof c1, "%s.tight_N", g->name[i]);
+        snprintf(c2, sizeof c2, "%s.slack_N", g->name[i]);
+        int a1 = bd_csv_find(parts, c1), a2 = bd_csv_find(parts, c2);
+        const cJSON *p = layout_pulley(r, g->name[i]);
+        double mu = bd_json_num(p, "friction_static"), phi = bd_json_num(p, "wrap_deg");
+        if (a1 < 0 || a2 < 0 || !(mu > 0.0) || !(phi > 0.0)) continue;
+        double cap = mu * phi * BD_PI / 180.0;
+        double *y = own(r, malloc((parts->nrows ? parts->nrows : 1) * sizeof *y));
+        if (!y) return -1;
+        for (size_t q = 0; q < parts->nrows; q++) {
+            double T1 = parts->col[a1][q], T2 = parts->col[a2][q];
+            double hi = fmax(T1, T2), lo = fmin(T1, T2);
+            y[q] = lo > 0.0 ? 100.0 * log(hi / lo) / cap : NAN;
+        }
+        char *label = lbl(r);
+        snprintf(label, LABEL_LEN, "%s (μ %.3g, wrap %.0f°)", g->name[i], mu, phi);
+        bd_plot_add_series(a, parts->col[0], y, parts->nrows, label, bd_plot_palette(k++));
+    }
+    if (a->nseries > 0)
+        bd_plot_add_hline(a, 100.0, "slip: the whole wrap's friction used", (bd_rgb){0.80, 0.0, 0.0}, 1);
+    a->include_zero = 1;
+    return 0;
+}
+
+/* parts.csv (io/outputs.c) when the run wrote one: 1 read, 0 absent */
+static int read_parts(report *r, bd_csv *parts, char *err, size_t errlen)
+{
+    char path[PATH_LEN];
+    if (bd_path_join(path, sizeof path, r->dir, "parts.csv") || !file_exists(path)) return 0;
+    if (bd_csv_read(path, NULL, 0, parts, err, errlen)) return -1;
+    if (parts->ncols < 1 || parts->nrows == 0) {
+        bd_csv_free(parts);
+        return 0;
+    }
+    return 1;
+}
+
 static int plot_history(report *r, char *err, size_t errlen)
 {
     char path[PATH_LEN];
     if (bd_path_join(path, sizeof path, r->dir, "history.csv") || !file_exists(path)) return 0;
     bd_csv h;
     if (bd_csv_read(path, NULL, 0, &h, err, errlen)) return BD_REPORT_EINPUT;
-    int rc = 0;
+    int rc = 0, have_parts = 0;
+    bd_csv parts;
+    memset(&parts, 0, sizeof parts);
     if (h.ncols < 1 || strcmp(h.names[0], "t_s") != 0) {
         set_err(err, errlen, "%s:1: the first column is not t_s", path);
         rc = BD_REPORT_EINPUT;
         goto done;
     }
     if (h.nrows == 0) goto done;
+    have_parts = read_parts(r, &parts, err, errlen);
+    if (have_parts < 0) {
+        rc = BD_REPORT_EINPUT;
+        goto done;
+    }
     const double *t = h.col[0];
     char *title[4], *yl[6];
     for (int i = 0; i < 4; i++) title[i] = lbl(r);
@@ -667,54 +811,85 @@ static int plot_history(report *r, char *err, size_t errlen)
             goto done;
     }
 
-    /* drives: speed and torque */
+    /* drives: speed, torque, power and the friction they use */
     find_group(&h, ".omega_rad_s", ".torque_Nm", &g);
     if (g.n > 0) {
         bd_plot_figure f;
         set_title(r, title[1], LABEL_LEN, "drive pulleys");
         bd_plot_figure_init(&f, title[1], FIG_W, FIG_H + 100);
-        f.npanels = 2;
+        f.npanels = 4;
         f.share_x = 1;
+        double pct_scale = NAN;
         int speed_ok = drive_speed_panel(r, &f.panel[0], &h, &g, yl[2]);
-        if (speed_ok < 0 ||
+        int pct = speed_ok < 0 ? -1
+                : drive_torque_percent_panel(r, &f.panel[1], &h, &g, yl[3], &pct_scale);
+        if (speed_ok < 0 || pct < 0 ||
             (!speed_ok && fill_panel(r, &f.panel[0], &h, &g, 0, "Pulley speed ω", "rad/s", yl[2],
                                      LABEL_LEN, 0, &u[2]) < 0) ||
-            fill_panel(r, &f.panel[1], &h, &g, 1, "Drive torque M", "N·m", yl[3], LABEL_LEN, 0, &u[3]) < 0 ||
-            drive_power_panel(r, &f.panel[2], &h, &g, lbl(r)) < 0)
+            (!pct && fill_panel(r, &f.panel[1], &h, &g, 1, "Drive torque M", "N·m", yl[3],
+                                LABEL_LEN, 0, &u[3]) < 0) ||
+            drive_power_panel(r, &f.panel[2], &h, &g, lbl(r)) < 0 ||
+            drive_friction_panel(r, &f.panel[3], &g, have_parts ? &parts : NULL, lbl(r)) < 0)
             goto oom;
-        mark_extreme(r, &f.panel[1], "peak", u[3].name, 1, "pulleys", "torque_max_Nm", u[3].scale);
+        if (pct)
+            mark_extreme(r, &f.panel[1], "peak", "%", 1, isfinite(pct_scale) ? "pulleys" : NULL,
+                         "torque_max_Nm", pct_scale);
+        else
+            mark_extreme(r, &f.panel[1], "peak", u[3].name, 1, "pulleys", "torque_max_Nm",
+                         u[3].scale);
         mark_extreme(r, &f.panel[2], "peak", "kW", 1, NULL, NULL, 0.0);
+        mark_extreme(r, &f.panel[3], "most", "%", 0, NULL, NULL, 0.0);
         /* the panels that have curves, top to bottom */
         int np = 0;
-        for (int k = 0; k < 3; k++)
+        for (int k = 0; k < 4; k++)
             if (f.panel[k].nseries > 0) f.panel[np++] = f.panel[k];
         f.npanels = np > 0 ? np : 1;
-        if (f.npanels == 3) f.height = FIG_H + 300;
+        f.height = FIG_H + 100 + 200 * (f.npanels - 2 > 0 ? f.npanels - 2 : 0);
         f.panel[f.npanels - 1].xlabel = "Time t [s]";
         f.panel[f.npanels - 1].include_zero = 1;
-        if ((rc = write_plot(r, &f, "drives",
-                             speed_ok ? "Belt speed at the drive pulleys (ω·R), their torque and "
-                                        "the power they deliver (M·ω) against time."
-                                      : "Angular speed, torque and power (M·ω) of the drive "
-                                        "pulleys against time.", err, errlen)))
+        char *cap = lbl(r);
+        snprintf(cap, LABEL_LEN, "%s%s%s",
+                 speed_ok ? "Belt speed at the drive pulleys (ω·R), their torque"
+                          : "Angular speed of the drive pulleys, their torque",
+                 pct ? " as a share of its rating (the motor's rated torque, else max_torque; "
+                       "dashed: 100 %)" : "",
+                 f.npanels == 4 ? ", the power they deliver (M·ω) and the friction they use "
+                                  "against time: ln(T₁/T₂) over μ·φ, the belt slips at 100 %."
+                                : " and the power they deliver (M·ω) against time.");
+        if ((rc = write_plot(r, &f, "drives", cap, err, errlen)))
             goto done;
     }
 
-    /* takeups: travel */
+    /* takeups: travel, and the belt's pull on the carriage */
     find_group(&h, ".travel_m", NULL, &g);
     if (g.n > 0) {
         bd_plot_figure f;
-        set_title(r, title[2], LABEL_LEN, "takeup travel");
+        set_title(r, title[2], LABEL_LEN, "takeups");
         bd_plot_figure_init(&f, title[2], FIG_W, FIG_H);
-        f.subtitle = "carriage displacement along its axis from the initial position";
-        f.panel[0].xlabel = "Time t [s]";
-        f.panel[0].include_zero = 1;
+        f.subtitle = "carriage travel along its axis from the initial position, and the belt's "
+                     "pull on it";
+        f.share_x = 1;
         if (fill_panel(r, &f.panel[0], &h, &g, 0, "Takeup travel x", "m", yl[4], LABEL_LEN, 1, &u[4]) < 0)
             goto oom;
         mark_extreme(r, &f.panel[0], "largest", u[4].name, 1, NULL, NULL, 0.0);
+        f.panel[0].include_zero = 1;
+        group gp;
+        if (have_parts) find_group(&parts, ".pull_N", NULL, &gp);
+        if (have_parts && gp.n > 0) {
+            if (fill_panel(r, &f.panel[1], &parts, &gp, 0, "Belt pull on the takeup F", "N",
+                           yl[5], LABEL_LEN, 1, &u[1]) < 0)
+                goto oom;
+            mark_extreme(r, &f.panel[1], "largest", u[1].name, 1, NULL, NULL, 0.0);
+            f.npanels = 2;
+            f.height = FIG_H + 100;
+        }
+        f.panel[f.npanels - 1].xlabel = "Time t [s]";
         if ((rc = write_plot(r, &f, "takeups",
-                             "Takeup carriage travel against time (legend: lowest … highest).", err,
-                             errlen)))
+                             f.npanels == 2 ? "Takeup carriage travel and the belt's pull on the "
+                                              "carriage along its axis against time (legend: "
+                                              "lowest … highest)."
+                                            : "Takeup carriage travel against time (legend: "
+                                              "lowest … highest).", err, errlen)))
             goto done;
     }
 
@@ -788,6 +963,7 @@ oom:
     rc = BD_REPORT_EOUTPUT;
 done:
     bd_csv_free(&h);
+    if (have_parts > 0) bd_csv_free(&parts);
     return rc;
 }
 
@@ -1377,6 +1553,7 @@ int bd_report_write(const char *dir, char *err, size_t errlen)
         rc = BD_REPORT_EOUTPUT;
         goto done;
     }
+    if ((rc = plot_layout(r, err, errlen))) goto done;
     if ((rc = plot_tension_surface(r, err, errlen))) goto done;
     if ((rc = plot_envelope(r, err, errlen))) goto done;
     if ((rc = plot_history(r, err, errlen))) goto done;
