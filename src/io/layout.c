@@ -27,8 +27,9 @@ static void add_point(cJSON *s, cJSON *x, cJSON *y, const bd_path *path, double 
 static void add_stretch(cJSON *s, cJSON *x, cJSON *y, const bd_path *path, double s0, double len,
                         double sweep)
 {
-    int n = sweep != 0.0 ? (int)ceil(fabs(sweep) / ARC_STEP)
-                         : (int)ceil(len / (LINE_STEP * path->length));
+    int n = (int)ceil(len / (LINE_STEP * path->length));
+    if (sweep != 0.0 && ceil(fabs(sweep) / ARC_STEP) > n)
+        n = (int)ceil(fabs(sweep) / ARC_STEP);
     if (n < 1)
         n = 1;
     for (int k = 1; k <= n; k++)
