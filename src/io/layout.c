@@ -60,16 +60,14 @@ static void add_path(cJSON *layout, const bd_path *path)
 }
 
 /* a drive's rating at the pulley shaft: the motor's rated torque through
- * its gear (and transmission sheaves), N·m; 0 without a motor */
+ * gear_ratio (motor over pulley speed, a transmission's sheaves included:
+ * model-format.md), N·m; 0 without a motor */
 static double rated_torque(const bd_drive_def *d)
 {
     if (d->control != BD_CONTROL_MOTOR || d->motor.rated_speed_rpm <= 0.0)
         return 0.0;
     double T = d->motor.rated_power / (d->motor.rated_speed_rpm * 2.0 * BD_PI / 60.0);
-    double ratio = d->motor.gear_ratio;
-    if (d->has_transmission && d->transmission.motor_sheave_radius > 0.0)
-        ratio *= d->transmission.pulley_sheave_radius / d->transmission.motor_sheave_radius;
-    return T * ratio;
+    return T * d->motor.gear_ratio;
 }
 
 static void add_pulleys(cJSON *layout, const bd_sim *sim)

@@ -132,7 +132,8 @@ int bd_outputs_open(bd_outputs *o, const bd_sim *sim, const char *dir, int hdf5,
      * mean element length (at least 1) */
     double spacing = sim->model->def->simulation.tension_spacing;
     double mean_element = sim->model->path.length / sim->model->n;
-    o->field_stride = spacing > mean_element ? (int)floor(spacing / mean_element + 0.5) : 1;
+    o->field_stride = spacing > mean_element ? (int)fmin(floor(spacing / mean_element + 0.5),
+                                                         (double)sim->model->n) : 1;
     o->next_tension = 0.0;
     /* history header */
     fprintf(o->history, "t_s");
@@ -166,14 +167,22 @@ int bd_outputs_open(bd_outputs *o, const bd_sim *sim, const char *dir, int hdf5,
  * (its monitor's points, sensors/monitor.c), a takeup's pull: the belt's
  * force on the carriage along its axis, taken positive as it pulls against
  * the takeup */
-static void parts_row(bd_outputs *o, const bd_sim *sim, double t)
+static void parts_row(bd_outputs *o, bd_sim *sim, double t)
 {
     const bd_model_def *def = sim->model->def;
     fprintf(o->parts, "%.6f", t);
+    const bd_belt_ops *belt = sim->model->belt;
     for (int i = 0; i < sim->model->pulley_count; i++)
-        if (def->pulleys[i].has_drive)
-            fprintf(o->parts, ",%.6g,%.6g", sim->pulleys[i].mon.tight_now,
-                    sim->pulleys[i].mon.slack_now);
+        if (def->pulleys[i].has_drive) {
+            /* read now, as probes are: at t = 0 no step has updated them */
+            bd_drive_monitor *m = &sim->pulleys[i].mon;
+            bd_belt_sample in, out;
+            belt->point_update(sim, &m->tight);
+            belt->point_update(sim, &m->slack);
+            belt->sample(sim, &m->tight, &in);
+            belt->sample(sim, &m->slack, &out);
+            fprintf(o->parts, ",%.6g,%.6g", in.tension, out.tension);
+        }
     for (int i = 0; i < sim->model->pulley_count; i++)
         if (def->pulleys[i].has_takeup)
             fprintf(o->parts, ",%.6g", -sim->pulleys[i].f_axis);
