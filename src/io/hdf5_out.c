@@ -86,8 +86,8 @@ static hid_t make_set(hid_t file, int which, hsize_t nelem)
     hid_t dcpl = H5Pcreate(H5P_DATASET_CREATE);
     hid_t set = -1;
     /* compressed where the library has zlib (Debian's does): byte shuffle
-     * then deflate level 4, lossless; a tension field of slowly varying
-     * doubles shrinks to about a third */
+     * then deflate level 4, lossless; noisy doubles shrink little:
+     * head_drive's field 23.0 → 16.2 MB) */
     int ok = space >= 0 && dcpl >= 0 && H5Pset_chunk(dcpl, rank, chunk) >= 0;
     if (ok && H5Zfilter_avail(H5Z_FILTER_DEFLATE) > 0)
         ok = H5Pset_shuffle(dcpl) >= 0 && H5Pset_deflate(dcpl, 4) >= 0;

@@ -702,15 +702,22 @@ static int drive_torque_percent_panel(report *r, bd_plot_axes *a, const bd_csv *
         char *label = lbl(r), num[64];
         if (!y) return -1;
         fmt_num(num, sizeof num, rating);
-        snprintf(label, LABEL_LEN, "%s", g->name[i]);
-        int q = bd_plot_add_series(a, h->col[0], y, h->nrows, label, bd_plot_palette(k++));
-        (void)q;
+        /* one 100 % line: one drive's rating on it; several drives carry
+         * theirs in their legend entries (the series label of a single
+         * drive stays its name: mark_extreme finds its summary peak by it) */
         char *line = lbl(r);
-        snprintf(line, LABEL_LEN, "100 %% = %s N·m (%s, %s)", num, g->name[i], what);
-        bd_plot_add_hline(a, 100.0, line, (bd_rgb){0.80, 0.0, 0.0}, 1);
-        /* one drive: its summary peak converts with its own rating */
-        *scale = n == 1 ? rating / 100.0 : NAN;
+        if (n == 1) {
+            snprintf(label, LABEL_LEN, "%s", g->name[i]);
+            snprintf(line, LABEL_LEN, "100 %% = %s N·m (%s)", num, what);
+            bd_plot_add_hline(a, 100.0, line, (bd_rgb){0.80, 0.0, 0.0}, 1);
+            /* its summary peak converts with its rating */
+            *scale = rating / 100.0;
+        } else {
+            snprintf(label, LABEL_LEN, "%s (100 %% = %s N·m, %s)", g->name[i], num, what);
+        }
+        bd_plot_add_series(a, h->col[0], y, h->nrows, label, bd_plot_palette(k++));
     }
+    if (n > 1) bd_plot_add_hline(a, 100.0, "each drive's rating", (bd_rgb){0.80, 0.0, 0.0}, 1);
     return 1;
 }
 

@@ -15,6 +15,10 @@ grep -q "tension_spacing: 2" "$model" || bad "test model" "sed did not add the k
 
 "$BELTDYN" run "$tmp/plain.yaml" -o "$tmp/plain" --quiet >/dev/null 2>&1 || bad "plain run" "failed"
 "$BELTDYN" run "$model" -o "$tmp/thin" --quiet >/dev/null 2>&1 || bad "thinned run" "failed"
+# an interval that is no multiple of output_interval: 0.05 s on 0.02 s rows
+sed -e 's/^  output_interval: 0.02$/  output_interval: 0.02\n  tension_interval: 0.05/' \
+    "$tmp/plain.yaml" >"$tmp/odd.yaml"
+"$BELTDYN" run "$tmp/odd.yaml" -o "$tmp/odd" --quiet >/dev/null 2>&1 || bad "odd-interval run" "failed"
 
 # history and envelope are the same bytes: the keys thin the field only
 for f in history.csv envelope.csv; do
@@ -22,7 +26,7 @@ for f in history.csv envelope.csv; do
     else bad "$f unchanged by the keys" "files differ"; fi
 done
 
-python3 - "$tmp/plain" "$tmp/thin" >"$tmp/verdicts" 2>&1 <<'PY' || bad "field checker" "crashed: $(cat "$tmp/verdicts")"
+python3 - "$tmp/plain" "$tmp/thin" "$tmp/odd" >"$tmp/verdicts" 2>&1 <<'PY' || bad "field checker" "crashed: $(cat "$tmp/verdicts")"
 
 import csv, json, sys
 from collections import OrderedDict
@@ -33,7 +37,7 @@ def field(d):
         r = csv.reader(f)
         next(r)
         for row in r:
-            rows.setdefault(row[0], []).append(float(row[1]))
+            rows.setdefault(row[0], []).append(row)
     return rows
 
 plain, thin = field(sys.argv[1]), field(sys.argv[2])
@@ -55,14 +59,28 @@ per = [len(v) for v in thin.values()]
 want = -(-nodes // k)
 say(all(n == want for n in per), "%d points per time (every %d-th of %d elements)" % (want, k, nodes),
     str(sorted(set(per))))
-# the thinned rows are the plain field's rows at the same time
+# the thinned rows are the plain field's every k-th row at the same time,
+# whole (position, tension, speed): the two runs are the same simulation
+diff = [t for t in thin if thin[t] != plain[t][::k]]
+say(not diff, "the rows kept are the full field's every k-th row, whole", "differ at %s" % diff[:3])
 t0 = next(iter(thin))
-same = thin[t0] == plain[t0][::k]
-say(same, "the rows kept are the full field's every k-th row", "")
-gaps = [b - a for a, b in zip(thin[t0], thin[t0][1:]) if b > a]
+s0 = [float(r[1]) for r in thin[t0]]
+gaps = [b - a for a, b in zip(s0, s0[1:]) if b > a]
 mean_gap = sum(gaps) / len(gaps)
 say(abs(mean_gap - 2.0) <= 0.5 * L / nodes + 1e-9, "mean spacing 2 m within half an element",
     "%.4f m" % mean_gap)
+# 0.05 s on 0.02 s rows: the first history row at or after each multiple
+# (within half a step, as history's own rows): 0, 0.06, 0.10, 0.16, ...
+odd = field(sys.argv[3])
+want_t = []
+for m in range(0, 41):
+    due = [t for t in hist if t >= m * 0.05 - 1e-3]
+    if due and (not want_t or due[0] != want_t[-1]):
+        want_t.append(due[0])
+got_t = [float(t) for t in odd]
+say(got_t == want_t, "0.05 s on 0.02 s rows: at the first row at or after each multiple (%d times)"
+    % len(want_t), "%s vs %s" % (got_t[:6], want_t[:6]))
+say(all(odd[t] == plain[t] for t in odd), "those snapshots equal the full field's", "")
 PY
 while read -r verdict rest; do
     case "$verdict" in
