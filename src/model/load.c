@@ -1264,8 +1264,8 @@ static void simulation_post(ctx *c, const fieldset *fs, yaml_node_t *const *foun
         s->time_step_mark = mark_of(ts);
     /* tension.csv rows are a subset of the history rows */
     if (ti && s->tension_interval > 0.0 && s->tension_interval < s->output_interval * (1.0 - 1e-9)) {
-        char sub[512];
-        snprintf(sub, sizeof sub, "%s.tension_interval", path);
+        char sub[PATH_LEN];
+        join(sub, path, "tension_interval");
         err(c, mark_of(ti), sub, "expected at least output_interval (%g s), got %g s",
             s->output_interval, s->tension_interval);
     }

@@ -107,7 +107,7 @@ static int span_corners(const bd_model_def *m, int i, const double p0[2], const 
         const bd_idler_set_def *st = sets[q];
         double ua = st->curve_from * len, ub = st->curve_to * len, c = ub - ua;
         double R = st->curve_radius;
-        if (c > 2.0 * R) {
+        if (c >= 2.0 * R) {
             bd_diag_error(diag, m->source, st->curve_mark,
                           "curve: a radius of %.4g m cannot bend the %.4g m between from and to "
                           "(it needs at least %.4g m)", R, c, 0.5 * c);
@@ -550,6 +550,14 @@ double bd_path_span_project(const bd_path *path, const bd_path_segment *g, doubl
         }
     }
     return u_best;
+}
+
+void bd_path_wrap_dirs(const bd_path *path, int pulley, const double **u_in,
+                       const double **u_out)
+{
+    int n = path->pulley_count;
+    *u_in = bd_path_span(path, (pulley + n - 1) % n)->dir1;
+    *u_out = bd_path_span(path, pulley)->dir;
 }
 
 const bd_path_segment *bd_path_span(const bd_path *path, int pulley)

@@ -85,6 +85,11 @@ static inline void bd_path_up_normal(const double t[2], double n[2])
     }
 }
 
+/* the belt's unit direction of travel where it arrives on pulley i's wrap
+ * (the end of the span before it, dir1: on a routed span not its start's)
+ * and where it leaves (the start of the span after it) */
+void bd_path_wrap_dirs(const bd_path *path, int pulley, const double **u_in,
+                       const double **u_out);
 /* the span leaving pulley i, and the arc of pulley i */
 const bd_path_segment *bd_path_span(const bd_path *path, int pulley);
 const bd_path_segment *bd_path_arc(const bd_path *path, int pulley);

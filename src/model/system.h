@@ -43,7 +43,6 @@ typedef struct bd_tracker {
  * All stats, written in the sensors phase. */
 typedef struct bd_drive_monitor {
     bd_tracker tight, slack;     /* belt points arriving at / leaving the wrap */
-    double tight_now, slack_now;     /* N, at the last update */
     double tight_max, tight_max_t;   /* N, s */
     double slack_min, slack_min_t;   /* N, s */
     double ramp_end;             /* s, when the start curve reaches full speed */

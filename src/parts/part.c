@@ -172,7 +172,6 @@ void bd_part_reset(bd_part *part)
     case BD_PART_TRANSMISSION: part->u.transmission.drive.integral = 0.0; break;
     case BD_PART_TAKEUP: break;
     }
-    bd_part_records_clear(part);
 }
 
 void bd_part_records_clear(bd_part *part)

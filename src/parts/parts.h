@@ -70,7 +70,8 @@ void bd_part_advance(bd_sim *sim, bd_part *part, double omega_old, double w_mid,
 double bd_part_potential(const bd_sim *sim, const bd_part *part);
 /* the transmissions' stored energy, J */
 double bd_parts_stored_energy(const bd_sim *sim);
-/* its state and run statistics back to zero (after stabilization) */
+/* its state back to zero (after stabilization; its statistics start again
+ * with bd_sim_records_restart) */
 void bd_part_reset(bd_part *part);
 /* its run statistics alone (a drive's driving peak, a takeup's limit
  * hits): the records start again (bd_sim_records_restart) */

@@ -125,8 +125,6 @@ void bd_monitor_update(bd_sim *sim, bd_pulley_body *p)
     belt->sample(sim, &m->slack, &out);
     double T_in = in.tension;
     double T_out = out.tension;
-    m->tight_now = T_in;
-    m->slack_now = T_out;
     if (T_in > m->tight_max) {
         m->tight_max = T_in;
         m->tight_max_t = t;

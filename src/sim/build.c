@@ -132,11 +132,7 @@ static int create(const bd_model_def *def, bd_sim *volatile *out, bd_diag *diag)
         bd_node_mass_changed(sim, i);
     /* a failure of its forces shows again, with its message, in the first step */
     (void)bd_sim_start_at_rest(sim);
-    bd_run_records_clear(sim);
-    for (int i = 0; i < sim->model->pulley_count; i++) {
-        sim->pulleys[i].travel_min = 0.0;
-        sim->pulleys[i].travel_max = 0.0;
-    }
+    bd_sim_records_restart(sim);
     return 0;
 }
 

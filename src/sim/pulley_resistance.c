@@ -41,8 +41,8 @@ void bd_pulley_resistance_update(bd_sim *sim)
         belt->point_update(sim, &p->res_out);
         belt->sample(sim, &p->res_in, &in);
         belt->sample(sim, &p->res_out, &out);
-        const double *u_in = bd_path_span(&sim->model->path, (i + n - 1) % n)->dir1;
-        const double *u_out = bd_path_span(&sim->model->path, i)->dir;
+        const double *u_in, *u_out;
+        bd_path_wrap_dirs(&sim->model->path, i, &u_in, &u_out);
         bd_pulley_resistance r;
         bd_secondary_pulley_eval(&p->m->resistance, in.tension, out.tension, u_in, u_out, &r);
         p->res_force = r.wrap + r.bearing + r.cleaners;

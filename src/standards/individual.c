@@ -77,8 +77,8 @@ int bd_individual_resistances(bd_std_ctx *c)
         for (int p = 0; p < c->n; p++) {
             if (!law[p].active)
                 continue;
-            const double *u_in = bd_path_span(&c->path, (p + c->n - 1) % c->n)->dir1;
-            const double *u_out = bd_path_span(&c->path, p)->dir;
+            const double *u_in, *u_out;
+            bd_path_wrap_dirs(&c->path, p, &u_in, &u_out);
             bd_pulley_resistance pr;
             bd_secondary_pulley_eval(&law[p], bd_std_T_arrive(c, p), bd_std_T_leave(c, p), u_in,
                                      u_out, &pr);

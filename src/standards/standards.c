@@ -135,8 +135,8 @@ void bd_std_propagate(bd_std_ctx *c)
     if (c->takeup >= 0) {
         int p = c->takeup;
         const bd_takeup_def *tu = &m->pulleys[p].takeup;
-        const double *uin = bd_path_span(&c->path, (p + c->n - 1) % c->n)->dir1;
-        const double *uout = bd_path_span(&c->path, p)->dir;
+        const double *uin, *uout;
+        bd_path_wrap_dirs(&c->path, p, &uin, &uout);
         double ci = uin[0] * tu->axis[0] + uin[1] * tu->axis[1];
         double co = uout[0] * tu->axis[0] + uout[1] * tu->axis[1];
         double rin = bd_std_T_arrive(c, p), rout = bd_std_T_leave(c, p);
@@ -558,8 +558,8 @@ int bd_static_compute(const bd_model_def *m, bd_static_result *out, bd_diag *dia
                 c.takeup_force = bd_table_eval(&tu->force, 0.0);
             else if (tu->type == BD_TAKEUP_GRAVITY)
                 c.takeup_force = tu->mass * c.g; /* counterweight's weight */
-            const double *uin = bd_path_span(&c.path, (c.takeup + c.n - 1) % c.n)->dir1;
-            const double *uout = bd_path_span(&c.path, c.takeup)->dir;
+            const double *uin, *uout;
+            bd_path_wrap_dirs(&c.path, c.takeup, &uin, &uout);
             double den = (uin[0] - uout[0]) * tu->axis[0] + (uin[1] - uout[1]) * tu->axis[1];
             if (fabs(den) <= 1e-9)
                 bd_std_warn(out, "takeup '%s': its axis is perpendicular to the belt's pull, "

@@ -190,10 +190,10 @@ static void setup_pulleys(bd_sim *sim, const int *pnode)
         ap->law.f_thr = pd->force_threshold;
         if (pd->has_takeup) {
             const double *a = p->m->axis;
-            const bd_path_segment *in = bd_path_span(&sim->model->path, (i + np - 1) % np);
-            const bd_path_segment *out = bd_path_span(&sim->model->path, i);
-            ap->c_in = in->dir1[0] * a[0] + in->dir1[1] * a[1];
-            ap->c_out = out->dir[0] * a[0] + out->dir[1] * a[1];
+            const double *u_in, *u_out;
+            bd_path_wrap_dirs(&sim->model->path, i, &u_in, &u_out);
+            ap->c_in = u_in[0] * a[0] + u_in[1] * a[1];
+            ap->c_out = u_out[0] * a[0] + u_out[1] * a[1];
             /* the wrapped belt hangs on the pulley: its weight along the
              * axis; and the belt pulls at the tangent points, where the
              * tension differs from its elements' (at their middles) by the

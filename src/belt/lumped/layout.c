@@ -167,16 +167,15 @@ static int takeup_level(const bd_model_def *def, const bd_path *path, const weig
 {
     const bd_pulley_def *pd = &def->pulleys[k];
     const bd_path_segment *arc = bd_path_arc(path, k);
-    int n = path->pulley_count;
-    const bd_path_segment *in = bd_path_span(path, (k + n - 1) % n);
-    const bd_path_segment *out = bd_path_span(path, k);
+    const double *u_in, *u_out;
+    bd_path_wrap_dirs(path, k, &u_in, &u_out);
     const double *a = pd->takeup.axis;
     double F = bd_table_eval(&pd->takeup.force, 0.0);
     bd_rest_load load = rest_load(def, path);
     double arc_mass = bd_rest_mass(path, &load, arc->s0, arc->s0 + arc->length);
     double gravity_pull = -(pd->mass + arc_mass) * def->gravity * a[1];
-    double u_in_a = in->dir1[0] * a[0] + in->dir1[1] * a[1];
-    double u_out_a = out->dir[0] * a[0] + out->dir[1] * a[1];
+    double u_in_a = u_in[0] * a[0] + u_in[1] * a[1];
+    double u_out_a = u_out[0] * a[0] + u_out[1] * a[1];
     double W_in = weight_at(g, arc->s0);
     double W_out = weight_at(g, arc->s0 + arc->length);
     double denom = u_out_a - u_in_a;

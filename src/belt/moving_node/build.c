@@ -122,10 +122,10 @@ static int setup_movers(bd_sim *sim, bd_diag *diag)
             continue;
         bd_mn_pulley *pp = &mm->pulleys[p];
         const double *a = pm->axis;
-        const bd_path_segment *in = bd_path_span(path, (p + np - 1) % np);
-        const bd_path_segment *out = bd_path_span(path, p);
-        double c_in = in->dir1[0] * a[0] + in->dir1[1] * a[1];
-        double c_out = out->dir[0] * a[0] + out->dir[1] * a[1];
+        const double *u_in, *u_out;
+        bd_path_wrap_dirs(path, p, &u_in, &u_out);
+        double c_in = u_in[0] * a[0] + u_in[1] * a[1];
+        double c_out = u_out[0] * a[0] + u_out[1] * a[1];
         /* in: back from the tangent-in node */
         int tin = pp->first, start = bd_mn_prev(tin, n);
         while (mm->kind[start] == BD_MN_FREE)
