@@ -26,7 +26,7 @@
 
 #define PATH_LEN 4096
 #define MAX_CASES 8
-#define NQ 3   /* panels (a figure has at most 3) */
+#define NQ 3   /* panels: tension peak, lowest tension, torque */
 
 typedef struct quantity {
     const char *column, *label;
@@ -43,10 +43,10 @@ static const quantity Q[NQ] = {
 static int plot_peaks(const char *plots, const char *model, const cJSON *cases, int n,
                       char *err, size_t errlen)
 {
-    static double xs[NQ][MAX_CASES][2], ys[NQ][MAX_CASES][2];
-    static double base_x[2], base_y[2];
-    static char title[400];
-    static char names[MAX_CASES][96];
+    double xs[NQ][MAX_CASES][2], ys[NQ][MAX_CASES][2];
+    double base_x[2], base_y[2];
+    char title[400];
+    char names[MAX_CASES][96];
     bd_plot_figure f;
     snprintf(title, sizeof title, "%s — load cases compared", model);
     bd_plot_figure_init(&f, title, 1100, 1100);
@@ -150,8 +150,9 @@ int bd_cases_report_write(const char *dir, char *err, size_t errlen)
     }
     int n = cJSON_GetArraySize(cases);
     const char *model = bd_json_str(json, "model");
-    int rc = 0;
-    /* each case's own report, where the case has a run */
+    int rc = 0, case_rc = 0;
+    /* each case's own report, where the case has a run; one failing keeps
+     * the comparison page, and its error is returned at the end */
     const cJSON *o;
     cJSON_ArrayForEach(o, cases) {
         const char *name = bd_json_str(o, "case");
@@ -161,12 +162,12 @@ int bd_cases_report_write(const char *dir, char *err, size_t errlen)
             || bd_path_join(summary, sizeof summary, sub, "summary.json")
             || access(summary, R_OK) != 0)
             continue;
-        if (bd_report_write(sub, cerr, sizeof cerr) != BD_REPORT_OK) {
+        if (bd_report_write(sub, cerr, sizeof cerr) != BD_REPORT_OK && !case_rc) {
             snprintf(err, errlen, "%s: %s", sub, cerr);
-            rc = BD_REPORT_EOUTPUT;
+            case_rc = BD_REPORT_EOUTPUT;
         }
     }
-    if (!rc && mkdir(plots, 0777) != 0 && errno != EEXIST) {
+    if (mkdir(plots, 0777) != 0 && errno != EEXIST) {
         snprintf(err, errlen, "%s: %s", plots, strerror(errno));
         rc = BD_REPORT_EOUTPUT;
     }
@@ -195,5 +196,5 @@ int bd_cases_report_write(const char *dir, char *err, size_t errlen)
         }
     }
     cJSON_Delete(json);
-    return rc;
+    return rc ? rc : case_rc;
 }

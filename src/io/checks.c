@@ -27,7 +27,15 @@
 
 const char *bd_check_rule_name(bd_check_rule rule)
 {
-    return rule == BD_CHECK_AT_LEAST ? "at least" : rule == BD_CHECK_BELOW ? "below" : "at most";
+    return rule == BD_CHECK_AT_LEAST ? "at least" : rule == BD_CHECK_BELOW ? "below"
+         : rule == BD_CHECK_ABOVE ? "above" : "at most";
+}
+
+/* four for the belt and the static design, one for lift-off, one for the
+ * energy balance; per pulley two for a drive and two for a takeup */
+int bd_run_checks_max(const bd_sim *sim)
+{
+    return 6 + 4 * sim->model->pulley_count;
 }
 
 static void add(bd_check *out, int *n, int max, const char *name, const char *unit, double value,
@@ -42,7 +50,8 @@ static void add(bd_check *out, int *n, int max, const char *name, const char *un
     c->limit = limit;
     c->rule = rule;
     c->pass = rule == BD_CHECK_AT_MOST ? value <= limit
-            : rule == BD_CHECK_AT_LEAST ? value >= limit : value < limit;
+            : rule == BD_CHECK_AT_LEAST ? value >= limit
+            : rule == BD_CHECK_BELOW ? value < limit : value > limit;
 }
 
 int bd_run_checks(const bd_sim *sim, const bd_static_result *st, bd_check *out, int max)
@@ -86,13 +95,14 @@ int bd_run_checks(const bd_sim *sim, const bd_static_result *st, bd_check *out, 
         if (pd->has_takeup && p->m->movable) {
             if (isfinite(pd->takeup.travel_max)) {
                 snprintf(name, sizeof name, "takeup travel out, %s", pd->name);
+                /* the carriage is held at the end it reaches: there it fails */
                 add(out, &n, max, name, "m", p->travel_max, pd->takeup.travel_max,
-                    BD_CHECK_AT_MOST);
+                    BD_CHECK_BELOW);
             }
             if (isfinite(pd->takeup.travel_min)) {
                 snprintf(name, sizeof name, "takeup travel in, %s", pd->name);
                 add(out, &n, max, name, "m", p->travel_min, pd->takeup.travel_min,
-                    BD_CHECK_AT_LEAST);
+                    BD_CHECK_ABOVE);
             }
         }
     }

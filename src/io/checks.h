@@ -7,14 +7,14 @@
 #include "beltdyn/standards.h"
 #include "sim/engine.h"
 
-#define BD_CHECK_MAX 24
-
 /* how value must stand to limit; pass follows from it alone */
 typedef enum bd_check_rule {
     BD_CHECK_AT_MOST = 0,   /* value <= limit */
     BD_CHECK_AT_LEAST,      /* value >= limit */
-    BD_CHECK_BELOW          /* value < limit: reaching it fails (a torque
-                               clipped at its limit, a slip that lasted) */
+    BD_CHECK_BELOW,         /* value < limit: reaching it fails (a torque
+                               clipped at its limit, a slip that lasted, a
+                               takeup held at the end of its travel) */
+    BD_CHECK_ABOVE          /* value > limit: reaching it fails */
 } bd_check_rule;
 
 typedef struct bd_check {
@@ -25,11 +25,13 @@ typedef struct bd_check {
     int pass;
 } bd_check;
 
-/* "at most", "at least", "below": summary.json's limit_is */
+/* "at most", "at least", "below", "above": summary.json's limit_is */
 const char *bd_check_rule_name(bd_check_rule rule);
 
 /* the checks that apply to this run (st: the static calculation, or NULL
  * when the model has no design or it failed); how many, at most max */
 int bd_run_checks(const bd_sim *sim, const bd_static_result *st, bd_check *out, int max);
+/* the most checks a run of this model can have (the size of out) */
+int bd_run_checks_max(const bd_sim *sim);
 
 #endif

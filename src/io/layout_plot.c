@@ -147,7 +147,7 @@ int bd_layout_figure(const cJSON *summary, bd_plot_figure *f, bd_layout_drawing 
             continue;
         d->px[kind][d->np[kind]] = px;
         d->py[kind][d->np[kind]++] = py;
-        snprintf(d->names[named], sizeof d->names[named], "%s", name ? name : "");
+        snprintf(d->names[named], sizeof d->names[named], "%s", name);
         bd_plot_add_text(a, px, py, d->names[named++]);
     }
     static const char *const kind_label[3] = {"pulley", "drive pulley", "takeup pulley"};
@@ -183,7 +183,7 @@ void bd_layout_mark_s_axis(const cJSON *summary, bd_plot_axes *a)
     const cJSON *loaded = cJSON_GetObjectItemCaseSensitive(lay, "loaded");
     double feed = bd_json_num(loaded, "feed_s_m"), len = bd_json_num(loaded, "length_m");
     double loop = bd_json_num(lay, "belt_length_m");
-    if (isfinite(feed) && isfinite(len) && isfinite(loop) && loop > 0.0) {
+    if (!a->map && isfinite(feed) && isfinite(len) && isfinite(loop) && loop > 0.0) {
         a->has_xspan = 1;
         a->xspan = (bd_plot_xspan){feed, fmod(feed + len, loop), "loaded region (feed to discharge)",
                                    {0.55, 0.35, 0.10}, 0.10};

@@ -28,8 +28,9 @@ typedef struct bd_layout_drawing {
 int bd_layout_figure(const cJSON *summary, bd_plot_figure *f, bd_layout_drawing *d);
 void bd_layout_drawing_free(bd_layout_drawing *d);
 
-/* pulleys (where the belt arrives on them) and the loaded region on an s
- * axis; nothing when summary has no layout */
+/* pulleys (where the belt arrives on them) on an s axis, and the loaded
+ * region shaded unless the panel is a colour map (whose colours are data);
+ * nothing when summary has no layout */
 void bd_layout_mark_s_axis(const cJSON *summary, bd_plot_axes *a);
 
 #endif

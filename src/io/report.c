@@ -659,7 +659,7 @@ static const cJSON *layout_pulley(const report *r, const char *name)
     const cJSON *lay = cJSON_GetObjectItemCaseSensitive(r->summary, "layout"), *p;
     cJSON_ArrayForEach(p, cJSON_GetObjectItemCaseSensitive(lay, "pulleys")) {
         const char *n = bd_json_str(p, "name");
-        if (n && strcmp(n, name) == 0) return p;
+        if (strcmp(n, name) == 0) return p;
     }
     return NULL;
 }
@@ -1326,10 +1326,11 @@ static void headline(report *r, bd_strbuf *b)
     bd_sb_puts(b, "</div>\n");
 }
 
-/* a check's limit_is as a sign: at most ≤, at least ≥, below < */
+/* a check's limit_is as a sign: at most ≤, at least ≥, below <, above > */
 static const char *rule_sign(const char *limit_is)
 {
-    return strcmp(limit_is, "at least") == 0 ? "≥" : strcmp(limit_is, "below") == 0 ? "<" : "≤";
+    return strcmp(limit_is, "at least") == 0 ? "≥" : strcmp(limit_is, "below") == 0 ? "<"
+         : strcmp(limit_is, "above") == 0 ? ">" : "≤";
 }
 
 static int write_html(report *r, char *err, size_t errlen)

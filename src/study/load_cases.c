@@ -135,9 +135,12 @@ int bd_load_cases_make(bd_study *s, double **cost, char *err, size_t errlen)
     bd_diag_init(&diag);
     bd_path path;
     memset(&path, 0, sizeof path);
-    if (bd_static_compute(m, &r, &diag) != 0 || bd_path_build(m, &path, &diag) != 0) {
+    int computed = bd_static_compute(m, &r, &diag) == 0;
+    if (!computed || bd_path_build(m, &path, &diag) != 0) {
         snprintf(err, errlen, "%s: the load cases need the static calculation, which failed: "
                  "%.600s", s->opt->model_path, diag.count ? diag.lines[0] : "");
+        if (computed)
+            bd_static_free(&r);
         bd_diag_free(&diag);
         bd_path_free(&path);
         return BD_RUN_BAD_INPUT;

@@ -30,7 +30,7 @@ check() { local what=$1; shift; if "$@"; then ok "$what"; else bad "$what" "it d
 fail() { bad "$1" "stopped here"; tally; exit 1; }
 out="$tmp/cases"
 
-"$BELTDYN" cases "$model" -o "$out" -j 2 >"$tmp/out" 2>"$tmp/err" || { cat "$tmp/err" >&2; fail "cases exited $?"; }
+"$BELTDYN" cases "$model" -o "$out" -j 2 >"$tmp/out" 2>"$tmp/err" || { rc=$?; cat "$tmp/err" >&2; fail "cases exited $rc"; }
 names="empty_start loaded_start loaded_coast_stop loaded_brake_stop partial_load_start"
 for c in $names; do
   for f in summary.json history.csv envelope.csv report.html; do
@@ -67,7 +67,7 @@ print("\n".join(bad))
 sys.exit(1 if bad else 0)
 PY
 
-"$BELTDYN" cases "$TEST_DATA/cases_valley.yaml" -o "$tmp/valley" -j 2 >"$tmp/out" 2>"$tmp/err" || { cat "$tmp/err" >&2; fail "cases on the valley exited $?"; }
+"$BELTDYN" cases "$TEST_DATA/cases_valley.yaml" -o "$tmp/valley" -j 2 >"$tmp/out" 2>"$tmp/err" || { rc=$?; cat "$tmp/err" >&2; fail "cases on the valley exited $rc"; }
 check "the valley's worst partial loading" python3 - "$tmp/valley" <<'PY'
 import json, re, sys
 t = {c["case"]: c for c in json.load(open(sys.argv[1] + "/cases.json"))["cases"]}

@@ -91,6 +91,18 @@ while read -r verdict rest; do
         *) bad "${rest%% | *}" "${rest#* | }" ;;
     esac
 done <"$tmp/verdicts"
+# a takeup held at the end of its travel fails its check, with a warning
+sed -e 's/^      mass: 2500$/      mass: 2500\n      travel: [-0.001, 0.001]/' "$tmp/m.yaml" >"$tmp/limit.yaml"
+grep -q "travel: \[-0.001" "$tmp/limit.yaml" || bad "limit model" "sed found no takeup mass"
+"$BELTDYN" run "$tmp/limit.yaml" -o "$tmp/limit" --quiet >/dev/null 2>&1
+python3 - "$tmp/limit/summary.json" <<'PY' >"$tmp/limit.txt" 2>&1 && ok "takeup at its travel limit fails 'takeup travel out' and warns" || bad "takeup at its limit" "$(cat "$tmp/limit.txt")"
+import json, sys
+s = json.load(open(sys.argv[1]))
+c = [c for c in s["checks"] if c["check"] == "takeup travel out, takeup"]
+assert len(c) == 1 and c[0]["value"] == c[0]["limit"] == 0.001 and not c[0]["pass"], s["checks"]
+assert c[0]["limit_is"] == "below", c
+assert any("reached the end of its travel" in w for w in s["warnings"]), s["warnings"]
+PY
 for p in layout drives takeups envelope; do
     [ -s "$tmp/run/plots/$p.png" ] && ok "plots/$p.png" || bad "plots/$p.png" "missing"
 done

@@ -76,7 +76,7 @@ for name in ("belt strength, starts and stops", "belt strength, steady running")
 assert a["checks_failed"] == sum(not c["pass"] for c in a["checks"]), a
 # every verdict follows from its row: value, limit and the rule
 rule = {"at most": lambda v, l: v <= l, "at least": lambda v, l: v >= l,
-        "below": lambda v, l: v < l}
+        "below": lambda v, l: v < l, "above": lambda v, l: v > l}
 for d in (a, b):
     for c in d["checks"]:
         assert c["pass"] == rule[c["limit_is"]](c["value"], c["limit"]), c
