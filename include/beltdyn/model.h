@@ -358,6 +358,12 @@ bd_idler_set_def bd_idler_set_default(void);
 bd_material_def bd_material_default(void);
 bd_design_def bd_design_default(void);
 bd_simulation_def bd_simulation_default(void);
+/* the tension field's snapshot interval: tension_interval, else
+ * output_interval, s */
+double bd_tension_interval(const bd_simulation_def *s);
+/* tension.csv writes every k-th element: k = tension_spacing over the mean
+ * element length (loop / elements), rounded, from 1 to elements */
+int bd_tension_stride(const bd_simulation_def *s, double loop, double elements);
 void bd_model_def_init(bd_model_def *m);
 
 /* read and validate a model file. Returns 0 on success; otherwise a nonzero

@@ -130,10 +130,7 @@ int bd_outputs_open(bd_outputs *o, const bd_sim *sim, const char *dir, int hdf5,
     bd_outputs_records_restart(o, 0.0);
     /* tension.csv's spacing: every k-th element, k the spacing over the
      * mean element length (at least 1) */
-    double spacing = sim->model->def->simulation.tension_spacing;
-    double mean_element = sim->model->path.length / sim->model->n;
-    o->field_stride = spacing > mean_element ? (int)fmin(floor(spacing / mean_element + 0.5),
-                                                         (double)sim->model->n) : 1;
+    o->field_stride = bd_tension_stride(&def->simulation, sim->model->path.length, sim->model->n);
     o->next_tension = 0.0;
     /* history header */
     fprintf(o->history, "t_s");

@@ -223,6 +223,19 @@ bd_simulation_def bd_simulation_default(void)
     return s;
 }
 
+double bd_tension_interval(const bd_simulation_def *s)
+{
+    return s->tension_interval > 0.0 ? s->tension_interval : s->output_interval;
+}
+
+int bd_tension_stride(const bd_simulation_def *s, double loop, double elements)
+{
+    double mean = loop / elements;
+    if (!(s->tension_spacing > mean))
+        return 1;
+    return (int)fmin(floor(s->tension_spacing / mean + 0.5), elements);
+}
+
 void bd_model_def_init(bd_model_def *m)
 {
     memset(m, 0, sizeof *m);

@@ -184,9 +184,8 @@ int bd_cost_estimate(bd_sim *sim, bd_diag *diag)
     /* tension.csv: one row of about 50 bytes per written element and time
      * (io/outputs.c); big files are worth a word before the run */
     const bd_simulation_def *sd = &def->simulation;
-    double every = sd->tension_interval > 0.0 ? sd->tension_interval : sd->output_interval;
-    double stride = sd->tension_spacing > loop / c->nodes
-                        ? floor(sd->tension_spacing / (loop / c->nodes) + 0.5) : 1.0;
+    double every = bd_tension_interval(sd);
+    double stride = bd_tension_stride(sd, loop, c->nodes);
     double field = (floor(sd->duration / every) + 2.0) * ceil(c->nodes / stride) * 50.0;
     if (field > TENSION_CSV_WARN_BYTES) {
         char size[32];
