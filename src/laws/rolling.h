@@ -20,7 +20,9 @@ static inline double bd_coulomb_share(double v, double fade)
 /* the fade speed of a Coulomb force F on a body the explicit step moves
  * (mass, or inertia with lever² = R²): at least BD_ROLLING_SPEED, and no
  * steeper than a quarter of what the step bears, c·Δt/m ≤ 1/4 with
- * c = F·lever²/fade (central differences are stable for c·Δt/m < 2) */
+ * c = F·lever²/fade (central differences on a damper c alone are stable
+ * for c·Δt/m < 2: the limit Δt ≤ (2/ω)(√(1 + ζ²) − ζ), seed 001 eq 6.1 damped,
+ * docs/physics.md §3, for ζ → ∞ with 2ζω = c/m) */
 static inline double bd_coulomb_fade(double F, double lever2, double dt, double mass)
 {
     double f = 4.0 * F * lever2 * dt / mass;

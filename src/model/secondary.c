@@ -42,8 +42,10 @@ void bd_secondary_pulley_law(const bd_model_def *m, int p, bd_pulley_resistance_
     const bd_design_def *d = &m->design;
     const bd_pulley_def *pd = &m->pulleys[p];
     double D = 2.0 * pd->radius;
-    /* the wrap: on the pulleys that do not drive, as ISO 5048 counts it
-     * (a drive pulley's losses are in the drive's efficiency) */
+    /* the wrap (ISO 5048 Table 3, F_l): on the pulleys that do not drive;
+     * a drive pulley's own losses are not in the effective tension at its
+     * circumference but in the drive's efficiency (our reading, stated in
+     * docs/standards.md's table) */
     if (!pd->has_drive) {
         double thick = d->belt_thickness > 0.0 ? d->belt_thickness : m->belt.thickness;
         bd_res_wrap_coeffs(d->carcass == BD_CARCASS_STEEL_CORD, m->belt.width, thick, D,
