@@ -33,9 +33,21 @@ static double turn_angle(const double din[2], const double dout[2], int w)
     return a;
 }
 
+/* the common tangent's direction d and length between two circles whose
+ * centres are (dx, dy) apart, k the difference of their signed radii
+ * (w_b·r_b − w_a·r_a): θ = atan2(dy, dx) − asin(k/L), length √(L² − k²).
+ * The caller has checked L > |k|. */
+static void tangent_line(double dx, double dy, double L, double k, double d[2], double *len)
+{
+    double theta = atan2(dy, dx) - asin(k / L);
+    d[0] = cos(theta);
+    d[1] = sin(theta);
+    *len = sqrt(L * L - k * k);
+}
+
 /* a circle (centre c, radius r, sense w) and a point v: the direction of
  * the belt line leaving the circle towards v (to_point) or arriving at it
- * from v, and where it touches the circle (the common-tangent rule above
+ * from v, and where it touches the circle (tangent_line
  * with a zero radius at v). 0 = ok, 1 = v lies inside the circle */
 static int point_tangent(const double c[2], double r, int w, const double v[2], int to_point,
                          double d[2], double touch[2], double *len)
@@ -48,12 +60,9 @@ static int point_tangent(const double c[2], double r, int w, const double v[2], 
     double L = hypot(dx, dy), k = to_point ? -w * r : w * r;
     if (L <= fabs(k) * (1.0 + 1e-12))
         return 1;
-    double theta = atan2(dy, dx) - asin(k / L);
-    d[0] = cos(theta);
-    d[1] = sin(theta);
+    tangent_line(dx, dy, L, k, d, len);
     touch[0] = c[0] + w * r * d[1];
     touch[1] = c[1] - w * r * d[0];
-    *len = sqrt(L * L - k * k);
     return 0;
 }
 
@@ -337,11 +346,9 @@ int bd_path_build(const bd_model_def *m, bd_path *path, bd_diag *diag)
             bad = 1;
             continue;
         }
-        double phi = atan2(dy, dx);
-        double theta = phi - asin(k / L);
-        dir[i][0] = dir1[i][0] = cos(theta);
-        dir[i][1] = dir1[i][1] = sin(theta);
-        span_len[i] = sqrt(L * L - k * k);
+        tangent_line(dx, dy, L, k, dir[i], &span_len[i]);
+        dir1[i][0] = dir[i][0];
+        dir1[i][1] = dir[i][1];
         double na[2] = {dir[i][1], -dir[i][0]};
         ps[i][0] = a->x + a->wrap * a->radius * na[0];
         ps[i][1] = a->y + a->wrap * a->radius * na[1];
