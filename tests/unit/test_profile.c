@@ -97,6 +97,22 @@ static int lifts(double T, double R, double *first_s)
     return lifted;
 }
 
+/* a profile with a tail takeup: its points line (or none) and what
+ * follows the profile, written into buf */
+static const char *tail_profile(char *buf, size_t len, const char *points, const char *after)
+{
+    snprintf(buf, len,
+             "belt: {mass_per_length: 20, axial_stiffness: 3.0e7}\n"
+             "profile:\n"
+             "%s"
+             "  tail: {radius: 0.4}\n"
+             "  head: {radius: 0.5, drive: {control: speed, speed: 3}}\n"
+             "  takeup: {at: tail, type: gravity, mass: 2000}\n"
+             "  carry_idlers: {spacing: 1.5}\n"
+             "%s", points, after);
+    return buf;
+}
+
 /* the return strand's height below the carry strand at chainage x */
 static double drop_at(const bd_sim *sim, double x)
 {
@@ -127,15 +143,9 @@ static void return_and_tail_takeup(void)
     CHECK_ABS(drop, 1.0 - 1000.0 * (1.0 / cos(0.5 * dr) - 1.0 / cos(0.5 * dc)), 0.002);
     bd_sim_free(sim);
     bd_model_def_free(&def);
-    const char *tail =
-        "belt: {mass_per_length: 20, axial_stiffness: 3.0e7}\n"
-        "profile:\n"
-        "  points: [[0, 0], [300, 20]]\n"
-        "  tail: {radius: 0.4}\n"
-        "  head: {radius: 0.5, drive: {control: speed, speed: 3}}\n"
-        "  takeup: {at: tail, type: gravity, mass: 2000}\n"
-        "  carry_idlers: {spacing: 1.5}\n";
-    bd_test_make_sim(tail, &def, &sim);
+    char tail[600];
+    bd_test_make_sim(tail_profile(tail, sizeof tail, "  points: [[0, 0], [300, 20]]\n", ""), &def,
+                     &sim);
     CHECK(def.pulley_count == 2 && def.pulleys[0].has_takeup && !def.pulleys[1].has_takeup);
     CHECK(def.pulleys[0].takeup.axis[0] == -1.0 && def.pulleys[0].takeup.axis[1] == 0.0);
     CHECK(def.idler_sets[1].span == 1);
@@ -208,24 +218,13 @@ static void first_error(const char *text, char *out, size_t size)
  * corner between them */
 static void bad_routes(void)
 {
-    char e[512];
-    first_error("belt: {mass_per_length: 20, axial_stiffness: 3.0e7}\n"
-                "profile:\n"
-                "  tail: {radius: 0.4}\n"
-                "  head: {radius: 0.5, drive: {control: speed, speed: 3}}\n"
-                "  takeup: {at: tail, type: gravity, mass: 2000}\n"
-                "  carry_idlers: {spacing: 1.5}\n", e, sizeof e);
+    char e[512], t[600];
+    first_error(tail_profile(t, sizeof t, "", ""), e, sizeof e);
     printf("%s\n", e);
     CHECK(strstr(e, "t.yaml:2:") && strstr(e, "missing required key 'points'"));
-    first_error("belt: {mass_per_length: 20, axial_stiffness: 3.0e7}\n"
-                "profile:\n"
-                "  points: [[0, 0], [100, 0]]\n"
-                "  tail: {radius: 0.4}\n"
-                "  head: {radius: 0.5, drive: {control: speed, speed: 3}}\n"
-                "  takeup: {at: tail, type: gravity, mass: 2000}\n"
-                "  carry_idlers: {spacing: 1.5}\n"
-                "idlers:\n"
-                "  - {span: tail, spacing: 1.5}\n", e, sizeof e);
+    first_error(tail_profile(t, sizeof t, "  points: [[0, 0], [100, 0]]\n",
+                             "idlers:\n  - {span: tail, spacing: 1.5}\n"),
+                e, sizeof e);
     printf("%s\n", e);
     CHECK(strstr(e, "t.yaml:8:") && strstr(e, "idlers: give either idlers or a profile's"));
     const char *fmt =
