@@ -46,6 +46,16 @@ static const size_t WRAP_DOUBLES[] = {offsetof(bd_wrap_contact, c_fn0),
                                       offsetof(bd_wrap_contact, c_f)};
 #define COUNT(a) ((int)(sizeof a / sizeof a[0]))
 
+/* the most elements wrap_elements.c can list in a step: each sector's
+ * run and the element that enters it */
+static int wrapped_max(const bd_sim *sim)
+{
+    int total = 0;
+    for (int i = 0; i < sim->model->pulley_count; i++)
+        total += bd_lumped_model_of(sim)->sectors[i].node_max + 1;
+    return total;
+}
+
 static void setup_pulleys(bd_sim *sim, const bd_layout *lay)
 {
     const bd_model_def *def = sim->model->def;
@@ -72,6 +82,8 @@ static void setup_pulleys(bd_sim *sim, const bd_layout *lay)
         W->c_node = bd_xcalloc((size_t)S->node_max, sizeof *W->c_node);
         W->c_state = bd_xcalloc((size_t)S->node_max, sizeof *W->c_state);
     }
+    L->wrapped = bd_xcalloc((size_t)wrapped_max(sim), sizeof *L->wrapped);
+    L->wrap_mark = bd_xcalloc((size_t)sim->model->n, sizeof *L->wrap_mark);
 }
 
 static void setup_idlers(bd_sim *sim)
@@ -126,81 +138,32 @@ static void setup_idlers(bd_sim *sim)
     }
 }
 
-/* A chain of straight elements cannot follow a wrap up to its tangent point
- * unless a node falls exactly there: the element that straddles the tangent
- * cuts the corner and kinks the first free node of the span, which then has
- * nothing to hold it. The chain's own equilibrium shape wraps the pulley
- * with nodes on the shell and leaves it from a node just past the tangent
- * point: put each span's end nodes (the ones next to a wrap) onto the shell
- * and lay the nodes between on the straight line joining them, at the same
- * fractions along the span. */
-/* put node k onto pulley pb's shell at chord distance |x_k − x_ref| from
- * the wrap node ref, turning in the sense `sense` (±1) from ref: the
- * element between them keeps its length */
-static void onto_shell(bd_sim *sim, const bd_pulley_body *pb, int ref, int k, double sense)
+/* the pull of element e on node i (its start or its end), its length
+ * taken round pulley pb when the element wraps it (wrap_elements.c) */
+static void element_pull(const bd_sim *sim, const bd_pulley_body *pb, int e, int i, double T,
+                         double f[2])
 {
-    double c = hypot(sim->x[k] - sim->x[ref], sim->y[k] - sim->y[ref]);
-    if (c >= 2.0 * pb->m->radius)
+    const int n = sim->model->n, j = e + 1 == n ? 0 : e + 1;
+    double len, gi[2], gj[2];
+    if (bd_lumped_geodesic(pb->cx, pb->cy, pb->m->radius, pb->m->wrap, sim->x[e], sim->y[e],
+                           sim->x[j], sim->y[j], &len, gi, gj)) {
+        const double *g = i == e ? gi : gj;
+        f[0] = -T * g[0];
+        f[1] = -T * g[1];
         return;
-    double a = atan2(sim->y[ref] - pb->cy, sim->x[ref] - pb->cx)
-             + sense * 2.0 * asin(c / (2.0 * pb->m->radius));
-    sim->x[k] = pb->cx + pb->m->radius * cos(a);
-    sim->y[k] = pb->cy + pb->m->radius * sin(a);
-}
-
-static void straighten_spans(bd_sim *sim)
-{
-    const int n = sim->model->n;
-    for (int i = 0; i < n; i++) {
-        int prev = i == 0 ? n - 1 : i - 1;
-        const bd_path_segment *g = &sim->model->path.segments[bd_lumped_of(sim)->seg_hint[i]];
-        const bd_path_segment *gp = &sim->model->path.segments[bd_lumped_of(sim)->seg_hint[prev]];
-        /* a routed span's nodes stay on its route */
-        if (g->kind != BD_SEGMENT_SPAN || gp->kind != BD_SEGMENT_ARC || g->piece_count > 0)
-            continue;
-        /* i is the first node of a span after a wrap; find its last node */
-        int last = i, count = 1;
-        while (count < n &&
-               bd_lumped_of(sim)->seg_hint[(last + 1) % n] == bd_lumped_of(sim)->seg_hint[i]) {
-            last = (last + 1) % n;
-            count++;
-        }
-        const bd_path_segment *gn =
-            &sim->model->path.segments[bd_lumped_of(sim)->seg_hint[(last + 1) % n]];
-        if (gn->kind != BD_SEGMENT_ARC || count < 1)
-            continue;
-        /* the departure node: the span's first node if it is within half an
-         * element of the tangent point (then on the shell), else the last
-         * node of the wrap; likewise the arrival node */
-        int a = prev, b = (last + 1) % n;
-        if (sim->model->s_node0[i] - g->s0 < 0.5 * sim->model->l0) {
-            onto_shell(sim, &sim->pulleys[gp->pulley], prev, i, sim->pulleys[gp->pulley].m->wrap);
-            a = i;
-        }
-        if (g->s0 + g->length - sim->model->s_node0[last] < 0.5 * sim->model->l0 && last != a) {
-            onto_shell(sim, &sim->pulleys[gn->pulley], (last + 1) % n, last,
-                       -sim->pulleys[gn->pulley].m->wrap);
-            b = last;
-        }
-        double ax = sim->x[a], ay = sim->y[a], bx = sim->x[b], by = sim->y[b];
-        double sa = sim->model->s_node0[a], sb = sim->model->s_node0[b];
-        if (sb < sa)
-            sb += sim->model->path.length;
-        for (int j = (a + 1) % n; j != b; j = (j + 1) % n) {
-            double sj = sim->model->s_node0[j] < sa
-                            ? sim->model->s_node0[j] + sim->model->path.length
-                            : sim->model->s_node0[j];
-            double f = (sj - sa) / (sb - sa);
-            sim->x[j] = ax + f * (bx - ax);
-            sim->y[j] = ay + f * (by - ay);
-        }
     }
+    double ux = sim->x[j] - sim->x[e], uy = sim->y[j] - sim->y[e], l = hypot(ux, uy);
+    double sign = i == e ? 1.0 : -1.0;
+    f[0] = sign * T * ux / l;
+    f[1] = sign * T * uy / l;
 }
 
-/* place nodes on the laid path. A node on or at the edge of a wrap is held
- * by its pulley against the pull of its two elements, |T_b·u_b − T_a·u_a|
- * (the kink force); push it into the pulley by the penetration that makes
- * the contact carry exactly that, so the initial state is in equilibrium */
+/* place nodes on the laid path: the layout spaced them by the belt's
+ * length along it, round the wraps too, which is the length the elements
+ * have there (wrap_elements.c). A node on a wrap is held by its pulley
+ * against its share of the arc's pressure; push it into the shell by the
+ * penetration that makes the contact carry exactly that, so the initial
+ * state is in equilibrium */
 static void place_nodes(bd_sim *sim, const bd_layout *lay)
 {
     const int n = sim->model->n;
@@ -213,27 +176,38 @@ static void place_nodes(bd_sim *sim, const bd_layout *lay)
         bd_lumped_of(sim)->seg_hint[i] = bd_path_segment_at(&sim->model->path, lay->s[i]);
         sim->mass[i] = sim->model->belt_mpl * sim->model->l0;
     }
-    straighten_spans(sim);
+    double *depth = bd_xcalloc((size_t)n, sizeof *depth);
+    int *on = bd_xcalloc((size_t)n, sizeof *on);
     for (int i = 0; i < n; i++) {
-        int b = i == 0 ? n - 1 : i - 1, a = i + 1 == n ? 0 : i + 1;
-        double ubx = sim->x[i] - sim->x[b], uby = sim->y[i] - sim->y[b];
-        double uax = sim->x[a] - sim->x[i], uay = sim->y[a] - sim->y[i];
-        double lb = hypot(ubx, uby), la = hypot(uax, uay);
-        double kx = lay->tension[i] * uax / la - lay->tension[b] * ubx / lb;
-        double ky = lay->tension[i] * uay / la - lay->tension[b] * uby / lb;
+        int b = i == 0 ? n - 1 : i - 1;
+        on[i] = -1;
         for (int k = 0; k < sim->model->pulley_count; k++) {
             const bd_pulley_body *pb = &sim->pulleys[k];
             double rx = sim->x[i] - pb->cx, ry = sim->y[i] - pb->cy;
             double r = hypot(rx, ry);
             if (r > pb->m->radius * (1.0 + 1e-9))
                 continue;
-            double inward = -(kx * rx + ky * ry) / r;   /* pull towards the centre */
-            double depth = inward > 0.0 ? inward / bd_lumped_model_of(sim)->k_contact : 0.0;
-            double target = pb->m->radius - depth;
-            sim->x[i] = pb->cx + rx * target / r;
-            sim->y[i] = pb->cy + ry * target / r;
+            double fb[2], fa[2];
+            element_pull(sim, pb, b, i, lay->tension[b], fb);
+            element_pull(sim, pb, i, i, lay->tension[i], fa);
+            double inward = -((fb[0] + fa[0]) * rx + (fb[1] + fa[1]) * ry) / r;
+            depth[i] = inward > 0.0 ? inward / bd_lumped_model_of(sim)->k_contact : 0.0;
+            on[i] = k;
         }
     }
+    /* moved after all pulls are taken: a node's depth changes its
+     * neighbours' geodesics */
+    for (int i = 0; i < n; i++) {
+        if (on[i] < 0)
+            continue;
+        const bd_pulley_body *pb = &sim->pulleys[on[i]];
+        double rx = sim->x[i] - pb->cx, ry = sim->y[i] - pb->cy, r = hypot(rx, ry);
+        double target = pb->m->radius - depth[i];
+        sim->x[i] = pb->cx + rx * target / r;
+        sim->y[i] = pb->cy + ry * target / r;
+    }
+    free(depth);
+    free(on);
 }
 
 /* initial material: nodes from the feed point to the discharge pulley */
@@ -344,6 +318,8 @@ void bd_lumped_free(bd_sim *sim)
         free(W->c_state);
     }
     free(L->wraps);
+    free(L->wrapped);
+    free(L->wrap_mark);
     free(L);
     sim->belt_data = NULL;
 }
@@ -383,6 +359,8 @@ void bd_lumped_clone(bd_sim *dst, const bd_sim *src)
         W->c_node = bd_xdup(from->c_node, w, sizeof *W->c_node);
         W->c_state = bd_xdup(from->c_state, w, sizeof *W->c_state);
     }
+    L->wrapped = bd_xdup(S->wrapped, (size_t)wrapped_max(src), sizeof *L->wrapped);
+    L->wrap_mark = bd_xdup(S->wrap_mark, n, sizeof *L->wrap_mark);
 }
 
 /* Stable time step (laws/stable_step.h). The highest frequency of the belt is that of a node between two elements

@@ -133,7 +133,10 @@ static void feed_skirts(bd_sim *sim)
 void bd_lumped_forces(bd_sim *sim)
 {
     element_pass(sim);
+    /* elements that run round a pulley: the belt's length, not the chord */
+    bd_lumped_wrap_elements(sim);
     node_pass(sim);
+    bd_lumped_wrap_forces(sim);
     bd_tension_extremes(sim);
     if (bd_lumped_model_of(sim)->k_bend > 0.0)
         bending_forces(sim);
@@ -200,7 +203,7 @@ double bd_lumped_elastic_energy(const bd_sim *sim)
             e += 0.5 * L->k_bend * th * th;
         }
     }
-    return e;
+    return e + bd_lumped_wrap_elastic_correction(sim);
 }
 
 /* gravity of belt and material (y = 0 the datum) and the elastic energy */

@@ -8,12 +8,14 @@
  * carriage axis) or, without one, from the installed tension: the belt's
  * unstretched length is L/(1 + T0/EA).
  *
- * Nodes are laid so that every element's chord is its stretched length
- * l0·(1 + T/EA). Chords on a wrap are shorter than the arc, so the loop
- * closes only for the right level: without takeup we solve for T_c (the
- * unstretched length is fixed), with a takeup we move the takeup pulley
- * along its axis (the tension is fixed by its force). This removes the
- * tension steps between sections that seed 001 §6.1 reports. */
+ * Nodes are laid so that every element's length along the path is its
+ * stretched length l0·(1 + T/EA): on a wrap too, where an element's length
+ * is the belt's round the shell, not its chord (wrap_elements.c). The loop
+ * closes for the right level: without takeup we solve for the unstretched
+ * element length (the installed tension is kept), with a takeup we move
+ * the takeup pulley along its axis (the tension is fixed by its force).
+ * This removes the tension steps between sections that seed 001 §6.1
+ * reports. */
 #include "belt/lumped/layout.h"
 
 #include "base/alloc.h"
@@ -75,33 +77,9 @@ static double weight_at(const weight_grid *g, double s)
     return (1.0 - f) * g->W[i] + f * g->W[i + 1];
 }
 
-/* smallest ds > 0 with |P(s + ds) - P(s)| = chord */
-static double advance_by_chord(const bd_path *path, double s, double chord)
-{
-    double p0[2], t0[2], p[2], t[2];
-    bd_path_point(path, s, p0, t0);
-    double ds = chord;
-    for (int it = 0; it < 30; it++) {
-        bd_path_point(path, s + ds, p, t);
-        double dx = p[0] - p0[0], dy = p[1] - p0[1];
-        double d = hypot(dx, dy);
-        if (d <= 0.0)
-            break;
-        /* d(d)/d(ds) = t·(p - p0)/d */
-        double slope = (t[0] * dx + t[1] * dy) / d;
-        if (slope < 0.2)
-            slope = 0.2;
-        double step = (chord - d) / slope;
-        ds += step;
-        if (fabs(step) < 1e-13 * (1.0 + chord))
-            break;
-    }
-    return ds;
-}
-
 /* lay n elements of unstretched length l0 under T(s) = Tc + W(s); returns
- * the path length consumed (the loop closes when it equals path->length) */
-static double march(const bd_path *path, const weight_grid *g, double EA, double l0,
+ * the path length consumed (the loop closes when it equals the path's length) */
+static double march(const weight_grid *g, double EA, double l0,
                     double Tc, int n, double *s_nodes)
 {
     double s = 0.0;
@@ -111,11 +89,9 @@ static double march(const bd_path *path, const weight_grid *g, double EA, double
         /* stretch by the tension at the element's middle: one fixed-point
          * pass is enough since T varies slowly over one element */
         double T = Tc + weight_at(g, s + 0.5 * l0);
-        double chord = l0 * (1.0 + T / EA);
-        double ds = advance_by_chord(path, s, chord);
+        double ds = l0 * (1.0 + T / EA);
         T = Tc + weight_at(g, s + 0.5 * ds);
-        chord = l0 * (1.0 + T / EA);
-        s += advance_by_chord(path, s, chord);
+        s += l0 * (1.0 + T / EA);
     }
     return s;
 }
@@ -153,7 +129,7 @@ typedef struct length_ctx {
 static double length_misfit(double l0, void *vctx)
 {
     length_ctx *c = vctx;
-    return march(c->path, c->g, c->EA, l0, c->Tc, c->n, NULL) - c->path->length;
+    return march(c->g, c->EA, l0, c->Tc, c->n, NULL) - c->path->length;
 }
 
 /* the takeup's level: force balance of the takeup pulley along its axis,
@@ -210,7 +186,7 @@ static double shift_misfit(double q, void *vctx)
     bd_diag_free(&quiet);
     if (bad)
         return 1e30;
-    return march(&c->path, c->g, c->EA, c->l0, c->Tc, c->n, NULL) - c->path.length;
+    return march(c->g, c->EA, c->l0, c->Tc, c->n, NULL) - c->path.length;
 }
 
 /* the least stretch 1 + T/EA a belt is laid with: below it the at-rest
@@ -316,9 +292,8 @@ int bd_layout_belt(const bd_model_def *def, const bd_layout_request *req, bd_lay
         out->path = c.path;
     } else {
         /* no takeup: the installed tension T0 (or none, at rest) is kept and
-         * the unstretched element length found so the chords close the loop;
-         * the chords of the wraps make it a little shorter than L/(1+T0/EA),
-         * which would otherwise lower the tension by EA·(arc − chord)/L */
+         * the unstretched element length found so the elements close the
+         * loop (the weight's stretch makes it differ from L/(1+T0)/n) */
         length_ctx c = {path, &g, EA, Tc, n};
         double l_fit;
         if (secant(length_misfit, &c, l0, l0 * 0.999, 1e-10 * L, &l_fit)) {
@@ -340,7 +315,7 @@ int bd_layout_belt(const bd_model_def *def, const bd_layout_request *req, bd_lay
     out->l0 = l0;
     out->s = bd_xcalloc((size_t)n, sizeof *out->s);
     out->tension = bd_xcalloc((size_t)n, sizeof *out->tension);
-    march(&out->path, &g, EA, l0, Tc, n, out->s);
+    march(&g, EA, l0, Tc, n, out->s);
     for (int i = 0; i < n; i++) {
         double s_mid = 0.5 * (out->s[i] + (i + 1 < n ? out->s[i + 1] : out->path.length));
         out->tension[i] = rest ? 0.0 : Tc + weight_at(&g, s_mid);

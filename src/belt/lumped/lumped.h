@@ -42,7 +42,21 @@ typedef struct bd_wrap_contact {
     double *c_f;            /* N, friction (+ = retards the belt) */
     int *c_state;           /* sticking, slipping forward or back, off */
     int contact_count;
+    /* step (forces phase): the sector's run of nodes, first and count */
+    int run_first, run_count;
+    /* step (forces phase): what the wrapped elements' arcs press on the
+     * shell directly (wrap_elements.c), N, and its dashpot part */
+    double react[2], react_d[2];
 } bd_wrap_contact;
+
+/* an element that runs round a pulley this step (wrap_elements.c): its
+ * length's gradients at its start node i and end node j, its tension and
+ * the tension's dashpot part */
+typedef struct bd_wrapped_element {
+    int e;
+    double gi[2], gj[2];
+    double T, td;
+} bd_wrapped_element;
 
 /* the lumped belt's state (behind sim->belt_data) */
 typedef struct bd_lumped {
@@ -56,6 +70,11 @@ typedef struct bd_lumped {
     double *pw, *ek;       /* [n] */
     /* a cache for the Eulerian s of elements, not state */
     int *seg_hint;         /* [n] segment guess */
+    /* step (forces phase): the elements wrapped on a pulley, at most the
+     * sectors' node counts together; wrap_mark[e] is set while e is listed */
+    bd_wrapped_element *wrapped;
+    int wrapped_count;
+    unsigned char *wrap_mark;   /* [n] */
 } bd_lumped;
 
 static inline bd_lumped *bd_lumped_of(const bd_sim *sim)
@@ -83,9 +102,19 @@ void bd_lumped_integrate(bd_sim *sim, double *ke, double *w_nc);
 double bd_lumped_elastic_energy(const bd_sim *sim);
 double bd_lumped_potential(const bd_sim *sim);
 
+/* wrap_elements.c: the length of an element that runs round a pulley */
+int bd_lumped_geodesic(double cx, double cy, double R, double wrap, double xi, double yi,
+                       double xj, double yj, double *l, double gi[2], double gj[2]);
+void bd_lumped_wrap_elements(bd_sim *sim);
+void bd_lumped_wrap_forces(bd_sim *sim);
+double bd_lumped_wrap_elastic_correction(const bd_sim *sim);
+
 /* pulley_contact.c / idler_contact.c */
 void bd_lumped_sector_init(bd_sim *sim, int pulley, bd_wrap_sector *S);
 void bd_lumped_sector_anchor(bd_sim *sim, int pulley, bd_wrap_contact *W);
+int bd_lumped_find_sector(const bd_sim *sim, const bd_pulley_body *p, const bd_wrap_contact *W,
+                          int *first, int *count);
+int bd_lumped_in_sector(const bd_sim *sim, const bd_pulley_body *p, int k);
 void bd_lumped_wrap(bd_sim *sim, bd_pulley_body *p, double external_torque);
 double bd_lumped_wrap_energy(const bd_sim *sim, const bd_pulley_body *p);
 void bd_lumped_idlers(bd_sim *sim);

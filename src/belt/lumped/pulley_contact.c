@@ -97,8 +97,9 @@ void bd_lumped_sector_anchor(bd_sim *sim, int pulley, bd_wrap_contact *W)
     }
 }
 
-static int in_sector(const bd_sim *sim, const bd_pulley_body *p, const bd_wrap_sector *S, int k)
+int bd_lumped_in_sector(const bd_sim *sim, const bd_pulley_body *p, int k)
 {
+    const bd_wrap_sector *S = sector_of(sim, p);
     double rx = sim->x[k] - p->cx, ry = sim->y[k] - p->cy;
     double a2 = rx * rx + ry * ry;
     if (a2 >= S->reach * S->reach)
@@ -111,8 +112,8 @@ static int in_sector(const bd_sim *sim, const bd_pulley_body *p, const bd_wrap_s
 
 /* the node nearest the arc's middle, from the last one; then the run of
  * sector nodes through it: *first and *count (count ≤ node_max) */
-static int find_sector(const bd_sim *sim, const bd_pulley_body *p, const bd_wrap_contact *W,
-                       int *first, int *count)
+int bd_lumped_find_sector(const bd_sim *sim, const bd_pulley_body *p, const bd_wrap_contact *W,
+                          int *first, int *count)
 {
     const int n = sim->model->n;
     const bd_wrap_sector *S = sector_of(sim, p);
@@ -136,13 +137,13 @@ static int find_sector(const bd_sim *sim, const bd_pulley_body *p, const bd_wrap
     int lo = a, c = 1;
     while (c < S->node_max) {
         int b = lo == 0 ? n - 1 : lo - 1;
-        if (!in_sector(sim, p, S, b))
+        if (!bd_lumped_in_sector(sim, p, b))
             break;
         lo = b;
         c++;
     }
     for (int k = a + 1 == n ? 0 : a + 1; c < S->node_max; k = k + 1 == n ? 0 : k + 1) {
-        if (!in_sector(sim, p, S, k))
+        if (!bd_lumped_in_sector(sim, p, k))
             break;
         c++;
     }
@@ -187,8 +188,8 @@ static void gather(bd_sim *sim, bd_pulley_body *p, int moving)
      * the carriage's, as the nodes', at t − Δt/2) */
     double vpx = p->qdot * ax, vpy = p->qdot * ay;
     W->contact_count = 0;
-    int first, count;
-    W->anchor = find_sector(sim, p, W, &first, &count);
+    /* the sector's run, found in the forces phase (wrap_elements.c) */
+    const int first = W->run_first, count = W->run_count;
     for (int w = 0, k = first; w < count; w++, k = k + 1 == n ? 0 : k + 1) {
         double rx = sim->x[k] - p->cx, ry = sim->y[k] - p->cy;
         double a2 = rx * rx + ry * ry;
@@ -328,8 +329,9 @@ static void solve(bd_sim *sim, bd_pulley_body *p, double T_p, double P, double M
      * discharge reads them) */
     double sum = 0.0;
     int kept = 0;
-    p->f_axis = 0.0;
-    p->fnc_axis = 0.0;
+    /* the wrapped elements' arcs press on the shell directly (wrap_elements.c) */
+    p->f_axis = W->react[0] * ax + W->react[1] * ay;
+    p->fnc_axis = W->react_d[0] * ax + W->react_d[1] * ay;
     for (int c = 0; c < nc; c++) {
         int st = W->c_state[c];
         /* exactly the set solved for α and A (when the carriage passes ran
@@ -360,15 +362,17 @@ static void solve(bd_sim *sim, bd_pulley_body *p, double T_p, double P, double M
 
 void bd_lumped_wrap(bd_sim *sim, bd_pulley_body *p, double external_torque)
 {
-    /* the carriage's pull and mass (0: it does not move this step) */
+    /* the carriage's pull and mass (0: it does not move this step), with
+     * what the wrapped elements' arcs press on the shell (wrap_elements.c) */
     double Mc;
-    const double P = bd_pulley_carriage(sim, p, &Mc);
-    gather(sim, p, Mc > 0.0);
     const bd_wrap_contact *W = wrap_of(sim, p);
+    const double react = W->react[0] * p->m->axis[0] + W->react[1] * p->m->axis[1];
+    const double P = bd_pulley_carriage(sim, p, &Mc) + react;
+    gather(sim, p, Mc > 0.0);
     p->torque_friction = 0.0;
     if (W->contact_count == 0) {
-        p->f_axis = 0.0;
-        p->fnc_axis = 0.0;
+        p->f_axis = react;
+        p->fnc_axis = W->react_d[0] * p->m->axis[0] + W->react_d[1] * p->m->axis[1];
         p->alpha = p->held ? 0.0 : external_torque / bd_pulley_solve_inertia(sim, p);
         if (!p->held && bd_pulley_drive_clip(sim, p, p->alpha, &external_torque))
             p->alpha = external_torque / bd_pulley_solve_inertia(sim, p);
@@ -385,7 +389,7 @@ double bd_lumped_wrap_energy(const bd_sim *sim, const bd_pulley_body *p)
     const int n = sim->model->n;
     double e = 0.0, R = p->m->radius;
     int first, count;
-    find_sector(sim, p, W, &first, &count);
+    bd_lumped_find_sector(sim, p, W, &first, &count);
     for (int w = 0, k = first; w < count; w++, k = k + 1 == n ? 0 : k + 1) {
         double a = hypot(sim->x[k] - p->cx, sim->y[k] - p->cy);
         if (a < R)

@@ -105,7 +105,9 @@ double bd_lumped_element_speed(const bd_sim *sim, int e)
 
 double bd_lumped_element_strain(const bd_sim *sim, int e)
 {
-    return (bd_lumped_of(sim)->len[e] - sim->model->l0) / sim->model->l0;
+    /* from the tension: an element wrapped on a pulley has the belt's
+     * length there, not its chord's (wrap_elements.c) */
+    return (sim->tension[e] - bd_lumped_of(sim)->td[e]) / sim->model->EA;
 }
 
 /* along the element that leaves the node */

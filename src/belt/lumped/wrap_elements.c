@@ -1,0 +1,213 @@
+/* Elements that run round a pulley: their length is the belt's, along the
+ * shell, not the chord between their nodes.
+ *
+ * A chain of straight elements wrapped on a pulley is a polygon: its nodes
+ * sit on R, its chords cut the arc. Run over the pulley it acts as a chain
+ * on a sprocket (chordal action): the span that leaves from the last node
+ * on the shell swings and rises with every node, the next node lands on the
+ * shell with a normal speed v·sin(θ/2) that the contact stops (a loss of
+ * ½m(v·sin(θ/2))² per node and tangent point), and a shell turning at ω
+ * moves the belt at R·ω·sin(θ/2)/(θ/2), 1.1 % slow at the default 30°
+ * element. At that element the running force of generated conveyors was
+ * 5–200 % above their own resistance law and converged only as l0²
+ * (issue 10). A real belt has none of this: between its nodes it follows
+ * the shell and leaves it along the tangent.
+ *
+ * So an element whose chord would cut into a pulley takes the length of
+ * the shortest path between its nodes round the shell: from node i along
+ * its tangent to the circle, round the arc in the sense the belt wraps,
+ * and along the tangent to node j (a node on or in the shell starts or
+ * ends the arc at its own angle):
+ *   l = L_i + L_j + ρ·Δ,   Δ = Δψ_ij − β_i − β_j > 0,
+ *   L_k = √(a_k² − R²),  β_k = acos(R/a_k)   (node k off the shell, a_k > R),
+ *   L_k = β_k = 0, d_k = a_k − R              (node k in the shell),
+ *   ρ = R + (d_i + d_j)/2,
+ * with a_k the node's distance from the centre and Δψ_ij the angle from i
+ * to j in the wrap's sense. The term (d_i + d_j)/2·Δ gives a node in the
+ * shell its share of the arc's pressure, T·Δ/2 from each element, as the
+ * polygon's kink did: friction needs it on the nodes. Where Δ reaches 0
+ * the path is the straight chord, touching the circle once: l and its
+ * gradient are continuous there. The tension T = k·(l − l0) + c·dl/dt acts
+ * on the nodes along −∂l/∂x_i and −∂l/∂x_j: a node on a tangent is pulled
+ * along it (it lands tangentially, no impact), a node on the shell along
+ * the shell. The rest, T·(∂l/∂x_i + ∂l/∂x_j) = −T·∂l/∂c, presses on the
+ * shell (a takeup carriage feels it). ½k(l − l0)² is the elastic energy,
+ * so the forces are conservative (dashpot apart).
+ *
+ * The gradients (ê_r,k radial, ê_t,k the wrap's tangent at node k):
+ *   ∂l/∂x_j = (a_j² − ρR)/(a_j·L_j)·ê_r,j + (ρ/a_j)·ê_t,j   (off the shell)
+ *           = (Δ/2)·ê_r,j + (ρ/a_j)·ê_t,j                   (in the shell)
+ *   ∂l/∂x_i = (a_i² − ρR)/(a_i·L_i)·ê_r,i − (ρ/a_i)·ê_t,i   (off)
+ *           = (Δ/2)·ê_r,i − (ρ/a_i)·ê_t,i                   (in)
+ * For ρ = R the off-shell ones are the tangent lines' unit vectors. While
+ * one node is in the shell ρ < R by micrometres, and the first form grows
+ * as 1/L_j in the last nanometres before node j lands; L is floored there
+ * (GEODESIC_L_FLOOR), which moves the energy by picojoules.
+ *
+ * Derived here (plane geometry of a string wrapped on a circle); the
+ * lumped belt it changes is seed 001 §4.1, §4.3.1; docs/physics.md §10. */
+#include "belt/lumped/lumped.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "base/constants.h"
+
+/* the floor of a tangent's length in the gradient, a fraction of R */
+#define GEODESIC_L_FLOOR 1e-6
+
+int bd_lumped_geodesic(double cx, double cy, double R, double wrap, double xi, double yi,
+                       double xj, double yj, double *l, double gi[2], double gj[2])
+{
+    double rix = xi - cx, riy = yi - cy, rjx = xj - cx, rjy = yj - cy;
+    double ai = sqrt(rix * rix + riy * riy), aj = sqrt(rjx * rjx + rjy * rjy);
+    /* the angle from i to j in the wrap's sense; an element turns less
+     * than a half turn, elements far round the circle are not wrapped */
+    double dpsi = wrap * atan2(rix * rjy - riy * rjx, rix * rjx + riy * rjy);
+    if (!(dpsi > 0.0))
+        return 0;
+    double Li = 0.0, Lj = 0.0, bi = 0.0, bj = 0.0;
+    if (ai > R) {
+        Li = sqrt(ai * ai - R * R);
+        bi = acos(R / ai);
+    }
+    if (aj > R) {
+        Lj = sqrt(aj * aj - R * R);
+        bj = acos(R / aj);
+    }
+    double arc = dpsi - bi - bj;
+    if (!(arc > 0.0))
+        return 0;
+    double di = ai < R ? ai - R : 0.0, dj = aj < R ? aj - R : 0.0;
+    double rho = R + 0.5 * (di + dj);
+    *l = Li + Lj + rho * arc;
+    double eix = rix / ai, eiy = riy / ai, ejx = rjx / aj, ejy = rjy / aj;
+    /* the wrap's tangent: wrap·perp(ê_r), as pulley_contact.c's t̂ */
+    double tix = -wrap * eiy, tiy = wrap * eix, tjx = -wrap * ejy, tjy = wrap * ejx;
+    double floor_L = GEODESIC_L_FLOOR * R;
+    double cri = ai > R ? (ai * ai - rho * R) / (ai * fmax(Li, floor_L)) : 0.5 * arc;
+    double crj = aj > R ? (aj * aj - rho * R) / (aj * fmax(Lj, floor_L)) : 0.5 * arc;
+    double cti = -rho / ai, ctj = rho / aj;
+    gi[0] = cri * eix + cti * tix;
+    gi[1] = cri * eiy + cti * tiy;
+    gj[0] = crj * ejx + ctj * tjx;
+    gj[1] = crj * ejy + ctj * tjy;
+    return 1;
+}
+
+/* The forces phase, after the chords (forces.c element_pass): every
+ * element with a node in a wrap's sector that the geodesic finds wrapped
+ * gets its length, tension and dashpot from it; listed for the node forces
+ * (bd_lumped_wrap_forces) and its pull on the shell summed. The sector's
+ * run is kept for the contact (pulley_contact.c gather). O(nodes in the
+ * sectors). */
+void bd_lumped_wrap_elements(bd_sim *sim)
+{
+    bd_lumped *L = bd_lumped_of(sim);
+    const bd_lumped_model *LM = bd_lumped_model_of(sim);
+    const int n = sim->model->n;
+    const double k = LM->k_axial, c = LM->c_axial, l0 = sim->model->l0;
+    L->wrapped_count = 0;
+    for (int pi = 0; pi < sim->model->pulley_count; pi++) {
+        bd_pulley_body *p = &sim->pulleys[pi];
+        bd_wrap_contact *W = &L->wraps[pi];
+        int first, count;
+        W->anchor = bd_lumped_find_sector(sim, p, W, &first, &count);
+        W->run_first = first;
+        W->run_count = count;
+        W->react[0] = W->react[1] = 0.0;
+        W->react_d[0] = W->react_d[1] = 0.0;
+        const double R = p->m->radius, wrap = p->m->wrap;
+        const double vcx = p->qdot * p->m->axis[0], vcy = p->qdot * p->m->axis[1];
+        /* the elements of the run, and the one that enters it */
+        int e = first == 0 ? n - 1 : first - 1;
+        for (int w = 0; w <= count; w++, e = e + 1 == n ? 0 : e + 1) {
+            if (L->wrap_mark[e])
+                continue;
+            int j = e + 1 == n ? 0 : e + 1;
+            double len, gi[2], gj[2];
+            if (!bd_lumped_geodesic(p->cx, p->cy, R, wrap, sim->x[e], sim->y[e], sim->x[j],
+                                    sim->y[j], &len, gi, gj))
+                continue;
+            double ldot = gi[0] * (sim->vx[e] - vcx) + gi[1] * (sim->vy[e] - vcy)
+                        + gj[0] * (sim->vx[j] - vcx) + gj[1] * (sim->vy[j] - vcy);
+            double td = c * ldot, T = k * (len - l0) + td;
+            sim->tension[e] = T;
+            L->td[e] = td;
+            L->wrap_mark[e] = 1;
+            bd_wrapped_element *we = &L->wrapped[L->wrapped_count++];
+            we->e = e;
+            memcpy(we->gi, gi, sizeof we->gi);
+            memcpy(we->gj, gj, sizeof we->gj);
+            we->T = T;
+            we->td = td;
+            /* −T·∂l/∂c = T·(∂l/∂x_i + ∂l/∂x_j) on the shell */
+            W->react[0] += T * (gi[0] + gj[0]);
+            W->react[1] += T * (gi[1] + gj[1]);
+            W->react_d[0] += td * (gi[0] + gj[0]);
+            W->react_d[1] += td * (gi[1] + gj[1]);
+        }
+    }
+}
+
+/* after the node pass, which pulled the nodes of every element along its
+ * chord u with its tension: a wrapped element's nodes are pulled along
+ * −∂l/∂x instead (node i got +T·u, node j −T·u) */
+void bd_lumped_wrap_forces(bd_sim *sim)
+{
+    bd_lumped *L = bd_lumped_of(sim);
+    const int n = sim->model->n;
+    for (int w = 0; w < L->wrapped_count; w++) {
+        const bd_wrapped_element *we = &L->wrapped[w];
+        int e = we->e, j = e + 1 == n ? 0 : e + 1;
+        double ux = L->ux[e], uy = L->uy[e];
+        sim->fx[e] -= we->T * (we->gi[0] + ux);
+        sim->fy[e] -= we->T * (we->gi[1] + uy);
+        sim->fx[j] -= we->T * (we->gj[0] - ux);
+        sim->fy[j] -= we->T * (we->gj[1] - uy);
+        sim->fnx[e] -= we->td * (we->gi[0] + ux);
+        sim->fny[e] -= we->td * (we->gi[1] + uy);
+        sim->fnx[j] -= we->td * (we->gj[0] - ux);
+        sim->fny[j] -= we->td * (we->gj[1] - uy);
+        L->wrap_mark[e] = 0;
+    }
+}
+
+/* the elastic energy of the wrapped elements, ½k(l − l0)², less what the
+ * chord count gave them (forces.c bd_lumped_elastic_energy); the same
+ * elements as the forces phase takes: the first pulley whose sector run
+ * holds the element and finds it wrapped */
+double bd_lumped_wrap_elastic_correction(const bd_sim *sim)
+{
+    const bd_lumped *L = bd_lumped_of(sim);
+    const double k = bd_lumped_model_of(sim)->k_axial, l0 = sim->model->l0;
+    const int n = sim->model->n;
+    double de = 0.0;
+    for (int pi = 0; pi < sim->model->pulley_count; pi++) {
+        const bd_pulley_body *p = &sim->pulleys[pi];
+        int first, count;
+        bd_lumped_find_sector(sim, p, &L->wraps[pi], &first, &count);
+        int e = first == 0 ? n - 1 : first - 1;
+        for (int w = 0; w <= count; w++, e = e + 1 == n ? 0 : e + 1) {
+            int j = e + 1 == n ? 0 : e + 1;
+            double len, gi[2], gj[2];
+            if (!bd_lumped_geodesic(p->cx, p->cy, p->m->radius, p->m->wrap, sim->x[e],
+                                    sim->y[e], sim->x[j], sim->y[j], &len, gi, gj))
+                continue;
+            /* taken by an earlier pulley? (only where two sectors meet) */
+            int taken = 0;
+            for (int q = 0; q < pi && !taken; q++) {
+                const bd_pulley_body *o = &sim->pulleys[q];
+                double l2, g1[2], g2[2];
+                taken = (bd_lumped_in_sector(sim, o, e) || bd_lumped_in_sector(sim, o, j))
+                     && bd_lumped_geodesic(o->cx, o->cy, o->m->radius, o->m->wrap, sim->x[e],
+                                           sim->y[e], sim->x[j], sim->y[j], &l2, g1, g2);
+            }
+            if (taken)
+                continue;
+            double chord = hypot(sim->x[j] - sim->x[e], sim->y[j] - sim->y[e]);
+            de += 0.5 * k * ((len - l0) * (len - l0) - (chord - l0) * (chord - l0));
+        }
+    }
+    return de;
+}
