@@ -229,12 +229,20 @@ static void loaded_steady_and_coast(void)
     bd_test_make_sim(yaml, &def, &sim);
     double F, v;
     mean_force(sim, 2.0, 3.0, &F, &v);
-    /* idler loads: both strands' belt, the material from the feed point on
-     * (the carrying span's idlers stand under 98% of it) */
+    /* idler loads: what the idlers carry of both strands' belt and of the
+     * material from the feed point on. N idlers fit a span of length L
+     * evenly (docs/model-format.md), a = L/(N + 1) apart; the pulleys carry
+     * the half gap at each end, the idlers N·a. The material starts at
+     * x_f = 0.02·L < a, and the first idler carries of the gap before it
+     * only what lies beyond x_f, by the lever rule: N·a − x_f²/(2a). Until
+     * issue 10 this law took the whole strands (3 % more here), which the
+     * discrete belt's chordal losses happened to make up. */
     double Lc = bd_sim_span_length(sim, 1), Lr = bd_sim_span_length(sim, 0);
-    double Ll = 0.98 * Lc;
-    double want = F_ROLL * G * (M_BELT * (Lc + Lr) + M_LOAD * Ll) + M_LOAD * v * v;
-    printf("loaded steady: drive force %.2f N at %.4f m/s; resistances f g (m'G (Lc+Lr) + "
+    int Nc = (int)lround(Lc / 1.0) - 1, Nr = (int)lround(Lr / 2.5) - 1;
+    double ac = Lc / (Nc + 1), ar = Lr / (Nr + 1), xf = 0.02 * Lc;
+    double Ll = Nc * ac - xf * xf / (2.0 * ac);
+    double want = F_ROLL * G * (M_BELT * (Nc * ac + Nr * ar) + M_LOAD * Ll) + M_LOAD * v * v;
+    printf("loaded steady: drive force %.2f N at %.4f m/s; resistances on the idlers f g (m'G L_c,r + "
            "m'L L_loaded) + m'L v^2 = %.2f N: %+.2f N (%+.2f%%)\n",
            F, v, want, F - want, 100.0 * (F / want - 1.0));
     CHECK_REL(F, want, 0.05);

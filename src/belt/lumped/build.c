@@ -138,36 +138,12 @@ static void setup_idlers(bd_sim *sim)
     }
 }
 
-/* the pull of element e on node i (its start or its end), its length
- * taken round pulley pb when the element wraps it (wrap_elements.c) */
-static void element_pull(const bd_sim *sim, const bd_pulley_body *pb, int e, int i, double T,
-                         double f[2])
-{
-    const int n = sim->model->n, j = e + 1 == n ? 0 : e + 1;
-    double len, gi[2], gj[2];
-    if (bd_lumped_geodesic(pb->cx, pb->cy, pb->m->radius, pb->m->wrap, sim->x[e], sim->y[e],
-                           sim->x[j], sim->y[j], &len, gi, gj)) {
-        const double *g = i == e ? gi : gj;
-        f[0] = -T * g[0];
-        f[1] = -T * g[1];
-        return;
-    }
-    double ux = sim->x[j] - sim->x[e], uy = sim->y[j] - sim->y[e], l = hypot(ux, uy);
-    double sign = i == e ? 1.0 : -1.0;
-    f[0] = sign * T * ux / l;
-    f[1] = sign * T * uy / l;
-}
-
 /* place nodes on the laid path: the layout spaced them by the belt's
  * length along it, round the wraps too, which is the length the elements
- * have there (wrap_elements.c). A node on a wrap is held by its pulley
- * against its share of the arc's pressure; push it into the shell by the
- * penetration that makes the contact carry exactly that, so the initial
- * state is in equilibrium */
+ * have there (wrap_elements.c) */
 static void place_nodes(bd_sim *sim, const bd_layout *lay)
 {
-    const int n = sim->model->n;
-    for (int i = 0; i < n; i++) {
+    for (int i = 0; i < sim->model->n; i++) {
         double p[2], t[2];
         bd_path_point(&sim->model->path, lay->s[i], p, t);
         sim->x[i] = p[0];
@@ -176,37 +152,43 @@ static void place_nodes(bd_sim *sim, const bd_layout *lay)
         bd_lumped_of(sim)->seg_hint[i] = bd_path_segment_at(&sim->model->path, lay->s[i]);
         sim->mass[i] = sim->model->belt_mpl * sim->model->l0;
     }
-    double *depth = bd_xcalloc((size_t)n, sizeof *depth);
+}
+
+/* A node seated on a wrap carries its share of the arc's pressure
+ * (wrap_elements.c seat): push it into the shell by the penetration that
+ * makes the contact carry exactly that, so the initial state is in
+ * equilibrium. The tensions are the laid ones (the elements' lengths are
+ * those of the layout). */
+static void seat_nodes(bd_sim *sim)
+{
+    bd_lumped *L = bd_lumped_of(sim);
+    const int n = sim->model->n;
+    bd_lumped_wrap_elements(sim);
+    double *fx = bd_xcalloc((size_t)n, sizeof *fx), *fy = bd_xcalloc((size_t)n, sizeof *fy);
     int *on = bd_xcalloc((size_t)n, sizeof *on);
-    for (int i = 0; i < n; i++) {
-        int b = i == 0 ? n - 1 : i - 1;
-        on[i] = -1;
-        for (int k = 0; k < sim->model->pulley_count; k++) {
-            const bd_pulley_body *pb = &sim->pulleys[k];
-            double rx = sim->x[i] - pb->cx, ry = sim->y[i] - pb->cy;
-            double r = hypot(rx, ry);
-            if (r > pb->m->radius * (1.0 + 1e-9))
-                continue;
-            double fb[2], fa[2];
-            element_pull(sim, pb, b, i, lay->tension[b], fb);
-            element_pull(sim, pb, i, i, lay->tension[i], fa);
-            double inward = -((fb[0] + fa[0]) * rx + (fb[1] + fa[1]) * ry) / r;
-            depth[i] = inward > 0.0 ? inward / bd_lumped_model_of(sim)->k_contact : 0.0;
-            on[i] = k;
-        }
+    for (int w = 0; w < L->wrapped_count; w++) {
+        const bd_wrapped_element *we = &L->wrapped[w];
+        int e = we->e, j = e + 1 == n ? 0 : e + 1;
+        fx[e] += we->pi[0];
+        fy[e] += we->pi[1];
+        fx[j] += we->pj[0];
+        fy[j] += we->pj[1];
+        on[e] = on[j] = 1 + we->pulley;
+        L->wrap_mark[e] = 0;
     }
-    /* moved after all pulls are taken: a node's depth changes its
-     * neighbours' geodesics */
     for (int i = 0; i < n; i++) {
-        if (on[i] < 0)
+        if (!on[i] || (fx[i] == 0.0 && fy[i] == 0.0))
             continue;
-        const bd_pulley_body *pb = &sim->pulleys[on[i]];
+        const bd_pulley_body *pb = &sim->pulleys[on[i] - 1];
         double rx = sim->x[i] - pb->cx, ry = sim->y[i] - pb->cy, r = hypot(rx, ry);
-        double target = pb->m->radius - depth[i];
+        double inward = -(fx[i] * rx + fy[i] * ry) / r;
+        double depth = inward > 0.0 ? inward / bd_lumped_model_of(sim)->k_contact : 0.0;
+        double target = pb->m->radius - depth;
         sim->x[i] = pb->cx + rx * target / r;
         sim->y[i] = pb->cy + ry * target / r;
     }
-    free(depth);
+    free(fx);
+    free(fy);
     free(on);
 }
 
@@ -295,6 +277,7 @@ int bd_lumped_build(bd_sim *sim, bd_diag *diag)
     place_nodes(sim, &lay);
     for (int i = 0; i < sim->model->pulley_count; i++)
         bd_lumped_sector_anchor(sim, i, &bd_lumped_of(sim)->wraps[i]);
+    seat_nodes(sim);
     for (int i = 0; i < sim->model->n; i++)
         sim->tension[i] = lay.tension[i];
     bd_layout_free(&lay);

@@ -53,9 +53,10 @@ typedef struct bd_wrap_contact {
  * length's gradients at its start node i and end node j, its tension and
  * the tension's dashpot part */
 typedef struct bd_wrapped_element {
-    int e;
+    int e, pulley;
     double gi[2], gj[2];
     double T, td;
+    double pi[2], pj[2];    /* N, the arc's pressure its seated nodes carry */
 } bd_wrapped_element;
 
 /* the lumped belt's state (behind sim->belt_data) */
@@ -74,7 +75,7 @@ typedef struct bd_lumped {
      * sectors' node counts together; wrap_mark[e] is set while e is listed */
     bd_wrapped_element *wrapped;
     int wrapped_count;
-    unsigned char *wrap_mark;   /* [n] */
+    int *wrap_mark;        /* [n] 1 + the pulley, or 0 */
 } bd_lumped;
 
 static inline bd_lumped *bd_lumped_of(const bd_sim *sim)

@@ -53,8 +53,9 @@
 
 #include "base/constants.h"
 
-/* the floor of a tangent's length in the gradient, a fraction of R */
-#define GEODESIC_L_FLOOR 1e-6
+/* a node within this gap of the shell, a fraction of the element length,
+ * can be seated (as the contact's predictive gap, pulley_contact.c) */
+#define SEAT_GAP 0.02
 
 int bd_lumped_geodesic(double cx, double cy, double R, double wrap, double xi, double yi,
                        double xj, double yj, double *l, double gi[2], double gj[2])
@@ -78,21 +79,74 @@ int bd_lumped_geodesic(double cx, double cy, double R, double wrap, double xi, d
     double arc = dpsi - bi - bj;
     if (!(arc > 0.0))
         return 0;
-    double di = ai < R ? ai - R : 0.0, dj = aj < R ? aj - R : 0.0;
-    double rho = R + 0.5 * (di + dj);
-    *l = Li + Lj + rho * arc;
+    *l = Li + Lj + R * arc;
     double eix = rix / ai, eiy = riy / ai, ejx = rjx / aj, ejy = rjy / aj;
     /* the wrap's tangent: wrap·perp(ê_r), as pulley_contact.c's t̂ */
     double tix = -wrap * eiy, tiy = wrap * eix, tjx = -wrap * ejy, tjy = wrap * ejx;
-    double floor_L = GEODESIC_L_FLOOR * R;
-    double cri = ai > R ? (ai * ai - rho * R) / (ai * fmax(Li, floor_L)) : 0.5 * arc;
-    double crj = aj > R ? (aj * aj - rho * R) / (aj * fmax(Lj, floor_L)) : 0.5 * arc;
-    double cti = -rho / ai, ctj = rho / aj;
+    double cri = ai > R ? Li / ai : 0.0, crj = aj > R ? Lj / aj : 0.0;
+    double cti = -R / ai, ctj = R / aj;
     gi[0] = cri * eix + cti * tix;
     gi[1] = cri * eiy + cti * tiy;
     gj[0] = crj * ejx + ctj * tjx;
     gj[1] = crj * ejy + ctj * tjy;
     return 1;
+}
+
+/* node k sits on pulley pi: both its elements run round it and it is
+ * within the contact gap of the shell */
+static int seated(const bd_sim *sim, int pi, int k)
+{
+    const bd_lumped *L = bd_lumped_of(sim);
+    const int n = sim->model->n, b = k == 0 ? n - 1 : k - 1;
+    if (L->wrap_mark[k] != 1 + pi || L->wrap_mark[b] != 1 + pi)
+        return 0;
+    const bd_pulley_body *p = &sim->pulleys[pi];
+    double a = hypot(sim->x[k] - p->cx, sim->y[k] - p->cy);
+    return a <= p->m->radius + SEAT_GAP * sim->model->l0;
+}
+
+/* The arc's pressure on the nodes. The geodesic puts it on the shell; a
+ * lumped belt needs it on its nodes, for their friction and to hold them
+ * on the shell against their weight and inertia. A node seated on the
+ * shell (both its elements round it) carries the radial part, at itself,
+ * of its share: half of an arc between two seated nodes, all of it next
+ * to one; the rest stays on the shell. The node that leaves the wrap is not
+ * seated once its leaving element is straight, so it leaves from the
+ * tangent point and nothing holds it there; one that lands is seated as
+ * it passes the tangent point, where its normal speed is 0. Moved from the
+ * shell to a node, the force is booked as non-conservative on both. */
+static void seat(bd_sim *sim)
+{
+    bd_lumped *L = bd_lumped_of(sim);
+    const int n = sim->model->n;
+    for (int w = 0; w < L->wrapped_count; w++) {
+        bd_wrapped_element *we = &L->wrapped[w];
+        int e = we->e, j = e + 1 == n ? 0 : e + 1;
+        const bd_pulley_body *p = &sim->pulleys[we->pulley];
+        bd_wrap_contact *W = &L->wraps[we->pulley];
+        int si = seated(sim, we->pulley, e), sj = seated(sim, we->pulley, j);
+        we->pi[0] = we->pi[1] = we->pj[0] = we->pj[1] = 0.0;
+        if (!si && !sj)
+            continue;
+        double share = si && sj ? 0.5 : 1.0;
+        double Px = we->T * (we->gi[0] + we->gj[0]), Py = we->T * (we->gi[1] + we->gj[1]);
+        int nodes[2] = {e, j}, on[2] = {si, sj};
+        double *out[2] = {we->pi, we->pj};
+        for (int q = 0; q < 2; q++) {
+            if (!on[q])
+                continue;
+            int k = nodes[q];
+            double rx = sim->x[k] - p->cx, ry = sim->y[k] - p->cy, a = hypot(rx, ry);
+            double ex = rx / a, ey = ry / a;
+            double fr = share * (Px * ex + Py * ey);
+            out[q][0] = fr * ex;
+            out[q][1] = fr * ey;
+            W->react[0] -= out[q][0];
+            W->react[1] -= out[q][1];
+            W->react_d[0] -= out[q][0];
+            W->react_d[1] -= out[q][1];
+        }
+    }
 }
 
 /* The forces phase, after the chords (forces.c element_pass): every
@@ -134,9 +188,10 @@ void bd_lumped_wrap_elements(bd_sim *sim)
             double td = c * ldot, T = k * (len - l0) + td;
             sim->tension[e] = T;
             L->td[e] = td;
-            L->wrap_mark[e] = 1;
+            L->wrap_mark[e] = 1 + pi;
             bd_wrapped_element *we = &L->wrapped[L->wrapped_count++];
             we->e = e;
+            we->pulley = pi;
             memcpy(we->gi, gi, sizeof we->gi);
             memcpy(we->gj, gj, sizeof we->gj);
             we->T = T;
@@ -148,6 +203,7 @@ void bd_lumped_wrap_elements(bd_sim *sim)
             W->react_d[1] += td * (gi[1] + gj[1]);
         }
     }
+    seat(sim);
 }
 
 /* after the node pass, which pulled the nodes of every element along its
@@ -169,6 +225,15 @@ void bd_lumped_wrap_forces(bd_sim *sim)
         sim->fny[e] -= we->td * (we->gi[1] + uy);
         sim->fnx[j] -= we->td * (we->gj[0] - ux);
         sim->fny[j] -= we->td * (we->gj[1] - uy);
+        /* the arc's pressure its seated nodes carry (seat) */
+        sim->fx[e] += we->pi[0];
+        sim->fy[e] += we->pi[1];
+        sim->fx[j] += we->pj[0];
+        sim->fy[j] += we->pj[1];
+        sim->fnx[e] += we->pi[0];
+        sim->fny[e] += we->pi[1];
+        sim->fnx[j] += we->pj[0];
+        sim->fny[j] += we->pj[1];
         L->wrap_mark[e] = 0;
     }
 }
