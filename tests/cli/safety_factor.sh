@@ -3,7 +3,7 @@
 # belt.rated_tension / factor, the running one for the static calculation's
 # steady tensions, the starting one for a run's peak. examples/head_drive
 # (rated 100 kN; static maximum 15.16 kN, above 100/6.7 = 14.93 kN; the
-# start's peak 21.7 kN, above 100/4.8 = 20.83 kN) warns in both, and says
+# start's peak 22.1 kN, above 100/4.8 = 20.83 kN) warns in both, and says
 # it in summary.json (safety_factor_running, _starting, peak_safety_factor
 # = rated / peak); with {running: 6, starting: 4} neither warns. A factor
 # that is not a positive number is a model error with its line and column.

@@ -37,10 +37,12 @@ static double default_element_length(const bd_model_def *def)
  * shell contact (ints apart) */
 static const size_t BELT_DOUBLES[] = {offsetof(bd_lumped, ux), offsetof(bd_lumped, uy),
                                       offsetof(bd_lumped, len), offsetof(bd_lumped, td),
-                                      offsetof(bd_lumped, pw), offsetof(bd_lumped, ek)};
+                                      offsetof(bd_lumped, pw), offsetof(bd_lumped, ek),
+                                      offsetof(bd_lumped, arc_load)};
 static const size_t WRAP_DOUBLES[] = {offsetof(bd_wrap_contact, c_fn0),
                                       offsetof(bd_wrap_contact, c_g),
                                       offsetof(bd_wrap_contact, c_spring),
+                                      offsetof(bd_wrap_contact, c_arc),
                                       offsetof(bd_wrap_contact, c_tx),
                                       offsetof(bd_wrap_contact, c_ty),
                                       offsetof(bd_wrap_contact, c_f)};
@@ -81,6 +83,7 @@ static void setup_pulleys(bd_sim *sim, const bd_layout *lay)
         bd_doubles_alloc(W, WRAP_DOUBLES, COUNT(WRAP_DOUBLES), (size_t)S->node_max);
         W->c_node = bd_xcalloc((size_t)S->node_max, sizeof *W->c_node);
         W->c_state = bd_xcalloc((size_t)S->node_max, sizeof *W->c_state);
+        W->c_press = bd_xcalloc((size_t)S->node_max, sizeof *W->c_press);
     }
     L->wrapped = bd_xcalloc((size_t)wrapped_max(sim), sizeof *L->wrapped);
     L->wrap_mark = bd_xcalloc((size_t)sim->model->n, sizeof *L->wrap_mark);
@@ -152,44 +155,6 @@ static void place_nodes(bd_sim *sim, const bd_layout *lay)
         bd_lumped_of(sim)->seg_hint[i] = bd_path_segment_at(&sim->model->path, lay->s[i]);
         sim->mass[i] = sim->model->belt_mpl * sim->model->l0;
     }
-}
-
-/* A node seated on a wrap carries its share of the arc's pressure
- * (wrap_elements.c seat): push it into the shell by the penetration that
- * makes the contact carry exactly that, so the initial state is in
- * equilibrium. The tensions are the laid ones (the elements' lengths are
- * those of the layout). */
-static void seat_nodes(bd_sim *sim)
-{
-    bd_lumped *L = bd_lumped_of(sim);
-    const int n = sim->model->n;
-    bd_lumped_wrap_elements(sim);
-    double *fx = bd_xcalloc((size_t)n, sizeof *fx), *fy = bd_xcalloc((size_t)n, sizeof *fy);
-    int *on = bd_xcalloc((size_t)n, sizeof *on);
-    for (int w = 0; w < L->wrapped_count; w++) {
-        const bd_wrapped_element *we = &L->wrapped[w];
-        int e = we->e, j = e + 1 == n ? 0 : e + 1;
-        fx[e] += we->pi[0];
-        fy[e] += we->pi[1];
-        fx[j] += we->pj[0];
-        fy[j] += we->pj[1];
-        on[e] = on[j] = 1 + we->pulley;
-        L->wrap_mark[e] = 0;
-    }
-    for (int i = 0; i < n; i++) {
-        if (!on[i] || (fx[i] == 0.0 && fy[i] == 0.0))
-            continue;
-        const bd_pulley_body *pb = &sim->pulleys[on[i] - 1];
-        double rx = sim->x[i] - pb->cx, ry = sim->y[i] - pb->cy, r = hypot(rx, ry);
-        double inward = -(fx[i] * rx + fy[i] * ry) / r;
-        double depth = inward > 0.0 ? inward / bd_lumped_model_of(sim)->k_contact : 0.0;
-        double target = pb->m->radius - depth;
-        sim->x[i] = pb->cx + rx * target / r;
-        sim->y[i] = pb->cy + ry * target / r;
-    }
-    free(fx);
-    free(fy);
-    free(on);
 }
 
 /* initial material: nodes from the feed point to the discharge pulley */
@@ -277,7 +242,6 @@ int bd_lumped_build(bd_sim *sim, bd_diag *diag)
     place_nodes(sim, &lay);
     for (int i = 0; i < sim->model->pulley_count; i++)
         bd_lumped_sector_anchor(sim, i, &bd_lumped_of(sim)->wraps[i]);
-    seat_nodes(sim);
     for (int i = 0; i < sim->model->n; i++)
         sim->tension[i] = lay.tension[i];
     bd_layout_free(&lay);
@@ -299,6 +263,7 @@ void bd_lumped_free(bd_sim *sim)
         bd_doubles_free(W, WRAP_DOUBLES, COUNT(WRAP_DOUBLES));
         free(W->c_node);
         free(W->c_state);
+        free(W->c_press);
     }
     free(L->wraps);
     free(L->wrapped);
@@ -338,9 +303,11 @@ void bd_lumped_clone(bd_sim *dst, const bd_sim *src)
         *W = *from;
         W->c_node = NULL;
         W->c_state = NULL;
+        W->c_press = NULL;
         bd_doubles_dup(W, from, WRAP_DOUBLES, COUNT(WRAP_DOUBLES), w);
         W->c_node = bd_xdup(from->c_node, w, sizeof *W->c_node);
         W->c_state = bd_xdup(from->c_state, w, sizeof *W->c_state);
+        W->c_press = bd_xdup(from->c_press, w, sizeof *W->c_press);
     }
     L->wrapped = bd_xdup(S->wrapped, (size_t)wrapped_max(src), sizeof *L->wrapped);
     L->wrap_mark = bd_xdup(S->wrap_mark, n, sizeof *L->wrap_mark);

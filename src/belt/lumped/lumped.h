@@ -38,9 +38,11 @@ typedef struct bd_wrap_contact {
     double *c_fn0;          /* N, normal force were the carriage not to accelerate */
     double *c_g;            /* kg, its growth with the carriage's acceleration */
     double *c_spring;       /* N, the contact spring's own force k_c·δ */
+    double *c_arc;          /* N, the arcs' pressure its friction carries */
     double *c_tx, *c_ty;    /* unit tangent (positive in the wrap sense) */
     double *c_f;            /* N, friction (+ = retards the belt) */
     int *c_state;           /* sticking, slipping forward or back, off */
+    int *c_press;           /* 1: the shell pushes it (f_n > 0) */
     int contact_count;
     /* step (forces phase): the sector's run of nodes, first and count */
     int run_first, run_count;
@@ -53,10 +55,9 @@ typedef struct bd_wrap_contact {
  * length's gradients at its start node i and end node j, its tension and
  * the tension's dashpot part */
 typedef struct bd_wrapped_element {
-    int e, pulley;
+    int e;
     double gi[2], gj[2];
     double T, td;
-    double pi[2], pj[2];    /* N, the arc's pressure its seated nodes carry */
 } bd_wrapped_element;
 
 /* the lumped belt's state (behind sim->belt_data) */
@@ -75,7 +76,10 @@ typedef struct bd_lumped {
      * sectors' node counts together; wrap_mark[e] is set while e is listed */
     bd_wrapped_element *wrapped;
     int wrapped_count;
-    int *wrap_mark;        /* [n] 1 + the pulley, or 0 */
+    unsigned char *wrap_mark;   /* [n] */
+    /* step: N, the wrapped arcs' pressure each node's friction carries
+     * (wrap_elements.c adds, the contact reads and clears) */
+    double *arc_load;      /* [n] */
 } bd_lumped;
 
 static inline bd_lumped *bd_lumped_of(const bd_sim *sim)
@@ -105,7 +109,8 @@ double bd_lumped_potential(const bd_sim *sim);
 
 /* wrap_elements.c: the length of an element that runs round a pulley */
 int bd_lumped_geodesic(double cx, double cy, double R, double wrap, double xi, double yi,
-                       double xj, double yj, double *l, double gi[2], double gj[2]);
+                       double xj, double yj, double *l, double *lever, double gi[2],
+                       double gj[2]);
 void bd_lumped_wrap_elements(bd_sim *sim);
 void bd_lumped_wrap_forces(bd_sim *sim);
 double bd_lumped_wrap_elastic_correction(const bd_sim *sim);

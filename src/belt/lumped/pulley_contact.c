@@ -190,26 +190,36 @@ static void gather(bd_sim *sim, bd_pulley_body *p, int moving)
     W->contact_count = 0;
     /* the sector's run, found in the forces phase (wrap_elements.c) */
     const int first = W->run_first, count = W->run_count;
+    double *arc_load = bd_lumped_of(sim)->arc_load;
+    /* the node before the run may hold a share of an arc's pressure
+     * (wrap_elements.c); it is not the run's: clear it */
+    arc_load[first == 0 ? n - 1 : first - 1] = 0.0;
     for (int w = 0, k = first; w < count; w++, k = k + 1 == n ? 0 : k + 1) {
+        double arc = arc_load[k];
+        arc_load[k] = 0.0;
         double rx = sim->x[k] - p->cx, ry = sim->y[k] - p->cy;
         double a2 = rx * rx + ry * ry;
-        if (a2 >= Rc * Rc)
+        int near = a2 < Rc * Rc;
+        if (!near && arc <= 0.0)
             continue;
         double a = sqrt(a2);
         double nx = rx / a, ny = ry / a;
-        double vn = nx * (sim->vx[k] - vpx) + ny * (sim->vy[k] - vpy);   /* v_n − v_p,n */
-        double m = sim->mass[k];
-        double Fo = nx * sim->fx[k] + ny * sim->fy[k];
-        double delta = R - a;
-        double den = 1.0 + k_c * dt * dt / m;
-        double fn0 = k_c * (delta - dt * vn - dt * dt * Fo / m) / den;
-        double g = moving ? k_c * dt * dt * (nx * ax + ny * ay) / den : 0.0;
-        if (!moving && fn0 <= 0.0)
+        double delta = R - a, fn0 = -1.0, g = 0.0;
+        if (near) {
+            double vn = nx * (sim->vx[k] - vpx) + ny * (sim->vy[k] - vpy);   /* v_n − v_p,n */
+            double m = sim->mass[k];
+            double Fo = nx * sim->fx[k] + ny * sim->fy[k];
+            double den = 1.0 + k_c * dt * dt / m;
+            fn0 = k_c * (delta - dt * vn - dt * dt * Fo / m) / den;
+            g = moving ? k_c * dt * dt * (nx * ax + ny * ay) / den : 0.0;
+        }
+        if (!moving && fn0 <= 0.0 && arc <= 0.0)
             continue;
         int c = W->contact_count++;
         W->c_node[c] = k;
         W->c_fn0[c] = fn0;
         W->c_g[c] = g;
+        W->c_arc[c] = arc;
         W->c_spring[c] = delta > 0.0 ? k_c * delta : 0.0;
         W->c_tx[c] = -p->m->wrap * ny;
         W->c_ty[c] = p->m->wrap * nx;
@@ -241,7 +251,8 @@ static void solve(bd_sim *sim, bd_pulley_body *p, double T_p, double P, double M
     for (int outer = 0; outer < CARRIAGE_PASSES; outer++) {
         for (int c = 0; c < nc; c++) {
             double fn = W->c_fn0[c] + W->c_g[c] * A;
-            W->c_state[c] = fn > 0.0 ? STICKING : OFF;
+            W->c_press[c] = fn > 0.0;
+            W->c_state[c] = fn > 0.0 || W->c_arc[c] > 0.0 ? STICKING : OFF;
         }
         for (int pass = 0; pass <= nc; pass++) {
             /* [a11 a12; a21 a22]·(α, A) = (r1, r2), r1 without T_p */
@@ -255,8 +266,11 @@ static void solve(bd_sim *sim, bd_pulley_body *p, double T_p, double P, double M
                 double d = W->c_tx[c] * ax + W->c_ty[c] * ay;
                 /* n̂·a, with n̂ = wrap·(t_y, −t_x) */
                 double cn = p->m->wrap * (W->c_ty[c] * ax - W->c_tx[c] * ay);
-                r2 -= W->c_fn0[c] * cn;
-                a22 += W->c_g[c] * cn;
+                const int press = W->c_press[c];
+                if (press) {
+                    r2 -= W->c_fn0[c] * cn;
+                    a22 += W->c_g[c] * cn;
+                }
                 if (st == STICKING) {
                     double vr = W->c_tx[c] * (sim->vx[k] - vpx) + W->c_ty[c] * (sim->vy[k] - vpy)
                               - R * p->omega;
@@ -269,11 +283,15 @@ static void solve(bd_sim *sim, bd_pulley_body *p, double T_p, double P, double M
                     a22 += sim->mass[k] * d * d;
                     r2 += d * b;
                 } else {
+                    /* μ_d·(f_n + arc), f_n = f_n0 + g·A while the shell
+                     * pushes the node */
                     double s = st * p->m->mu_d;
-                    Fk += s * W->c_fn0[c];
-                    a12 -= R * s * W->c_g[c];
-                    a22 -= d * s * W->c_g[c];
-                    r2 += d * s * W->c_fn0[c];
+                    double f0 = (press ? W->c_fn0[c] : 0.0) + W->c_arc[c];
+                    double gA = press ? W->c_g[c] : 0.0;
+                    Fk += s * f0;
+                    a12 -= R * s * gA;
+                    a22 -= d * s * gA;
+                    r2 += d * s * f0;
                 }
             }
             double a11 = bd_pulley_solve_inertia(sim, p) + R * R * M;
@@ -308,7 +326,8 @@ static void solve(bd_sim *sim, bd_pulley_body *p, double T_p, double P, double M
                          + W->c_tx[c] * sim->fx[k] + W->c_ty[c] * sim->fy[k];
                 W->c_f[c] = f;
                 double fn = W->c_fn0[c] + W->c_g[c] * A;
-                if (fabs(f) > p->m->mu_s * fn) {
+                double N = (W->c_press[c] ? fn : 0.0) + W->c_arc[c];
+                if (fabs(f) > p->m->mu_s * N) {
                     W->c_state[c] = f > 0.0 ? SLIPPING_FORWARD : SLIPPING_BACK;
                     changed = 1;
                 }
@@ -321,7 +340,7 @@ static void solve(bd_sim *sim, bd_pulley_body *p, double T_p, double P, double M
         /* the contact set A gives: the same as solved, or once more */
         int same = 1;
         for (int c = 0; c < nc && same; c++)
-            same = (W->c_fn0[c] + W->c_g[c] * A > 0.0) == (W->c_state[c] != OFF);
+            same = (W->c_fn0[c] + W->c_g[c] * A > 0.0) == W->c_press[c];
         if (same)
             break;
     }
@@ -337,14 +356,14 @@ static void solve(bd_sim *sim, bd_pulley_body *p, double T_p, double P, double M
         /* exactly the set solved for α and A (when the carriage passes ran
          * out, a node may end with f_n ≤ 0: skipping it would put on the
          * nodes other forces than the pulley and carriage were solved with) */
-        double fn = W->c_fn0[c] + W->c_g[c] * A;
+        double fn = W->c_press[c] ? W->c_fn0[c] + W->c_g[c] * A : 0.0;
         if (st == OFF)
             continue;
         int k = W->c_node[c];
         double tx = W->c_tx[c], ty = W->c_ty[c];
         double nx = p->m->wrap * ty, ny = -p->m->wrap * tx;
-        double f = st == STICKING ? W->c_f[c] : st * p->m->mu_d * fn;
-        double fd = fn - W->c_spring[c];
+        double f = st == STICKING ? W->c_f[c] : st * p->m->mu_d * (fn + W->c_arc[c]);
+        double fd = W->c_press[c] ? fn - W->c_spring[c] : 0.0;
         sim->fx[k] += fn * nx - f * tx;
         sim->fy[k] += fn * ny - f * ty;
         sim->fnx[k] += fd * nx - f * tx;

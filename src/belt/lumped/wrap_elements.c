@@ -53,12 +53,9 @@
 
 #include "base/constants.h"
 
-/* a node within this gap of the shell, a fraction of the element length,
- * can be seated (as the contact's predictive gap, pulley_contact.c) */
-#define SEAT_GAP 0.02
-
 int bd_lumped_geodesic(double cx, double cy, double R, double wrap, double xi, double yi,
-                       double xj, double yj, double *l, double gi[2], double gj[2])
+                       double xj, double yj, double *l, double *lever, double gi[2],
+                       double gj[2])
 {
     double rix = xi - cx, riy = yi - cy, rjx = xj - cx, rjy = yj - cy;
     double ai = sqrt(rix * rix + riy * riy), aj = sqrt(rjx * rjx + rjy * rjy);
@@ -80,6 +77,8 @@ int bd_lumped_geodesic(double cx, double cy, double R, double wrap, double xi, d
     if (!(arc > 0.0))
         return 0;
     *l = Li + Lj + R * arc;
+    if (lever)
+        *lever = (Li + 0.5 * R * arc) / *l;
     double eix = rix / ai, eiy = riy / ai, ejx = rjx / aj, ejy = rjy / aj;
     /* the wrap's tangent: wrap·perp(ê_r), as pulley_contact.c's t̂ */
     double tix = -wrap * eiy, tiy = wrap * eix, tjx = -wrap * ejy, tjy = wrap * ejx;
@@ -90,63 +89,6 @@ int bd_lumped_geodesic(double cx, double cy, double R, double wrap, double xi, d
     gj[0] = crj * ejx + ctj * tjx;
     gj[1] = crj * ejy + ctj * tjy;
     return 1;
-}
-
-/* node k sits on pulley pi: both its elements run round it and it is
- * within the contact gap of the shell */
-static int seated(const bd_sim *sim, int pi, int k)
-{
-    const bd_lumped *L = bd_lumped_of(sim);
-    const int n = sim->model->n, b = k == 0 ? n - 1 : k - 1;
-    if (L->wrap_mark[k] != 1 + pi || L->wrap_mark[b] != 1 + pi)
-        return 0;
-    const bd_pulley_body *p = &sim->pulleys[pi];
-    double a = hypot(sim->x[k] - p->cx, sim->y[k] - p->cy);
-    return a <= p->m->radius + SEAT_GAP * sim->model->l0;
-}
-
-/* The arc's pressure on the nodes. The geodesic puts it on the shell; a
- * lumped belt needs it on its nodes, for their friction and to hold them
- * on the shell against their weight and inertia. A node seated on the
- * shell (both its elements round it) carries the radial part, at itself,
- * of its share: half of an arc between two seated nodes, all of it next
- * to one; the rest stays on the shell. The node that leaves the wrap is not
- * seated once its leaving element is straight, so it leaves from the
- * tangent point and nothing holds it there; one that lands is seated as
- * it passes the tangent point, where its normal speed is 0. Moved from the
- * shell to a node, the force is booked as non-conservative on both. */
-static void seat(bd_sim *sim)
-{
-    bd_lumped *L = bd_lumped_of(sim);
-    const int n = sim->model->n;
-    for (int w = 0; w < L->wrapped_count; w++) {
-        bd_wrapped_element *we = &L->wrapped[w];
-        int e = we->e, j = e + 1 == n ? 0 : e + 1;
-        const bd_pulley_body *p = &sim->pulleys[we->pulley];
-        bd_wrap_contact *W = &L->wraps[we->pulley];
-        int si = seated(sim, we->pulley, e), sj = seated(sim, we->pulley, j);
-        we->pi[0] = we->pi[1] = we->pj[0] = we->pj[1] = 0.0;
-        if (!si && !sj)
-            continue;
-        double share = si && sj ? 0.5 : 1.0;
-        double Px = we->T * (we->gi[0] + we->gj[0]), Py = we->T * (we->gi[1] + we->gj[1]);
-        int nodes[2] = {e, j}, on[2] = {si, sj};
-        double *out[2] = {we->pi, we->pj};
-        for (int q = 0; q < 2; q++) {
-            if (!on[q])
-                continue;
-            int k = nodes[q];
-            double rx = sim->x[k] - p->cx, ry = sim->y[k] - p->cy, a = hypot(rx, ry);
-            double ex = rx / a, ey = ry / a;
-            double fr = share * (Px * ex + Py * ey);
-            out[q][0] = fr * ex;
-            out[q][1] = fr * ey;
-            W->react[0] -= out[q][0];
-            W->react[1] -= out[q][1];
-            W->react_d[0] -= out[q][0];
-            W->react_d[1] -= out[q][1];
-        }
-    }
 }
 
 /* The forces phase, after the chords (forces.c element_pass): every
@@ -179,19 +121,18 @@ void bd_lumped_wrap_elements(bd_sim *sim)
             if (L->wrap_mark[e])
                 continue;
             int j = e + 1 == n ? 0 : e + 1;
-            double len, gi[2], gj[2];
+            double len, lever, gi[2], gj[2];
             if (!bd_lumped_geodesic(p->cx, p->cy, R, wrap, sim->x[e], sim->y[e], sim->x[j],
-                                    sim->y[j], &len, gi, gj))
+                                    sim->y[j], &len, &lever, gi, gj))
                 continue;
             double ldot = gi[0] * (sim->vx[e] - vcx) + gi[1] * (sim->vy[e] - vcy)
                         + gj[0] * (sim->vx[j] - vcx) + gj[1] * (sim->vy[j] - vcy);
             double td = c * ldot, T = k * (len - l0) + td;
             sim->tension[e] = T;
             L->td[e] = td;
-            L->wrap_mark[e] = 1 + pi;
+            L->wrap_mark[e] = 1;
             bd_wrapped_element *we = &L->wrapped[L->wrapped_count++];
             we->e = e;
-            we->pulley = pi;
             memcpy(we->gi, gi, sizeof we->gi);
             memcpy(we->gj, gj, sizeof we->gj);
             we->T = T;
@@ -201,9 +142,15 @@ void bd_lumped_wrap_elements(bd_sim *sim)
             W->react[1] += T * (gi[1] + gj[1]);
             W->react_d[0] += td * (gi[0] + gj[0]);
             W->react_d[1] += td * (gi[1] + gj[1]);
+            /* the arc's pressure, shared by its nodes' friction by the
+             * lever rule about the arc's middle (pulley_contact.c) */
+            if (T > 0.0) {
+                double P = T * hypot(gi[0] + gj[0], gi[1] + gj[1]);
+                L->arc_load[e] += (1.0 - lever) * P;
+                L->arc_load[j] += lever * P;
+            }
         }
     }
-    seat(sim);
 }
 
 /* after the node pass, which pulled the nodes of every element along its
@@ -225,15 +172,6 @@ void bd_lumped_wrap_forces(bd_sim *sim)
         sim->fny[e] -= we->td * (we->gi[1] + uy);
         sim->fnx[j] -= we->td * (we->gj[0] - ux);
         sim->fny[j] -= we->td * (we->gj[1] - uy);
-        /* the arc's pressure its seated nodes carry (seat) */
-        sim->fx[e] += we->pi[0];
-        sim->fy[e] += we->pi[1];
-        sim->fx[j] += we->pj[0];
-        sim->fy[j] += we->pj[1];
-        sim->fnx[e] += we->pi[0];
-        sim->fny[e] += we->pi[1];
-        sim->fnx[j] += we->pj[0];
-        sim->fny[j] += we->pj[1];
         L->wrap_mark[e] = 0;
     }
 }
@@ -257,7 +195,7 @@ double bd_lumped_wrap_elastic_correction(const bd_sim *sim)
             int j = e + 1 == n ? 0 : e + 1;
             double len, gi[2], gj[2];
             if (!bd_lumped_geodesic(p->cx, p->cy, p->m->radius, p->m->wrap, sim->x[e],
-                                    sim->y[e], sim->x[j], sim->y[j], &len, gi, gj))
+                                    sim->y[e], sim->x[j], sim->y[j], &len, NULL, gi, gj))
                 continue;
             /* taken by an earlier pulley? (only where two sectors meet) */
             int taken = 0;
@@ -266,7 +204,7 @@ double bd_lumped_wrap_elastic_correction(const bd_sim *sim)
                 double l2, g1[2], g2[2];
                 taken = (bd_lumped_in_sector(sim, o, e) || bd_lumped_in_sector(sim, o, j))
                      && bd_lumped_geodesic(o->cx, o->cy, o->m->radius, o->m->wrap, sim->x[e],
-                                           sim->y[e], sim->x[j], sim->y[j], &l2, g1, g2);
+                                           sim->y[e], sim->x[j], sim->y[j], &l2, NULL, g1, g2);
             }
             if (taken)
                 continue;
