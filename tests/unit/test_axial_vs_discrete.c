@@ -5,17 +5,16 @@
  * S-curve start to 2 m/s in 4 s, a constant-force takeup at the tail, carry
  * idlers every 1.5 m and return idlers every 3 m with rolling resistance.
  * The two models differ in what the axial one leaves out (sag between
- * idlers, bending over the pulleys, the polygon of chords on each wrap,
+ * idlers, bending over the pulleys, the wrap's friction lumped on nodes,
  * idler spin-up by friction), which the 5% of the issue covers.
  *
- * Both peaks are taken from the signals averaged over 0.2 s. The discrete
- * default element is the chord of a 30° arc, so the belt runs over each
- * pulley as a polygon with a speed ripple of 1 − cos 15° = 3.4% at the
- * chord-passing frequency v/l (≥ 4 Hz above 1 m/s; docs/model-format.md,
- * chordal action), which the speed controller answers with torque spikes
- * of ±40% that are an artefact of the discretization, not of the conveyor;
- * the 0.2 s average (about what a drive's torque display shows) removes
- * them and leaves the start transient (4 s). The raw peaks are printed.
+ * Both peaks are taken from the signals averaged over 0.2 s, about what a
+ * drive's torque display shows; the raw peaks are printed. Until issue 10
+ * the discrete belt ran over each pulley as a polygon of chords, whose
+ * speed ripple at the node-passing frequency the speed controller answered
+ * with torque spikes of ±40 %; its elements now follow the shell
+ * (wrap_elements.c) and the raw peak is 10 % above the averaged one (the
+ * idlers' node passing and the belt's waves).
  * The drive inertia (200 kg·m² at the pulley: motor and gearbox) is a
  * typical one. Speed is not a test: bench/bench_axial_10km.c times both. */
 #include <math.h>

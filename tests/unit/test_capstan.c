@@ -9,10 +9,11 @@
  * with μ_s = μ_d on A, so that no stick–slip cycle mixes in static friction,
  * 3 m apart. Expected ratio e^(0.25·π) = 2.193.
  *
- * Discrete belt: tolerance 5% (issue 2): the chain of 10° chords replaces
- * the arc by a polygon, whose per-node wrap pressure 2·T·sin(Δθ/2) differs
- * from T·Δθ by 0.1%; the rest is the element-level ripple of the slipping
- * contact.
+ * Discrete belt: tolerance 5% (issue 2): the wrap's pressure and friction
+ * are lumped on the nodes of 10° elements by the lever rule
+ * (wrap_elements.c); the rest is the element-level ripple of the slipping
+ * contact (measured −0.09 %; +0.38 % when the wrap was a polygon of
+ * chords).
  * Axial belt (issue 5 acceptance): tolerance 2%. The seed-004 law gives
  * (T_tight − F_C)/(T_slack − F_C) = e^(|μ|θ) with |μ| = f·tanh(4·1 m/s /
  * 1 mm/s) = f and F_C = ρV² = 0 for a belt at rest; the tolerance leaves

@@ -28,8 +28,8 @@
  * Probes sit 3% into each span (the tension there is still the span's, not
  * the wrap's); DIN is interpolated to the same place (its tension grows
  * linearly along a uniform span). Averages over 4 s of steady running after
- * an s-curve start of 4 s and 4 s of settling. The belt is a polygon of
- * 0.1 m elements (4.8° chords on the 0.6 m pulleys: 0.1% chordal ripple). */
+ * an s-curve start of 4 s and 4 s of settling. The belt has 0.1 m elements
+ * (4.8° of the 0.6 m pulleys). */
 #include <math.h>
 #include <stdio.h>
 

@@ -22,7 +22,7 @@
  *    point is iterated to 1e-9 of Te); the sums as cli.md defines them.
  *    The main resistance is that of the C calculation (unchanged).
  * 2. Dynamic (axial and moving-node belts; the lumped belt agrees to 0.2 %
- *    but takes 20 times longer and its issue-10 chordal force is not this
+ *    but takes 20 times longer and its issue-10 idler losses are not this
  *    test's): at steady running (t = 10..14 s after an S-curve start of 4 s)
  *    the drive's force with the resistances one by one less that with
  *    secondary: C — whose run has only the feed point's m'_L·v² = 240 N

@@ -16,9 +16,9 @@
  *    so the mode is damped by c_q = k·τ: a logarithmic decrement of π·ω·τ
  *    per cycle. ζ = 1 (the element critically damped) makes it 0.023,
  *    measurable in nine cycles.
- *    Tolerances: the mean within 1.5 %: the wraps as 7.4° chords add
- *    compliance (measured +0.35 % here; +1.7 % at 15°, +6.0 % at the
- *    default 30° chord, which is why this model sets element_length);
+ *    Tolerances: the mean within 1.5 % (measured −0.2 %; when the wraps
+ *    were chords they added compliance, +0.35 % here at 7.4° and +6.0 %
+ *    at the default 30°, which is why this model sets element_length);
  *    ω within 1.5 % of the Rayleigh estimate (measured 0.34 %), the
  *    decrement within 5 % (measured 0.02253 against 0.02253).
  * 2. The issue's runaway: a 10 kg carriage under massless frictionless

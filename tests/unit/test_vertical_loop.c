@@ -26,7 +26,7 @@
  *
  * All three run with the discrete belt and again with the axial belt
  * (issue 5), with the same tolerances: the axial belt's 1 m elements are
- * finer than the discrete 2.6 m chords, and its pulleys carry the wrap's
+ * finer than the discrete 2.6 m elements, and its pulleys carry the wrap's
  * weight on the takeup axis, so the closed forms hold for it too. */
 #include <math.h>
 #include <stdio.h>

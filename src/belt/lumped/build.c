@@ -14,14 +14,6 @@
 #include "base/constants.h"
 #include "laws/stable_step.h"
 
-/* the arc angle, rad, of which an element of length l is the chord on a
- * pulley of radius R (l = 2R·sin(θ/2)); π for an element longer than the
- * diameter */
-static double chord_angle(double l, double R)
-{
-    return l >= 2.0 * R ? BD_PI : 2.0 * asin(0.5 * l / R);
-}
-
 /* default target element length: chord of a 30° arc of the smallest pulley
  * (seed 001 §4.3.1, §6.1) */
 static double default_element_length(const bd_model_def *def)
@@ -206,30 +198,32 @@ int bd_lumped_build(bd_sim *sim, bd_diag *diag)
     LM->k_bend = sim->model->EI / sim->model->l0;
     /* contacts: stiff and linearly implicit (pulley_contact.c, idler_contact.c) */
     LM->k_contact = 100.0 * LM->k_axial;
-    /* chordal action: an element, a chord l0 = 2R·sin(θ/2) of the wrap's arc
-     * θ (the default element's rule, model-format.md), makes the belt run
-     * over the pulley as a polygon: its nodes sit on R, its chords' middles
-     * at R·cos(θ/2), a speed ripple of 1 − cos(θ/2) (plane geometry) and
-     * losses at the wrap the model does not declare (measured, issue 10 and
-     * docs/physics.md §10: 2.6 % of the belt tension at 28°, 0.7 % at 14°,
-     * 0.06 % at 7° on a 5 m/s frictionless loop) */
-    int coarse = 0, worst = 0;
-    for (int i = 0; i < def->pulley_count; i++) {
-        if (chord_angle(sim->model->l0, def->pulleys[i].radius) > BD_CHORD_WARN_DEG * BD_DEG)
-            coarse++;
+    /* the arc an element spans on the smallest pulley: the element takes
+     * the belt's length round the shell (wrap_elements.c), so there is no
+     * chordal action (docs/physics.md §4: 0.06 % of the tension at the
+     * default 30°, against 2.1 % as chords), but the wrap's pressure and
+     * friction sit on its nodes, and the geodesic follows a pulley for less
+     * than half a turn per element */
+    int worst = 0;
+    for (int i = 0; i < def->pulley_count; i++)
         if (def->pulleys[i].radius < def->pulleys[worst].radius)
             worst = i;
+    double R = def->pulleys[worst].radius, span = sim->model->l0 / R;
+    if (span >= BD_PI) {
+        bd_diag_error(diag, def->source, def->belt.mark,
+                      "belt.element_length: an element of %.3g m is longer than half the "
+                      "circumference of pulley '%s' (radius %.3g m) and cannot follow it; "
+                      "use less than %.3g m (the default is %.3g m, 30° of it)",
+                      sim->model->l0, def->pulleys[worst].name, R, BD_PI * R,
+                      default_element_length(def));
+        return 1;
     }
-    if (coarse > 0) {
-        double R = def->pulleys[worst].radius;
-        bd_sim_warn(sim, "a belt element spans %.0f° of the wrap on pulley '%s' (element length "
-                    "%.3g m, radius %.3g m; %d pulley%s above %.0f°): the chordal action adds "
-                    "speed ripple and drive force the model does not declare; "
-                    "belt.element_length %.3g m gives %.0f°",
-                    chord_angle(sim->model->l0, R) / BD_DEG, def->pulleys[worst].name,
-                    sim->model->l0, R, coarse, coarse > 1 ? "s" : "", BD_CHORD_WARN_DEG,
-                    2.0 * R * sin(0.5 * BD_CHORD_WARN_DEG * BD_DEG), BD_CHORD_WARN_DEG);
-    }
+    if (span > BD_WRAP_WARN_DEG * BD_DEG)
+        bd_sim_warn(sim, "a belt element spans %.0f° of pulley '%s' (element length %.3g m, "
+                    "radius %.3g m): the wrap's pressure and friction are carried by few "
+                    "nodes; belt.element_length %.3g m gives 30°",
+                    span / BD_DEG, def->pulleys[worst].name, sim->model->l0, R,
+                    default_element_length(def));
 
     bd_node_arrays_alloc(sim);
     size_t n = (size_t)sim->model->n;

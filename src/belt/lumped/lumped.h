@@ -24,8 +24,9 @@ typedef struct bd_lumped_model {
     bd_wrap_sector *sectors;   /* [pulley_count] */
 } bd_lumped_model;
 
-/* the wrap chord angle above which the build warns (build.c) */
-#define BD_CHORD_WARN_DEG 15.0
+/* the arc of a pulley one element may span before the build warns
+ * (build.c) */
+#define BD_WRAP_WARN_DEG 60.0
 
 /* the contact of the belt with one pulley's shell (pulley_contact.c) */
 typedef struct bd_wrap_contact {

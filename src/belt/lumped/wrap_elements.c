@@ -18,34 +18,35 @@
  * its tangent to the circle, round the arc in the sense the belt wraps,
  * and along the tangent to node j (a node on or in the shell starts or
  * ends the arc at its own angle):
- *   l = L_i + L_j + ρ·Δ,   Δ = Δψ_ij − β_i − β_j > 0,
+ *   l = L_i + L_j + R·Δ,   Δ = Δψ_ij − β_i − β_j > 0,
  *   L_k = √(a_k² − R²),  β_k = acos(R/a_k)   (node k off the shell, a_k > R),
- *   L_k = β_k = 0, d_k = a_k − R              (node k in the shell),
- *   ρ = R + (d_i + d_j)/2,
+ *   L_k = β_k = 0                             (node k on or in the shell),
  * with a_k the node's distance from the centre and Δψ_ij the angle from i
- * to j in the wrap's sense. The term (d_i + d_j)/2·Δ gives a node in the
- * shell its share of the arc's pressure, T·Δ/2 from each element, as the
- * polygon's kink did: friction needs it on the nodes. Where Δ reaches 0
- * the path is the straight chord, touching the circle once: l and its
- * gradient are continuous there. The tension T = k·(l − l0) + c·dl/dt acts
- * on the nodes along −∂l/∂x_i and −∂l/∂x_j: a node on a tangent is pulled
- * along it (it lands tangentially, no impact), a node on the shell along
- * the shell. The rest, T·(∂l/∂x_i + ∂l/∂x_j) = −T·∂l/∂c, presses on the
- * shell (a takeup carriage feels it). ½k(l − l0)² is the elastic energy,
- * so the forces are conservative (dashpot apart).
+ * to j in the wrap's sense. Where Δ reaches 0 the path is the straight
+ * chord touching the circle once: l and its gradient are continuous there.
+ * The tension T = k·(l − l0) + c·dl/dt acts on the nodes along −∂l/∂x_i
+ * and −∂l/∂x_j, with ê_r,k radial and ê_t,k the wrap's tangent at node k,
+ *   ∂l/∂x_j = (L_j·ê_r,j + R·ê_t,j)/a_j,   ∂l/∂x_i = (L_i·ê_r,i − R·ê_t,i)/a_i,
+ * the tangent lines' unit vectors off the shell, the shell's tangent on
+ * it: a node on a tangent is pulled along it (it lands tangentially, no
+ * impact) and leaves from the tangent point. The arc's pressure,
+ * T·(∂l/∂x_i + ∂l/∂x_j) = −T·∂l/∂c, acts on the shell (a takeup carriage
+ * feels it). ½k(l − l0)² is the elastic energy, so these forces are
+ * conservative (the dashpot apart).
  *
- * The gradients (ê_r,k radial, ê_t,k the wrap's tangent at node k):
- *   ∂l/∂x_j = (a_j² − ρR)/(a_j·L_j)·ê_r,j + (ρ/a_j)·ê_t,j   (off the shell)
- *           = (Δ/2)·ê_r,j + (ρ/a_j)·ê_t,j                   (in the shell)
- *   ∂l/∂x_i = (a_i² − ρR)/(a_i·L_i)·ê_r,i − (ρ/a_i)·ê_t,i   (off)
- *           = (Δ/2)·ê_r,i − (ρ/a_i)·ê_t,i                   (in)
- * For ρ = R the off-shell ones are the tangent lines' unit vectors. While
- * one node is in the shell ρ < R by micrometres, and the first form grows
- * as 1/L_j in the last nanometres before node j lands; L is floored there
- * (GEODESIC_L_FLOOR), which moves the energy by picojoules.
+ * The friction on the arc is lumped on the element's nodes by the lever
+ * rule: the arc's pressure P = |T·(∂l/∂x_i + ∂l/∂x_j)| acts at its middle,
+ * L_i + R·Δ/2 along the element from node i, and each node's friction may
+ * reach μ times its share (pulley_contact.c adds it to the node's normal
+ * force from the shell, which now carries only its weight and inertia).
+ * Moving the pressure itself onto the nodes was tried and dropped: a node
+ * pushed onto the shell by its share of the arc behind it rides half an
+ * element past the tangent point, the polygon's fault again, and the
+ * force it moves does work (a frictionless loop "dissipated" −17 J of a
+ * 2.8 kJ swing).
  *
  * Derived here (plane geometry of a string wrapped on a circle); the
- * lumped belt it changes is seed 001 §4.1, §4.3.1; docs/physics.md §10. */
+ * lumped belt it changes is seed 001 §4.1, §4.3.1; docs/physics.md §4. */
 #include "belt/lumped/lumped.h"
 
 #include <math.h>
