@@ -108,10 +108,7 @@ void bd_lumped_integrate(bd_sim *sim, double *ke, double *w_nc);
 double bd_lumped_elastic_energy(const bd_sim *sim);
 double bd_lumped_potential(const bd_sim *sim);
 
-/* wrap_elements.c: the length of an element that runs round a pulley */
-int bd_lumped_geodesic(double cx, double cy, double R, double wrap, double xi, double yi,
-                       double xj, double yj, double *l, double *lever, double gi[2],
-                       double gj[2]);
+/* wrap_elements.c: elements that run round a pulley */
 void bd_lumped_wrap_elements(bd_sim *sim);
 void bd_lumped_wrap_forces(bd_sim *sim);
 double bd_lumped_wrap_elastic_correction(const bd_sim *sim);

@@ -27,7 +27,11 @@
  *   f_i = m_i·(v_r,i/Δt − R·α) + t̂·F_i   for sticking nodes S,
  * with M = Σ_S m_i and F_k = Σ of the dynamic forces of slipping nodes.
  * A node whose |f_i| exceeds μ_s·f_n slips with f_i = ±μ_d·f_n (4.93–4.94)
- * and the sticking set is solved again. α is the pulley's angular
+ * and the sticking set is solved again. Since issue 10 the belt's tension
+ * presses on the shell through the elements round it (wrap_elements.c),
+ * whose arcs' pressure each node's friction carries its lever-rule share
+ * of: the friction limit is μ·(f_n + that share), and a node off the shell
+ * with a share takes part in the solve with f_n = 0. α is the pulley's angular
  * acceleration (I·α = R·Σf + T_p); it is exact for I → 0 too. A takeup
  * pulley's carriage is a second unknown, solved with α (solve() below;
  * 4.84 neglects the pulley's translation). */
@@ -190,10 +194,9 @@ static void gather(bd_sim *sim, bd_pulley_body *p, int moving)
     W->contact_count = 0;
     /* the sector's run, found in the forces phase (wrap_elements.c) */
     const int first = W->run_first, count = W->run_count;
+    /* the run's shares of the wrapped arcs' pressure (wrap_elements.c),
+     * read and cleared */
     double *arc_load = bd_lumped_of(sim)->arc_load;
-    /* the node before the run may hold a share of an arc's pressure
-     * (wrap_elements.c); it is not the run's: clear it */
-    arc_load[first == 0 ? n - 1 : first - 1] = 0.0;
     for (int w = 0, k = first; w < count; w++, k = k + 1 == n ? 0 : k + 1) {
         double arc = arc_load[k];
         arc_load[k] = 0.0;

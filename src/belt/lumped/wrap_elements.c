@@ -54,9 +54,12 @@
 
 #include "base/constants.h"
 
-int bd_lumped_geodesic(double cx, double cy, double R, double wrap, double xi, double yi,
-                       double xj, double yj, double *l, double *lever, double gi[2],
-                       double gj[2])
+/* the belt's length between nodes i and j round pulley (c, R) turning
+ * the `wrap` way (±1): 1 and l, the lever (the arc's middle along the
+ * element from i, a fraction of l; NULL: not wanted) and the gradients
+ * ∂l/∂x_i, ∂l/∂x_j when the element runs round it, else 0 */
+static int geodesic(double cx, double cy, double R, double wrap, double xi, double yi,
+                    double xj, double yj, double *l, double *lever, double gi[2], double gj[2])
 {
     double rix = xi - cx, riy = yi - cy, rjx = xj - cx, rjy = yj - cy;
     double ai = sqrt(rix * rix + riy * riy), aj = sqrt(rjx * rjx + rjy * rjy);
@@ -123,7 +126,7 @@ void bd_lumped_wrap_elements(bd_sim *sim)
                 continue;
             int j = e + 1 == n ? 0 : e + 1;
             double len, lever, gi[2], gj[2];
-            if (!bd_lumped_geodesic(p->cx, p->cy, R, wrap, sim->x[e], sim->y[e], sim->x[j],
+            if (!geodesic(p->cx, p->cy, R, wrap, sim->x[e], sim->y[e], sim->x[j],
                                     sim->y[j], &len, &lever, gi, gj))
                 continue;
             double ldot = gi[0] * (sim->vx[e] - vcx) + gi[1] * (sim->vy[e] - vcy)
@@ -145,10 +148,13 @@ void bd_lumped_wrap_elements(bd_sim *sim)
             W->react_d[1] += td * (gi[1] + gj[1]);
             /* the arc's pressure, shared by its nodes' friction by the
              * lever rule about the arc's middle (pulley_contact.c) */
+            /* (to the run's nodes only: its contact reads and clears them) */
             if (T > 0.0) {
                 double P = T * hypot(gi[0] + gj[0], gi[1] + gj[1]);
-                L->arc_load[e] += (1.0 - lever) * P;
-                L->arc_load[j] += lever * P;
+                if (w > 0)
+                    L->arc_load[e] += (1.0 - lever) * P;
+                if (w < count)
+                    L->arc_load[j] += lever * P;
             }
         }
     }
@@ -195,7 +201,7 @@ double bd_lumped_wrap_elastic_correction(const bd_sim *sim)
         for (int w = 0; w <= count; w++, e = e + 1 == n ? 0 : e + 1) {
             int j = e + 1 == n ? 0 : e + 1;
             double len, gi[2], gj[2];
-            if (!bd_lumped_geodesic(p->cx, p->cy, p->m->radius, p->m->wrap, sim->x[e],
+            if (!geodesic(p->cx, p->cy, p->m->radius, p->m->wrap, sim->x[e],
                                     sim->y[e], sim->x[j], sim->y[j], &len, NULL, gi, gj))
                 continue;
             /* taken by an earlier pulley? (only where two sectors meet) */
@@ -204,7 +210,7 @@ double bd_lumped_wrap_elastic_correction(const bd_sim *sim)
                 const bd_pulley_body *o = &sim->pulleys[q];
                 double l2, g1[2], g2[2];
                 taken = (bd_lumped_in_sector(sim, o, e) || bd_lumped_in_sector(sim, o, j))
-                     && bd_lumped_geodesic(o->cx, o->cy, o->m->radius, o->m->wrap, sim->x[e],
+                     && geodesic(o->cx, o->cy, o->m->radius, o->m->wrap, sim->x[e],
                                            sim->y[e], sim->x[j], sim->y[j], &l2, NULL, g1, g2);
             }
             if (taken)
