@@ -209,9 +209,9 @@ double bd_lumped_elastic_energy(const bd_sim *sim)
 /* gravity of belt and material (y = 0 the datum) and the elastic energy */
 double bd_lumped_potential(const bd_sim *sim)
 {
-    double g = sim->model->gravity;
+    double g = sim->model->gravity, yd = bd_lumped_material_datum(sim);
     double e = 0.0;
     for (int i = 0; i < sim->model->n; i++)
-        e += sim->mass[i] * g * sim->y[i];
+        e += sim->mass[i] * g * sim->y[i] - sim->material[i] * g * yd;
     return e + bd_lumped_elastic_energy(sim);
 }

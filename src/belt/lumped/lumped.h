@@ -93,6 +93,18 @@ static inline const bd_lumped_model *bd_lumped_model_of(const bd_sim *sim)
     return (const bd_lumped_model *)sim->model->belt_model;
 }
 
+/* m, the height the material's weight is measured from: the discharge
+ * pulley's centre as laid. Material lands at the feed with the potential
+ * m·g·(y − y_d), booked as input, and leaves the belt at the discharge
+ * with about none, so its weight's work on the belt between feed and
+ * discharge is all the input it brings and the dissipated energy only
+ * grows (docs/physics.md §9) */
+static inline double bd_lumped_material_datum(const bd_sim *sim)
+{
+    return sim->model->material_mpl > 0.0
+               ? sim->pulleys[sim->model->discharge_pulley].m->y0 : 0.0;
+}
+
 /* build.c */
 int bd_lumped_build(bd_sim *sim, bd_diag *diag);
 void bd_lumped_free(bd_sim *sim);
