@@ -360,18 +360,6 @@ static void show_study_progress(const bd_study_progress *p, void *ctx)
     progress_open = 1;
 }
 
-/* DIR/report.html comparing the load cases, with each case's own report
- * (bd_report_write on a cases directory); a report that cannot be
- * written is said, the run's status stands */
-static void write_cases_report(const char *dir)
-{
-    char err[1024];
-    if (bd_report_write(dir, err, sizeof err) != BD_REPORT_OK)
-        fprintf(stderr, "beltdyn: report of %s: %s\n", dir, err);
-    else
-        printf("report: %s/report.html\n", dir);
-}
-
 /* `study`, or `cases` (cases = 1): the five standard load cases, then
  * their reports and the one comparing them */
 static int cmd_study(int argc, char **argv, int cases)
@@ -506,8 +494,6 @@ static int cmd_study(int argc, char **argv, int cases)
     int rc = bd_study_run(&o, stdout, err, sizeof err);
     if (rc != BD_RUN_OK && err[0])
         fprintf(stderr, "beltdyn: %s%s\n", rc == BD_RUN_FAILED ? "error: " : "", err);
-    if (cases && (rc == BD_RUN_OK || rc == BD_RUN_FAILED))
-        write_cases_report(o.out_dir);
     return rc;
 }
 

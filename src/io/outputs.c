@@ -80,6 +80,20 @@ static void drop_parts(bd_outputs *o)
         }
 }
 
+/* a header's pulley columns: two per drive, then one per takeup (the
+ * order history.csv and parts.csv write their cells in) */
+static void pulley_columns(FILE *f, const bd_model_def *def, int count, const char *drive_a,
+                           const char *drive_b, const char *takeup)
+{
+    for (int i = 0; i < count; i++)
+        if (def->pulleys[i].has_drive)
+            fprintf(f, ",%s.%s,%s.%s", def->pulleys[i].name, drive_a, def->pulleys[i].name,
+                    drive_b);
+    for (int i = 0; i < count; i++)
+        if (def->pulleys[i].has_takeup)
+            fprintf(f, ",%s.%s", def->pulleys[i].name, takeup);
+}
+
 int bd_outputs_open(bd_outputs *o, const bd_sim *sim, const char *dir, int hdf5, char *err,
                     size_t errlen)
 {
@@ -93,6 +107,17 @@ int bd_outputs_open(bd_outputs *o, const bd_sim *sim, const char *dir, int hdf5,
     }
     if (make_dir(dir, err, errlen))
         return 1;
+    /* the envelope's bins, before any file is opened */
+    o->bins = sim->model->n;
+    o->env_max = malloc((size_t)o->bins * sizeof *o->env_max);
+    o->env_min = malloc((size_t)o->bins * sizeof *o->env_min);
+    if (!o->env_max || !o->env_min) {
+        free(o->env_max);
+        free(o->env_min);
+        o->env_max = o->env_min = NULL;
+        snprintf(err, errlen, "out of memory for the tension envelope (%d bins)", o->bins);
+        return 1;
+    }
     const bd_model_def *def = sim->model->def;
     int parts = 0;
     for (int i = 0; i < sim->model->pulley_count; i++)
@@ -124,9 +149,6 @@ int bd_outputs_open(bd_outputs *o, const bd_sim *sim, const char *dir, int hdf5,
         setvbuf(o->history, o->history_buf, _IOFBF, 1 << 16);
     if (o->tension_buf)
         setvbuf(o->tension, o->tension_buf, _IOFBF, 1 << 20);
-    o->bins = sim->model->n;
-    o->env_max = malloc((size_t)o->bins * sizeof *o->env_max);
-    o->env_min = malloc((size_t)o->bins * sizeof *o->env_min);
     bd_outputs_records_restart(o, 0.0);
     /* tension.csv's spacing: every k-th element, k the spacing over the
      * mean element length (at least 1) */
@@ -137,24 +159,13 @@ int bd_outputs_open(bd_outputs *o, const bd_sim *sim, const char *dir, int hdf5,
     for (int i = 0; i < sim->model->probe_count; i++)
         fprintf(o->history, ",%s.tension_N,%s.speed_mps", def->simulation.probes[i].name,
                 def->simulation.probes[i].name);
-    for (int i = 0; i < sim->model->pulley_count; i++)
-        if (def->pulleys[i].has_drive)
-            fprintf(o->history, ",%s.omega_rad_s,%s.torque_Nm", def->pulleys[i].name,
-                    def->pulleys[i].name);
-    for (int i = 0; i < sim->model->pulley_count; i++)
-        if (def->pulleys[i].has_takeup)
-            fprintf(o->history, ",%s.travel_m", def->pulleys[i].name);
+    pulley_columns(o->history, def, sim->model->pulley_count, "omega_rad_s", "torque_Nm",
+                   "travel_m");
     fprintf(o->history, ",kinetic_J,potential_J,dissipated_J,input_J\n");
     fprintf(o->tension, "t_s,s_m,x_m,y_m,tension_N,speed_mps\n");
     if (o->parts) {
         fprintf(o->parts, "t_s");
-        for (int i = 0; i < sim->model->pulley_count; i++)
-            if (def->pulleys[i].has_drive)
-                fprintf(o->parts, ",%s.tight_N,%s.slack_N", def->pulleys[i].name,
-                        def->pulleys[i].name);
-        for (int i = 0; i < sim->model->pulley_count; i++)
-            if (def->pulleys[i].has_takeup)
-                fprintf(o->parts, ",%s.pull_N", def->pulleys[i].name);
+        pulley_columns(o->parts, def, sim->model->pulley_count, "tight_N", "slack_N", "pull_N");
         fputc('\n', o->parts);
     }
     return 0;
@@ -352,7 +363,7 @@ static int add_static(cJSON *root, cJSON *warnings, const bd_sim *sim)
 void bd_outputs_records_restart(bd_outputs *o, double t)
 {
     o->records_from = t;
-    for (int i = 0; o->env_max && o->env_min && i < o->bins; i++) {
+    for (int i = 0; i < o->bins; i++) {
         o->env_max[i] = -INFINITY;
         o->env_min[i] = INFINITY;
     }

@@ -349,18 +349,8 @@ static void html_cases(const sweep *s, bd_strbuf *b)
         bd_sb_puts(b, "</td>");
         for (int k = 0; k < s->nkeys; k++)
             bd_sb_printf(b, "<td class=n>%.6g</td>", jnum(c, s->key[k]));
-        for (int i = 0; i < nc; i++) {
-            const cJSON *v = cJSON_GetObjectItemCaseSensitive(c, cols[i]);
-            if (cJSON_IsNumber(v))
-                bd_sb_printf(b, "<td class=n>%.4g</td>", v->valuedouble);
-            else if (cJSON_IsBool(v))
-                bd_sb_puts(b, cJSON_IsTrue(v) ? "<td>yes</td>" : "<td>no</td>");
-            else {
-                bd_sb_puts(b, "<td>");
-                bd_sb_html(b, cJSON_IsString(v) ? v->valuestring : "—");
-                bd_sb_puts(b, "</td>");
-            }
-        }
+        for (int i = 0; i < nc; i++)
+            bd_sb_json_cell(b, cJSON_GetObjectItemCaseSensitive(c, cols[i]));
         bd_sb_puts(b, "</tr>\n");
     }
     bd_sb_puts(b, "</table>\n");

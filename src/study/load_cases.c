@@ -43,6 +43,14 @@ static const char *const case_names[BD_LOAD_CASES] = {
     "empty_start", "loaded_start", "loaded_coast_stop", "loaded_brake_stop",
     "partial_load_start"};
 
+/* s, the rigid belt's stopping time from speed v, mass M under a
+ * retarding force F: v·M/F (Newton); 60 s when nothing retards it (a
+ * resistance-free model: the case then still ends) */
+static double stop_time(double v, double M, double F)
+{
+    return F > 0.0 ? v * M / F : 60.0;
+}
+
 /* when the conveyor runs steadily after its start (see above) */
 static double steady_time(const bd_model_def *def)
 {
@@ -150,7 +158,7 @@ int bd_load_cases_make(bd_study *s, double **cost, char *err, size_t errlen)
     double v = r.speed_mps > 0.0 ? r.speed_mps : 1.0;
     double M = moving_mass(m, &r, path.length);
     double Fu = fabs(r.effective_tension_N);
-    double t_coast = Fu > 0.0 ? v * M / Fu : 60.0;
+    double t_coast = stop_time(v, M, Fu);
 
     for (int j = 0; j < s->n; j++) {
         bd_study_case *c = &s->cases[j];
@@ -207,7 +215,7 @@ int bd_load_cases_make(bd_study *s, double **cost, char *err, size_t errlen)
                 if (p->radius > 0.0)
                     brake_total += dr->brake_torque / p->radius;
             }
-            double t_window = j == 2 ? t_coast : v * M / (Fu + brake_total);
+            double t_window = j == 2 ? t_coast : stop_time(v, M, Fu + brake_total);
             c->duration = t_stop + STOP_MARGIN * t_window + STOP_EXTRA;
             c->records_from = t_stop;
             if (j == 2)

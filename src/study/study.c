@@ -20,6 +20,7 @@
  * Each case's result is written by its worker to DIR/<case>/case.json
  * (record.c) when the case has finished; --resume keeps those. */
 #include "beltdyn/study.h"
+#include "beltdyn/report.h"
 
 #include <errno.h>
 #include <math.h>
@@ -600,6 +601,22 @@ static void on_progress(const bd_runner_progress *p, void *ctx)
     R->progress_shown = !p->finished;
 }
 
+/* `cases`: DIR/report.html comparing the load cases, with each case's own
+ * report, written by the process that gathered them (rank 0: every rank
+ * writing it raced on the same files under mpirun). A report that cannot
+ * be written is said; the run's status stands */
+static void cases_report(study_run *R)
+{
+    const bd_study_options *o = R->s.opt;
+    char err[1024], line[1200];
+    if (bd_report_write(o->out_dir, err, sizeof err) != BD_REPORT_OK)
+        snprintf(line, sizeof line, "report of %s: %s", o->out_dir, err);
+    else
+        snprintf(line, sizeof line, "report: %s/report.html", o->out_dir);
+    if (o->message)
+        o->message(line, o->message_ctx);
+}
+
 static int finish(study_run *R, int runner_status, char *err, size_t errlen)
 {
     bd_study *s = &R->s;
@@ -731,8 +748,11 @@ int bd_study_run(const bd_study_options *opt, FILE *table, char *err, size_t err
         r.interrupted = opt->interrupted;
         char rerr[512];
         int rs = bd_runner_run(&r, rerr, sizeof rerr);
-        if (ok && R->gathers)
+        if (ok && R->gathers) {
             status = finish(R, rs, err, errlen);
+            if (R->s.kind == BD_STUDY_CASES && (status == BD_RUN_OK || status == BD_RUN_FAILED))
+                cases_report(R);
+        }
         else if (ok && rs == BD_RUN_FAILED) {
             snprintf(err, errlen, "%s", rerr);
             status = rs;
