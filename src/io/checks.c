@@ -86,10 +86,12 @@ int bd_run_checks(const bd_sim *sim, const bd_static_result *st, bd_check *out, 
             add(out, &n, max, name, "s", p->mon.slip_longest, BD_SLIP_TIME, BD_CHECK_BELOW);
         }
         const bd_part *dp = bd_pulley_drive_part(sim, p);
-        if (dp && dp->type == BD_PART_DRIVE && isfinite(pd->drive.max_torque)) {
-            /* the drive's torque is clipped to max_torque: at it, saturated */
+        const bd_drive *dr = dp ? bd_part_drive(dp) : NULL;
+        if (dr && isfinite(pd->drive.max_torque)) {
+            /* the drive's torque is clipped to max_torque: at it, saturated
+             * (behind a transmission, its equivalent at the pulley) */
             snprintf(name, sizeof name, "drive torque, %s", pd->name);
-            add(out, &n, max, name, "N·m", dp->u.drive.driving_peak, pd->drive.max_torque,
+            add(out, &n, max, name, "N·m", dr->driving_peak, pd->drive.max_torque,
                 BD_CHECK_BELOW);
         }
         if (pd->has_takeup && p->m->movable) {

@@ -40,13 +40,6 @@ void bd_res_wrap_coeffs(int steel_cord, double B, double d, double D, double *a,
     *b = k * 0.01 * d / D;
 }
 
-double bd_res_wrap(int steel_cord, double B, double F, double d, double D)
-{
-    double a, b;
-    bd_res_wrap_coeffs(steel_cord, B, d, D, &a, &b);
-    return a + b * (F > 0.0 ? F : 0.0);
-}
-
 double bd_res_bearing(double d0, double D, double FT)
 {
     if (D <= 0.0)

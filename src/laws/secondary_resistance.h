@@ -32,9 +32,8 @@ double bd_res_cleaners(double count, double width, double thickness, double pres
 /* wrap (bending) resistance of the belt over a pulley (ISO 5048 Table 3):
  * fabric carcass 9·B·(140 + 0.01·F/B)·d/D, steel cord 12·B·(200 + 0.01·F/B)·d/D,
  * B belt width (m), F the mean belt tension on the pulley (N), d belt
- * thickness (m), D pulley diameter (m) */
-double bd_res_wrap(int steel_cord, double B, double F, double d, double D);
-/* the same as F_l = a + b·F: a = 9·140·B·d/D, b = 0.09·d/D (fabric), or
+ * thickness (m), D pulley diameter (m); as F_l = a + b·F (the run takes F
+ * as it changes): a = 9·140·B·d/D, b = 0.09·d/D (fabric), or
  * a = 12·200·B·d/D, b = 0.12·d/D (steel cord) */
 void bd_res_wrap_coeffs(int steel_cord, double B, double d, double D, double *a, double *b);
 

@@ -1148,17 +1148,11 @@ static void bearings_fn(ctx *c, const field *f, yaml_node_t *v, bd_mark key, con
     }
     for (yaml_node_pair_t *p = v->data.mapping.pairs.start; p < v->data.mapping.pairs.top; p++) {
         yaml_node_t *k = node_at(c, p->key);
-        if (!is_scalar(k)) {
-            type_error(c, k, path, "a pulley name");
+        int i = -1;
+        span_index(c, k, path, &i);   /* the key names a pulley, as a span does */
+        if (i < 0)
             continue;
-        }
         join(sub, path, text_of(k));
-        int i = bd_model_find_pulley(c->m, text_of(k));
-        if (i < 0) {
-            if (c->m->pulley_count > 0)
-                err(c, mark_of(k), path, "unknown pulley '%.60s'", text_of(k));
-            continue;
-        }
         for (int j = 0; j < d->bearing_count; j++)
             if (d->bearings[j].pulley == i)
                 err(c, mark_of(k), path, "duplicate pulley '%.60s'", text_of(k));

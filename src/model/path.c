@@ -119,7 +119,7 @@ static int span_corners(const bd_model_def *m, int i, const double p0[2], const 
         if (c >= 2.0 * R) {
             bd_diag_error(diag, m->source, st->curve_mark,
                           "curve: a radius of %.4g m cannot bend the %.4g m between from and to "
-                          "(it needs at least %.4g m)", R, c, 0.5 * c);
+                          "(it needs more than %.4g m)", R, c, 0.5 * c);
             bad = 1;
             continue;
         }

@@ -110,6 +110,12 @@ int bd_drive_stopped(const bd_drive *dr, double t)
     return dr->def->stop_mode != BD_STOP_NONE && t >= dr->def->stop_at;
 }
 
+void bd_drive_note_torque(bd_drive *dr, double t, double torque)
+{
+    if (!bd_drive_stopped(dr, t) && fabs(torque) > dr->driving_peak)
+        dr->driving_peak = fabs(torque);
+}
+
 double bd_drive_torque(const bd_sim *sim, bd_drive *dr, const bd_pulley_body *p, double omega,
                        double *slope)
 {

@@ -88,11 +88,12 @@ bd_part *bd_pulley_drive_part(const bd_sim *sim, const bd_pulley_body *p)
     return NULL;
 }
 
-bd_drive *bd_part_drive(bd_part *part)
+bd_drive *bd_part_drive(const bd_part *part)
 {
-    switch (part->type) {
-    case BD_PART_DRIVE: return &part->u.drive;
-    case BD_PART_TRANSMISSION: return &part->u.transmission.drive;
+    bd_part *p = (bd_part *)part;
+    switch (p->type) {
+    case BD_PART_DRIVE: return &p->u.drive;
+    case BD_PART_TRANSMISSION: return &p->u.transmission.drive;
     case BD_PART_TAKEUP: break;
     }
     return NULL;
@@ -124,10 +125,8 @@ void bd_part_advance(bd_sim *sim, bd_part *part, double omega_old, double w_mid,
     bd_energy *en = &sim->energy;
     switch (part->type) {
     case BD_PART_DRIVE: {
-        bd_drive *dr = &part->u.drive;
         en->input += p->drive_torque * w_mid * sim->model->dt;
-        if (!bd_drive_stopped(dr, sim->t) && fabs(p->drive_torque) > dr->driving_peak)
-            dr->driving_peak = fabs(p->drive_torque);
+        bd_drive_note_torque(&part->u.drive, sim->t, p->drive_torque);
         break;
     }
     case BD_PART_TRANSMISSION:
@@ -205,16 +204,16 @@ void bd_part_report_events(bd_sim *sim, const bd_part *part)
                         tk->limit_first_t, tk->limit_hits > 1 ? " and again later" : "");
         break;
     }
-    case BD_PART_DRIVE: {
+    case BD_PART_DRIVE:
+    case BD_PART_TRANSMISSION: {
         /* the speed loop's torque is clipped to max_torque: at it exactly,
          * the drive was saturated */
-        const bd_drive *dr = &part->u.drive;
+        const bd_drive *dr = bd_part_drive(part);
         if (dr->driving_peak >= dr->def->max_torque)
             bd_sim_warn(sim, "drive '%s' reached its torque limit, %.4g N·m (drive.max_torque): "
                         "the belt needed more than it can give",
                         sim->pulleys[part->pulley].m->def->name, dr->def->max_torque);
         break;
     }
-    case BD_PART_TRANSMISSION: break;
     }
 }

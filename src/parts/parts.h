@@ -61,7 +61,9 @@ void bd_parts_free(bd_sim *sim);
 void bd_parts_clone(bd_sim *dst, const bd_sim *src);
 /* the drive (or transmission) part of pulley p, or NULL */
 bd_part *bd_pulley_drive_part(const bd_sim *sim, const bd_pulley_body *p);
-bd_drive *bd_part_drive(bd_part *part);
+/* the drive's controller of a drive or transmission part, else NULL (as
+ * strchr, a const part gives a pointer the caller keeps const) */
+bd_drive *bd_part_drive(const bd_part *part);
 /* phases, one switch each */
 double bd_part_torque(bd_sim *sim, bd_part *part, double *slope);
 void bd_part_advance(bd_sim *sim, bd_part *part, double omega_old, double w_mid, double *ke,
@@ -122,6 +124,9 @@ double bd_drive_torque(const bd_sim *sim, bd_drive *d, const bd_pulley_body *p, 
 void bd_drive_take_over(bd_drive *d, double torque);
 /* 1: the drive has been stopped (its stop mode acts) at time t */
 int bd_drive_stopped(const bd_drive *d, double t);
+/* the drive applied torque (N·m at the pulley, or its equivalent behind a
+ * transmission) at time t: kept in driving_peak while it drives */
+void bd_drive_note_torque(bd_drive *d, double t, double torque);
 
 /* takeup.c */
 double bd_takeup_force(const bd_takeup *tk, double t);

@@ -205,9 +205,13 @@ double bd_transmission_torque(bd_sim *sim, bd_part *part)
 {
     bd_transmission *tr = part->u.transmission.belt;
     tr->Q_m = 0.0;
-    if (!sim->stabilizing)
-        tr->Q_m = bd_drive_torque(sim, &part->u.transmission.drive, &sim->pulleys[part->pulley],
-                                  tr->w_m / tr->i, NULL) / tr->i;
+    if (!sim->stabilizing) {
+        bd_drive *d = &part->u.transmission.drive;
+        double Q = bd_drive_torque(sim, d, &sim->pulleys[part->pulley], tr->w_m / tr->i, NULL);
+        tr->Q_m = Q / tr->i;
+        /* max_torque is meant at the pulley: the torque there is Q */
+        bd_drive_note_torque(d, sim->t, Q);
+    }
     return tr->torque_p;
 }
 

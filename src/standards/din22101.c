@@ -44,7 +44,8 @@ void bd_din22101_resistances(bd_std_ctx *c)
     /* secondary resistances: eq 2.7, F_N = (C - 1)·F_H, shared among the
      * sections in proportion to F_H,i (model-format.md) */
     if (c->design.secondary == BD_SECONDARY_INDIVIDUAL)
-        return;   /* one by one instead (individual.c), which sets them */
+        return;   /* one by one instead (individual.c); the sections'
+                     secondary stay 0 as allocated */
     for (int k = 0; k < c->nsec; k++)
         c->sec[k].secondary = (C - 1.0) * c->sec[k].main;
 }

@@ -35,8 +35,6 @@ int bd_individual_resistances(bd_std_ctx *c)
     r->pulleys = calloc((size_t)c->n, sizeof *r->pulleys);
     if (!r->pulleys)
         return 1;
-    for (int k = 0; k < c->nsec; k++)
-        c->sec[k].secondary = 0.0;
 
     /* the feed point (at the design speed) */
     if (c->feed_span >= 0) {
