@@ -49,21 +49,23 @@ int bd_individual_resistances(bd_std_ctx *c)
         r->acceleration_length_m = fr.acceleration_length;
         if (m->design.loading_speed > c->speed && c->speed > 0.0)
             bd_std_warn(r, "design.loading_speed %.3g m/s is above the belt speed %.3g m/s: the "
-                           "material lands faster than the belt and pushes it (F_bA < 0)",
+                           "material lands faster than the belt; its push is left out (F_bA "
+                           "and the acceleration zone taken as 0, as the run does)",
                         m->design.loading_speed, c->speed);
     } else if (m->design.skirts.present) {
         bd_std_note(r, "design.skirts: the model has no material, so the skirts take nothing "
                        "(ISO 5048's skirt friction is that of the material)");
     }
 
-    /* each pulley's law, once; the cleaners scrape the belt leaving their
-     * pulley, a constant force */
+    /* each pulley's law, once; the cleaners scrape the belt on their
+     * pulley, a constant force: at a drive they come out of the belt's
+     * T1 − T2 there, as in the run (docs/standards.md) */
     bd_pulley_resistance_law *law = calloc((size_t)c->n, sizeof *law);
     if (!law)
         return 1;
     for (int p = 0; p < c->n; p++) {
         bd_secondary_pulley_law(m, p, &law[p]);
-        c->sec[bd_std_first_sec(c, p)].local_special += law[p].cleaners;
+        c->sec[bd_std_first_sec(c, p)].pulley_special += law[p].cleaners;
     }
 
     /* the pulleys' wrap and bearings, to a fixed point with the tensions */

@@ -77,7 +77,7 @@ double bd_std_total(const bd_std_ctx *c)
     double sum = 0.0;
     for (int k = 0; k < c->nsec; k++)
         sum += c->sec[k].main + c->sec[k].secondary + c->sec[k].slope + c->sec[k].pulley_res
-             + c->sec[k].local_secondary + c->sec[k].local_special;
+             + c->sec[k].pulley_special + c->sec[k].local_secondary + c->sec[k].local_special;
     return sum;
 }
 
@@ -123,7 +123,7 @@ void bd_std_propagate(bd_std_ctx *c)
         bd_std_section *s = &c->sec[k];
         if (k > 0 && c->sec[k - 1].span != s->span && c->is_drive[s->span])
             T -= Te_drive;
-        T += s->pulley_res;
+        T += s->pulley_res + s->pulley_special;
         s->T0 = T;
         T += s->main + s->secondary + s->slope + s->local_secondary + s->local_special;
         s->T1 = T;
@@ -622,7 +622,7 @@ int bd_static_compute(const bd_model_def *m, bd_static_result *out, bd_diag *dia
         os->T_end_N = s->T1;
         os->main_N += s->main;
         os->secondary_N += s->secondary + s->pulley_res + s->local_secondary;
-        os->special_N += s->local_special;
+        os->special_N += s->pulley_special + s->local_special;
         os->slope_N += s->slope;
         if (s->mL > 0.0)
             os->loaded_length_m += s->length;
@@ -632,7 +632,7 @@ int bd_static_compute(const bd_model_def *m, bd_static_result *out, bd_diag *dia
         }
         out->main_N += s->main;
         out->secondary_N += s->secondary + s->pulley_res + s->local_secondary;
-        out->special_N += s->local_special;
+        out->special_N += s->pulley_special + s->local_special;
         out->slope_N += s->slope;
         slope_abs += fabs(s->slope);
         out->T_max_N = fmax(out->T_max_N, fmax(s->T0, s->T1));

@@ -19,10 +19,12 @@ typedef struct bd_std_section {
     double roll_radius;/* m, radius of that idler set's rolls */
     int carry;         /* carrying run */
     double main, secondary, slope; /* N, resistances (filled per standard) */
-    /* secondary: individual (individual.c): the resistance of the pulley
-     * the section leaves (wrap, bearings; in T0), and what acts on the
-     * section from its start on (feed point, cleaners; in its rise) */
-    double pulley_res, local_secondary, local_special;
+    /* secondary: individual (individual.c): the resistances of the pulley
+     * the section leaves, in T0: secondary (wrap, bearings) and special
+     * (its cleaners: they scrape the belt on the pulley, as the run has
+     * them, sim/pulley_resistance.c); and what acts on the section from its
+     * start on, in its rise (feed point; skirts, special) */
+    double pulley_res, pulley_special, local_secondary, local_special;
     double Kx, Ky;     /* CEMA factors used (0 for DIN) */
     double T0, T1;     /* N, tension at its start and end */
     double T0_prev, T1_prev; /* N, previous iteration (CEMA) */
