@@ -1172,8 +1172,19 @@ static void design_post(ctx *c, const fieldset *fs, yaml_node_t *const *found, b
     d->present = 1;
     d->mark = at;
     d->bulk_density *= 1000.0; /* t/m³ in the file */
-    if (d->secondary != BD_SECONDARY_INDIVIDUAL)
+    if (d->secondary != BD_SECONDARY_INDIVIDUAL) {
+        /* the resistances one by one are not used with the C factor: say
+         * so where they stand, not silently */
+        const char *one_by_one[] = {"skirts", "cleaners", "bearings", "loading_speed"};
+        for (int k = 0; k < 4; k++) {
+            yaml_node_t *v = got(fs, found, one_by_one[k]);
+            if (v)
+                bd_diag_warning(c->diag, c->file, mark_of(v),
+                                "%s.%s: used only with secondary: individual; the C factor "
+                                "stands for it here", path, one_by_one[k]);
+        }
         return;
+    }
     /* what the resistances one by one need (model-format.md `design`) */
     char sub[PATH_LEN];
     join(sub, path, "secondary");
