@@ -109,7 +109,7 @@ static void html_table(bd_strbuf *b, const char *dir, const cJSON *cases)
     cJSON_ArrayForEach(o, cases) {
         const char *name = bd_json_str(o, "case");
         char report[PATH_LEN];
-        int linked = !strchr(name, '/') && !strstr(name, "..")
+        int linked = bd_case_name_ok(name)
                      && snprintf(report, sizeof report, "%s/%s/report.html", dir, name)
                             < (int)sizeof report
                      && access(report, R_OK) == 0;
@@ -157,8 +157,7 @@ int bd_cases_report_write(const char *dir, char *err, size_t errlen)
     cJSON_ArrayForEach(o, cases) {
         const char *name = bd_json_str(o, "case");
         char sub[PATH_LEN], summary[PATH_LEN], cerr[1024];
-        if (!name[0] || strchr(name, '/') || strstr(name, "..")
-            || bd_path_join(sub, sizeof sub, dir, name)
+        if (!bd_case_name_ok(name) || bd_path_join(sub, sizeof sub, dir, name)
             || bd_path_join(summary, sizeof summary, sub, "summary.json")
             || access(summary, R_OK) != 0)
             continue;

@@ -217,3 +217,8 @@ void bd_sb_json_cell(bd_strbuf *b, const cJSON *v)
         bd_sb_puts(b, "</td>");
     }
 }
+
+int bd_case_name_ok(const char *name)
+{
+    return name[0] && !strchr(name, '/') && !strstr(name, "..");
+}

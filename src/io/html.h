@@ -53,4 +53,9 @@ int bd_html_write(bd_strbuf *b, const char *path, char *err, size_t errlen);
  * with a message in err */
 int bd_html_page_finish(bd_strbuf *b, const char *dir, char *err, size_t errlen);
 
+/* 1: a case's name from a study's table can name its directory under the
+ * study's (not empty, no '/', no "..": a table edited by hand cannot point
+ * a link or a report outside, or at the study's own page) */
+int bd_case_name_ok(const char *name);
+
 #endif

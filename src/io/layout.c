@@ -6,6 +6,7 @@
 #include "base/constants.h"
 #include "base/json_util.h"
 #include "model/path.h"
+#include "parts/parts.h"
 
 /* arcs are drawn as polygons of at most this angle per side, rad, and
  * lines in pieces of at most this fraction of the loop (so that a region
@@ -66,8 +67,7 @@ static double rated_torque(const bd_drive_def *d)
 {
     if (d->control != BD_CONTROL_MOTOR || d->motor.rated_speed_rpm <= 0.0)
         return 0.0;
-    double T = d->motor.rated_power / (d->motor.rated_speed_rpm * 2.0 * BD_PI / 60.0);
-    return T * d->motor.gear_ratio;
+    return bd_motor_rated_torque(&d->motor) * d->motor.gear_ratio;
 }
 
 static void add_pulleys(cJSON *layout, const bd_sim *sim)

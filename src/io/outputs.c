@@ -179,16 +179,11 @@ static void parts_row(bd_outputs *o, bd_sim *sim, double t)
 {
     const bd_model_def *def = sim->model->def;
     fprintf(o->parts, "%.6f", t);
-    const bd_belt_ops *belt = sim->model->belt;
     for (int i = 0; i < sim->model->pulley_count; i++)
         if (def->pulleys[i].has_drive) {
             /* read now, as probes are: at t = 0 no step has updated them */
-            bd_drive_monitor *m = &sim->pulleys[i].mon;
             bd_belt_sample in, out;
-            belt->point_update(sim, &m->tight);
-            belt->point_update(sim, &m->slack);
-            belt->sample(sim, &m->tight, &in);
-            belt->sample(sim, &m->slack, &out);
+            bd_monitor_sides(sim, &sim->pulleys[i].mon, &in, &out);
             fprintf(o->parts, ",%.6g,%.6g", in.tension, out.tension);
         }
     for (int i = 0; i < sim->model->pulley_count; i++)

@@ -89,7 +89,7 @@ static int read_study(study *s, char *err, size_t errlen)
         c->tight_max = bd_json_num(o, "tight_tension_max_N");
         c->accel_max = fabs(bd_json_num(o, "belt_accel_max_mps2"));
         c->curve_index = curve_index(c->curve);
-        if (!c->name[0] || strchr(c->name, '/') || strstr(c->name, "..")) {
+        if (!bd_case_name_ok(c->name)) {
             snprintf(err, errlen, "%s: case %d has no usable name", path, s->n);
             return BD_REPORT_EINPUT;
         }

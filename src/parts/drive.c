@@ -60,6 +60,11 @@ static double motor_torque(const bd_drive *p, double omega_pulley)
     return 2.0 * p->motor_breakdown * s * sb / (s * s + sb * sb);
 }
 
+double bd_motor_rated_torque(const bd_motor_def *m)
+{
+    return m->rated_power / (m->rated_speed_rpm * 2.0 * BD_PI / 60.0);
+}
+
 /* dT_m/dω_m of the Kloss curve at the motor shaft, N·m·s: the derivative
  * of T_m(s) above, dT_m/ds = 2·T_b·s_b·(s_b² − s²)/(s² + s_b²)², times
  * ds/dω_m = −1/ω_sync (derived here) */
@@ -96,8 +101,7 @@ void bd_drive_prepare(bd_sim *sim, bd_drive *dr, const bd_pulley_body *p,
     dr->ctrl_bandwidth = w < w_max ? w : w_max;
     if (d->control == BD_CONTROL_MOTOR) {
         const bd_motor_def *m = &d->motor;
-        double w_rated = m->rated_speed_rpm * 2.0 * BD_PI / 60.0;
-        double T_rated = m->rated_power / w_rated;
+        double T_rated = bd_motor_rated_torque(m);
         double k = m->breakdown_torque_ratio;
         double s_r = 1.0 - m->rated_speed_rpm / m->synchronous_speed_rpm;
         dr->motor_breakdown = k * T_rated;

@@ -111,6 +111,8 @@ void bd_idlers_advance(bd_sim *sim, double *ke, double *w_nc);
  * speed drives' speed or creep speed, motors' synchronous speed at the
  * pulley */
 double bd_drives_reference_speed(const bd_model *m);
+/* a motor's rated torque at its shaft, N·m: rated power over rated speed */
+double bd_motor_rated_torque(const bd_motor_def *m);
 /* tune the speed loop of drive d on pulley p for the inertia it moves */
 void bd_drive_prepare(bd_sim *sim, bd_drive *d, const bd_pulley_body *p,
                       double reflected_inertia);

@@ -112,17 +112,23 @@ static void slip(bd_drive_monitor *m, double v_surface, double v_belt, double t)
         m->slip_first_t = m->slip_since;
 }
 
+void bd_monitor_sides(bd_sim *sim, bd_drive_monitor *m, bd_belt_sample *in,
+                      bd_belt_sample *out)
+{
+    const bd_belt_ops *belt = sim->model->belt;
+    belt->point_update(sim, &m->tight);
+    belt->point_update(sim, &m->slack);
+    belt->sample(sim, &m->tight, in);
+    belt->sample(sim, &m->slack, out);
+}
+
 /* after a step: sim->t is the time the positions belong to */
 void bd_monitor_update(bd_sim *sim, bd_pulley_body *p)
 {
     bd_drive_monitor *m = &p->mon;
-    const bd_belt_ops *belt = sim->model->belt;
-    belt->point_update(sim, &m->tight);
-    belt->point_update(sim, &m->slack);
     double t = sim->t;
     bd_belt_sample in, out;
-    belt->sample(sim, &m->tight, &in);
-    belt->sample(sim, &m->slack, &out);
+    bd_monitor_sides(sim, m, &in, &out);
     double T_in = in.tension;
     double T_out = out.tension;
     if (T_in > m->tight_max) {

@@ -17,6 +17,10 @@ void bd_wrap_side_points(const bd_sim *sim, int i, double *s_in, double *s_out);
 void bd_monitor_reset(bd_sim *sim, bd_pulley_body *p);
 double bd_monitor_swing(const bd_drive_monitor *m);
 void bd_monitor_update(bd_sim *sim, bd_pulley_body *p);
+/* the belt arriving at a drive's wrap and leaving it, read now (its
+ * monitor's points moved to the present belt) */
+void bd_monitor_sides(bd_sim *sim, bd_drive_monitor *m, bd_belt_sample *in,
+                      bd_belt_sample *out);
 
 /* probe.c */
 /* the sensors phase of a step: probes follow the belt, drive monitors
