@@ -226,12 +226,9 @@ static range axes_range(const bd_plot_axes *a, int want_y)
 static range pad_y(const bd_plot_axes *a, range r)
 {
     if (a->map) return r;
-    if (a->aspect > 0.0) {   /* a drawing: 5 %, the aspect sets the rest */
-        double pad = 0.05 * (r.hi - r.lo);
-        return (range){r.lo - pad, r.hi + pad};
-    }
     double pad = 0.05 * (r.hi - r.lo);
     range p = {r.lo - pad, r.hi + pad};
+    if (a->aspect > 0.0) return p;   /* a drawing: the aspect sets the rest */
     double step = nice_step(p.hi - p.lo, 6);
     p.lo = floor(p.lo / step + 1e-9) * step;
     p.hi = ceil(p.hi / step - 1e-9) * step;
