@@ -238,6 +238,29 @@ static int compressed(const weight_grid *g, double Tc, double EA, char *err, siz
     return 1;
 }
 
+/* the most stretch 1 + T/EA a belt is laid with: a belt's strain is a
+ * few per cent; at 100 % the tension is beyond any belt's strength, and
+ * the unstretched elements would shrink without bound (an initial tension
+ * of 2e13 N on EA 2e3 N made 6 nm elements, fuzz_model) */
+#define MAX_STRETCH 2.0
+
+static int overstretched(const weight_grid *g, double Tc, double EA, char *err, size_t errlen)
+{
+    long at = 0;
+    for (long i = 1; i <= g->m; i++)
+        if (g->W[i] > g->W[at])
+            at = i;
+    double T = Tc + g->W[at];
+    if (1.0 + T / EA <= MAX_STRETCH)
+        return 0;
+    snprintf(err, errlen, "could not lay the belt on its path: at rest its tension would be "
+             "%.4g N at s = %.4g m, a strain of %.3g %% with axial stiffness %.4g N (a belt "
+             "is not laid stretched by %.0f %% or more); the takeup or initial tension is "
+             "too high for the belt",
+             T, (double)at * g->ds, 100.0 * T / EA, EA, 100.0 * (MAX_STRETCH - 1.0));
+    return 1;
+}
+
 int bd_layout_belt(const bd_model_def *def, const bd_layout_request *req, bd_layout *out,
                    char *err, size_t errlen)
 {
@@ -281,7 +304,7 @@ int bd_layout_belt(const bd_model_def *def, const bd_layout_request *req, bd_lay
         L_un = L;
         EA = INFINITY;   /* unstretched: chords are l0 */
     }
-    if (!rest && compressed(&g, Tc, EA, err, errlen)) {
+    if (!rest && (compressed(&g, Tc, EA, err, errlen) || overstretched(&g, Tc, EA, err, errlen))) {
         weight_grid_free(&g);
         return 1;
     }

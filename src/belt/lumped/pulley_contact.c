@@ -81,7 +81,10 @@ void bd_lumped_sector_init(bd_sim *sim, int pulley, bd_wrap_sector *S)
     double half = 0.5 * fabs(arc->sweep) + SECTOR_MARGIN_DEG * BD_DEG + 2.0 * l0 / R;
     S->cos_limit = half >= BD_PI ? -2.0 : cos(half);
     S->reach = R + SECTOR_REACH_ELEMENTS * l0;
-    S->node_max = (int)ceil(2.0 * half * S->reach / l0) + 8;
+    /* no more than the belt has (compared in double: an absurd l0 would
+     * overflow the int) */
+    double most = ceil(2.0 * half * S->reach / l0) + 8.0;
+    S->node_max = most < (double)sim->model->n + 8.0 ? (int)most : sim->model->n + 8;
 }
 
 /* the node nearest the arc's middle, once by a full search (the belt laid) */
