@@ -216,6 +216,7 @@ int bd_lumped_build(bd_sim *sim, bd_diag *diag)
                       "use less than %.3g m (the default is %.3g m, 30° of it)",
                       sim->model->l0, def->pulleys[worst].name, R, BD_PI * R,
                       default_element_length(def));
+        bd_layout_free(&lay);
         return 1;
     }
     if (span > BD_WRAP_WARN_DEG * BD_DEG)
