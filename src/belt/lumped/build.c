@@ -94,6 +94,7 @@ static void setup_idlers(bd_sim *sim)
     sim->own->idler_count = total;
     sim->own->idlers = bd_xcalloc((size_t)total, sizeof *sim->own->idlers);
     sim->idlers = bd_xcalloc((size_t)total, sizeof *sim->idlers);
+    bd_lumped_of(sim)->touch = bd_xcalloc((size_t)total, sizeof *bd_lumped_of(sim)->touch);
     int at = 0;
     for (int k = 0; k < def->idler_set_count; k++) {
         const bd_idler_set_def *set = &def->idler_sets[k];
@@ -263,6 +264,7 @@ void bd_lumped_free(bd_sim *sim)
     free(L->wraps);
     free(L->wrapped);
     free(L->wrap_mark);
+    free(L->touch);
     free(L);
     sim->belt_data = NULL;
 }
@@ -306,6 +308,7 @@ void bd_lumped_clone(bd_sim *dst, const bd_sim *src)
     }
     L->wrapped = bd_xdup(S->wrapped, (size_t)wrapped_max(src), sizeof *L->wrapped);
     L->wrap_mark = bd_xdup(S->wrap_mark, n, sizeof *L->wrap_mark);
+    L->touch = bd_xdup(S->touch, (size_t)src->model->idler_count, sizeof *L->touch);
 }
 
 /* Stable time step (laws/stable_step.h). The highest frequency of the belt is that of a node between two elements

@@ -1,34 +1,45 @@
-/* Belt–idler contact (seed 001 §4.3.2): an idler touches the belt element
- * that is over it, at the foot point of its centre on the element.
+/* Belt–idler contact (seed 001 §4.3.2, changed by issue 10): an idler
+ * presses on the belt's smoothed line at the point nearest its centre.
  *
- * Normal: foot point p = x_e + γ·(x_j − x_e); the belt is pushed away from
- * the centre along n̂ = (p − c)/|p − c| by a penalty spring on the
- * penetration δ = R − |p − c|, shared by the element's nodes by the lever
- * rule, (1−γ) and γ (eqs 4.95–4.102; the thesis' 4.100 gives node i the
- * share d_i/l, which puts more force on the farther node). As for pulleys
- * (pulley_contact.c) the spring is stiff and linearly implicit: with the
- * contact point's effective mass m* = 1/((1−γ)²/m_e + γ²/m_j), its normal
- * velocity v_n and the normal acceleration a_o,n the other forces give it,
+ * The smoothed line: round node k, the quadratic Bézier from the middle of
+ * element k − 1 through the corner at node k to the middle of element k
+ * (belt_piece below); the pieces meet with one tangent. Seed 001 presses
+ * the roll on the foot point of its centre on the straight element
+ * (eqs 4.95–4.102): when a node passes the roll the element over it
+ * changes and the normal turns at once by the belt's angle β there, an
+ * impact of ½m_e(v·β)² per passage that the stiff contact stopped. It cost
+ * running force the model does not declare (4–30 % on generated empty
+ * belts), did not fall with the element length, and its booked work
+ * changed sign from passage to passage (the dissipated energy fell).
+ * On the smoothed line the normal turns as the nodes move. (Running the
+ * belt round the roll as at a pulley, wrap_elements.c, was tried: on an
+ * arc of a few millimetres the node turns within a step or two, the same
+ * impact.)
+ *
+ * Normal: contact point B = Σ w_m·x_m (nodes k − 1, k, k + 1), the belt
+ * pushed away from the centre along n̂ = (B − c)/|B − c| by a penalty on
+ * δ = R − |B − c|; B is the nearest point, so ∂|B − c|/∂x_m = w_m·n̂ and
+ * the force is shared by w_m. As for pulleys (pulley_contact.c) the spring
+ * is stiff and linearly implicit: with the contact point's effective mass
+ * m* = 1/Σ(w_m²/m_m), its normal velocity v_n and the normal acceleration
+ * a_o,n the other forces give it,
  *   f_n = k_c·(δ − Δt·v_n − Δt²·a_o,n) / (1 + k_c·Δt²/m*)  ≥ 0,
- * stable for any k_c (an explicit contact this stiff would ring near the
- * step's stability limit). The whole of f_n is booked as non-conservative
- * work, unlike at a pulley: the belt slides over the idler, so δ belongs to
- * a foot point that moves along the polygon, and in the stiff limit
- * (k_c·Δt²/m* ≫ 1) the contact holds δ ≥ Δt·v_n, not k_c·δ ≈ f_n. Booked
- * as a spring, k_c·δ did kilowatts of "work" on a belt running over loaded
- * idlers that ½k_c·δ² never stored (head_drive: +6.9 kW against −6.9 kW in
- * the rest of f_n; net 18 W), and the energy balance failed by 900%. The
- * energy the contact really stores, f_n²/(2k_c), is millijoules.
+ * stable for any k_c. The whole of f_n is booked as non-conservative work:
+ * in the stiff limit (k_c·Δt²/m* ≫ 1) the contact holds δ ≥ Δt·v_n, not
+ * k_c·δ ≈ f_n, and booked as a spring k_c·δ did "work" that ½k_c·δ² never
+ * stored (the balance of a belt falling onto its rolls from rest, generated
+ * seed 1028: 0.77 % against 0.03 %). The energy the contact really stores,
+ * f_n²/(2k_c), is millijoules.
  *
  * Rolling (indentation) resistance: a force rr·f_n on the belt against its
  * motion over the idler (model-format.md `rolling_resistance`), smoothed
  * below BD_ROLLING_SPEED (laws/rolling.h) so a belt at rest carries none.
  *
  * Friction: t̂ along the belt in the direction of travel, slip speed
- * v_r = t̂·((1−γ)v_e + γv_j) − ω·R (eq 4.107). The stick force f (−f·t̂ on
- * the belt shared by the lever rule, +f·R on the idler) that makes v_r zero
- * at the end of the step solves eq 4.113:
- *   f = [v_r/Δt + (1−γ)·t̂·F_e/m_e + γ·t̂·F_j/m_j] / [(1−γ)²/m_e + γ²/m_j + R²/I]
+ * v_r = t̂·Σ w_m·v_m − ω·R (eq 4.107). The stick force f (−f·t̂ on the belt
+ * shared by w_m, +f·R on the idler) that makes v_r zero at the end of the
+ * step solves eq 4.113:
+ *   f = [v_r/Δt + Σ w_m·t̂·F_m/m_m] / [Σ w_m²/m_m + R²/I]
  * (eq 4.114 rearranged; the idler has no other torque). |f| > μ_s·f_n slips
  * with ±μ_d·f_n (eqs 4.116–4.117). */
 #include "belt/lumped/lumped.h"
@@ -48,34 +59,99 @@ static void note_lifted(bd_sim *sim, const bd_idler *id, double d)
         bd_lift_off_note(sim, id->m->s);
 }
 
-static void idler_contact(bd_sim *sim, bd_idler *id)
+/* the belt's smoothed line round node k: the quadratic Bézier from the
+ * middle of element k − 1 (t = 0) through the corner at node k to the
+ * middle of element k (t = 1); the pieces of neighbouring nodes meet at
+ * the element middles with one tangent (C1). The weights of nodes k − 1,
+ * k, k + 1 in its point at t, and that point from c. */
+static void piece_at(const bd_sim *sim, int k, double t, const double c[2], bd_idler_touch *pc)
 {
-    bd_tracker_update(sim, &id->tr);
+    const int n = sim->model->n;
+    int a = k == 0 ? n - 1 : k - 1, b = k + 1 == n ? 0 : k + 1;
+    pc->node[0] = a;
+    pc->node[1] = k;
+    pc->node[2] = b;
+    pc->w[0] = 0.5 * (1.0 - t) * (1.0 - t);
+    pc->w[2] = 0.5 * t * t;
+    pc->w[1] = 1.0 - pc->w[0] - pc->w[2];
+    pc->r[0] = pc->w[0] * sim->x[a] + pc->w[1] * sim->x[k] + pc->w[2] * sim->x[b] - c[0];
+    pc->r[1] = pc->w[0] * sim->y[a] + pc->w[1] * sim->y[k] + pc->w[2] * sim->y[b] - c[1];
+}
+
+/* the point of the smoothed belt line nearest the roll's centre c: one
+ * Newton step on (B − c)·B' = 0 from the point the tracker's foot point
+ * maps to (continuous as the belt moves, exact on a straight belt, off by
+ * the square of its distance from the nearest point on a bent one, which
+ * moves the contact by micrometres), onto the next piece when t leaves
+ * [0, 1]. The normal then turns smoothly as the nodes pass the roll. One
+ * step, not to convergence: the step loop cannot afford more (two
+ * iterations cost bench_long_conveyor 40 %). */
+static void nearest_point(const bd_sim *sim, const bd_idler *id, bd_idler_touch *pc)
+{
+    const int n = sim->model->n;
+    const double cx = id->m->centre[0], cy = id->m->centre[1];
+    const double *x = sim->x, *y = sim->y;
+    int e = id->tr.element, k;
+    double t;
+    if (id->tr.gamma >= 0.5) {
+        k = e + 1 == n ? 0 : e + 1;
+        t = id->tr.gamma - 0.5;
+    } else {
+        k = e;
+        t = id->tr.gamma + 0.5;
+    }
+    int a = k == 0 ? n - 1 : k - 1, b = k + 1 == n ? 0 : k + 1;
+    /* B(t) = m + t·e1 + ½t²·(e2 − e1), from the centre */
+    double e1x = x[k] - x[a], e1y = y[k] - y[a];
+    double ddx = x[b] - x[k] - e1x, ddy = y[b] - y[k] - e1y;
+    double mx = 0.5 * (x[a] + x[k]) - cx, my = 0.5 * (y[a] + y[k]) - cy;
+    double dBx = e1x + t * ddx, dBy = e1y + t * ddy;
+    double Bx = mx + t * (e1x + 0.5 * t * ddx), By = my + t * (e1y + 0.5 * t * ddy);
+    double dB2 = dBx * dBx + dBy * dBy;
+    double h = dB2 + Bx * ddx + By * ddy;
+    /* h > 0 unless the roll sat inside the corner's own curvature, which
+     * a belt bent round a roll by less than an element's length does not;
+     * the tangent step then */
+    t -= (Bx * dBx + By * dBy) / (h > 0.0 ? h : dB2);
+    /* past the piece's end: the same point on the next piece's start */
+    if (t < 0.0) {
+        k = a;
+        t = t + 1.0 < 0.0 ? 0.0 : t + 1.0;
+    } else if (t > 1.0) {
+        k = b;
+        t = t - 1.0 > 1.0 ? 1.0 : t - 1.0;
+    }
+    piece_at(sim, k, t, id->m->centre, pc);
+    pc->d = sqrt(pc->r[0] * pc->r[0] + pc->r[1] * pc->r[1]);
+    pc->n[0] = pc->r[0] / pc->d;
+    pc->n[1] = pc->r[1] / pc->d;
+}
+
+static void idler_contact(bd_sim *sim, bd_idler *id, const bd_idler_touch *pc)
+{
     id->alpha = 0.0;
     id->torque = 0.0;
     const bd_idler_model *im = id->m;
-    int e = id->tr.element, j = e + 1 == sim->model->n ? 0 : e + 1;
-    double g = id->tr.gamma, h = 1.0 - g;
-    double px = sim->x[e] + g * (sim->x[j] - sim->x[e]);
-    double py = sim->y[e] + g * (sim->y[j] - sim->y[e]);
-    double rx = px - im->centre[0], ry = py - im->centre[1];
-    double d2 = rx * rx + ry * ry;
-    double Rc = im->radius + IDLER_CONTACT_GAP * sim->model->l0;
-    if (d2 >= Rc * Rc) {
-        note_lifted(sim, id, sqrt(d2));
+    const double d = pc->d, nx = pc->n[0], ny = pc->n[1];
+    if (d >= im->radius + IDLER_CONTACT_GAP * sim->model->l0) {
+        note_lifted(sim, id, d);
         return;
     }
-    /* reciprocals once: the divider is what bounds this loop */
-    double d = sqrt(d2), inv_d = 1.0 / d;
-    double nx = rx * inv_d, ny = ry * inv_d;
-    double vcx = h * sim->vx[e] + g * sim->vx[j];
-    double vcy = h * sim->vy[e] + g * sim->vy[j];
-    double ie = 1.0 / sim->mass[e], ij = 1.0 / sim->mass[j];
-    double he = h * ie, gj = g * ij;              /* lever share / node mass */
-    double inv_m_eff = h * he + g * gj;           /* 1/m* */
-    double aon = nx * (he * sim->fx[e] + gj * sim->fx[j]) + ny * (he * sim->fy[e] + gj * sim->fy[j]);
-    double dt = sim->model->dt;
-    double fn = im->k_contact * (im->radius - d - dt * (nx * vcx + ny * vcy) - dt * dt * aon)
+    const int *nd = pc->node;
+    const double *w = pc->w;
+    /* w_m/m_m from dt/m (no division in the step) */
+    double wm_[3];
+    double vcx = 0.0, vcy = 0.0, inv_m_eff = 0.0, aon = 0.0;
+    for (int q = 0; q < 3; q++) {
+        int m = nd[q];
+        double wm = wm_[q] = w[q] * sim->dt_per_mass[m] * sim->model->inv_dt;
+        vcx += w[q] * sim->vx[m];
+        vcy += w[q] * sim->vy[m];
+        inv_m_eff += w[q] * wm;
+        aon += wm * (nx * sim->fx[m] + ny * sim->fy[m]);
+    }
+    double dt = sim->model->dt, delta = im->radius - d;
+    double fn = im->k_contact * (delta - dt * (nx * vcx + ny * vcy) - dt * dt * aon)
               / (1.0 + im->k_contact * dt * dt * inv_m_eff);
     if (fn <= 0.0) {
         note_lifted(sim, id, d);
@@ -94,39 +170,44 @@ static void idler_contact(bd_sim *sim, bd_idler *id)
     if (sat < -1.0)
         sat = -1.0;
     double frr = im->rolling * fn * sat;
-    /* normal + rolling resistance on the two nodes, all non-conservative */
+    /* normal + rolling resistance on the three nodes */
     double Fx = fn * nx - frr * tx, Fy = fn * ny - frr * ty;
-    sim->fx[e] += h * Fx;
-    sim->fy[e] += h * Fy;
-    sim->fx[j] += g * Fx;
-    sim->fy[j] += g * Fy;
-    sim->fnx[e] += h * Fx;
-    sim->fny[e] += h * Fy;
-    sim->fnx[j] += g * Fx;
-    sim->fny[j] += g * Fy;
+    double ft = 0.0;
+    for (int q = 0; q < 3; q++) {
+        int m = nd[q];
+        sim->fx[m] += w[q] * Fx;
+        sim->fy[m] += w[q] * Fy;
+        sim->fnx[m] += w[q] * Fx;
+        sim->fny[m] += w[q] * Fy;
+        ft += wm_[q] * (tx * sim->fx[m] + ty * sim->fy[m]);
+    }
     double R = im->radius;
     double vr = vt - id->omega * R;
-    double num = vr * sim->model->inv_dt + he * (tx * sim->fx[e] + ty * sim->fy[e])
-               + gj * (tx * sim->fx[j] + ty * sim->fy[j]);
-    double den = inv_m_eff + im->r2_per_inertia;
-    double f = num / den;
+    double f = (vr * sim->model->inv_dt + ft) / (inv_m_eff + im->r2_per_inertia);
     if (fabs(f) > im->mu_s * fn)
         f = copysign(im->mu_d * fn, f);
-    sim->fx[e] -= h * f * tx;
-    sim->fy[e] -= h * f * ty;
-    sim->fx[j] -= g * f * tx;
-    sim->fy[j] -= g * f * ty;
-    sim->fnx[e] -= h * f * tx;
-    sim->fny[e] -= h * f * ty;
-    sim->fnx[j] -= g * f * tx;
-    sim->fny[j] -= g * f * ty;
+    for (int q = 0; q < 3; q++) {
+        int m = nd[q];
+        sim->fx[m] -= w[q] * f * tx;
+        sim->fy[m] -= w[q] * f * ty;
+        sim->fnx[m] -= w[q] * f * tx;
+        sim->fny[m] -= w[q] * f * ty;
+    }
     id->torque = f * R;
     id->alpha = id->torque * im->inv_inertia;
 }
 
-/* the supports phase: every idler, after the wraps */
+/* the supports phase: every idler, after the wraps; where each touches
+ * the belt first (positions only: the idlers' iterations overlap), then
+ * the forces */
 void bd_lumped_idlers(bd_sim *sim)
 {
+    bd_idler_touch *touch = bd_lumped_of(sim)->touch;
+    for (int i = 0; i < sim->model->idler_count; i++) {
+        bd_tracker_update(sim, &sim->idlers[i].tr);
+        nearest_point(sim, &sim->idlers[i], &touch[i]);
+    }
     for (int i = 0; i < sim->model->idler_count; i++)
-        idler_contact(sim, &sim->idlers[i]);
+        idler_contact(sim, &sim->idlers[i], &touch[i]);
 }
+

@@ -61,6 +61,16 @@ typedef struct bd_wrapped_element {
     double T, td;
 } bd_wrapped_element;
 
+/* step (supports phase): where an idler's roll meets the belt's smoothed
+ * line (idler_contact.c), found for every idler before any force */
+typedef struct bd_idler_touch {
+    int node[3];
+    double w[3];
+    double r[2];     /* m, from the roll's centre to the contact point */
+    double d;        /* m, its length */
+    double n[2];     /* its direction */
+} bd_idler_touch;
+
 /* the lumped belt's state (behind sim->belt_data) */
 typedef struct bd_lumped {
     bd_wrap_contact *wraps;    /* [pulley_count] */
@@ -81,6 +91,7 @@ typedef struct bd_lumped {
     /* step: N, the wrapped arcs' pressure each node's friction carries
      * (wrap_elements.c adds, the contact reads and clears) */
     double *arc_load;      /* [n] */
+    bd_idler_touch *touch; /* [idler_count] */
 } bd_lumped;
 
 static inline bd_lumped *bd_lumped_of(const bd_sim *sim)
