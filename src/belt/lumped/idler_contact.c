@@ -123,8 +123,9 @@ static void nearest_point(const bd_sim *sim, const bd_idler *id, bd_idler_touch 
     }
     piece_at(sim, k, t, id->m->centre, pc);
     pc->d = sqrt(pc->r[0] * pc->r[0] + pc->r[1] * pc->r[1]);
-    pc->n[0] = pc->r[0] / pc->d;
-    pc->n[1] = pc->r[1] / pc->d;
+    double inv_d = 1.0 / pc->d;
+    pc->n[0] = pc->r[0] * inv_d;
+    pc->n[1] = pc->r[1] * inv_d;
 }
 
 static void idler_contact(bd_sim *sim, bd_idler *id, const bd_idler_touch *pc)
@@ -139,16 +140,18 @@ static void idler_contact(bd_sim *sim, bd_idler *id, const bd_idler_touch *pc)
     }
     const int *nd = pc->node;
     const double *w = pc->w;
-    /* w_m/m_m from dt/m (no division in the step) */
-    double wm_[3];
-    double vcx = 0.0, vcy = 0.0, inv_m_eff = 0.0, aon = 0.0;
+    /* w_m/m_m from dt/m (no division in the step); the tangential
+     * acceleration the other forces give the contact point */
+    const double tx0 = -ny, ty0 = nx;
+    double vcx = 0.0, vcy = 0.0, inv_m_eff = 0.0, aon = 0.0, aot = 0.0;
     for (int q = 0; q < 3; q++) {
         int m = nd[q];
-        double wm = wm_[q] = w[q] * sim->dt_per_mass[m] * sim->model->inv_dt;
+        double wm = w[q] * sim->dt_per_mass[m] * sim->model->inv_dt;
         vcx += w[q] * sim->vx[m];
         vcy += w[q] * sim->vy[m];
         inv_m_eff += w[q] * wm;
         aon += wm * (nx * sim->fx[m] + ny * sim->fy[m]);
+        aot += wm * (tx0 * sim->fx[m] + ty0 * sim->fy[m]);
     }
     double dt = sim->model->dt, delta = im->radius - d;
     double fn = im->k_contact * (delta - dt * (nx * vcx + ny * vcy) - dt * dt * aon)
@@ -158,10 +161,11 @@ static void idler_contact(bd_sim *sim, bd_idler *id, const bd_idler_touch *pc)
         return;
     }
     /* tangent along the travel direction */
-    double tx = -ny, ty = nx;
+    double tx = tx0, ty = ty0;
     if (tx * id->tr.dir[0] + ty * id->tr.dir[1] < 0.0) {
         tx = -tx;
         ty = -ty;
+        aot = -aot;
     }
     double vt = tx * vcx + ty * vcy;
     double sat = vt * (1.0 / BD_ROLLING_SPEED);
@@ -170,28 +174,24 @@ static void idler_contact(bd_sim *sim, bd_idler *id, const bd_idler_touch *pc)
     if (sat < -1.0)
         sat = -1.0;
     double frr = im->rolling * fn * sat;
-    /* normal + rolling resistance on the three nodes */
-    double Fx = fn * nx - frr * tx, Fy = fn * ny - frr * ty;
-    double ft = 0.0;
+    /* the stick force, with the rolling resistance's share of the contact
+     * point's tangential acceleration (−frr·Σ w_m²/m_m; the normal force
+     * has none) */
+    double R = im->radius;
+    double vr = vt - id->omega * R;
+    double ft = aot - frr * inv_m_eff;
+    double f = (vr * sim->model->inv_dt + ft) / (inv_m_eff + im->r2_per_inertia);
+    if (fabs(f) > im->mu_s * fn)
+        f = copysign(im->mu_d * fn, f);
+    /* normal, rolling resistance and friction on the three nodes, all
+     * non-conservative */
+    double Fx = fn * nx - (frr + f) * tx, Fy = fn * ny - (frr + f) * ty;
     for (int q = 0; q < 3; q++) {
         int m = nd[q];
         sim->fx[m] += w[q] * Fx;
         sim->fy[m] += w[q] * Fy;
         sim->fnx[m] += w[q] * Fx;
         sim->fny[m] += w[q] * Fy;
-        ft += wm_[q] * (tx * sim->fx[m] + ty * sim->fy[m]);
-    }
-    double R = im->radius;
-    double vr = vt - id->omega * R;
-    double f = (vr * sim->model->inv_dt + ft) / (inv_m_eff + im->r2_per_inertia);
-    if (fabs(f) > im->mu_s * fn)
-        f = copysign(im->mu_d * fn, f);
-    for (int q = 0; q < 3; q++) {
-        int m = nd[q];
-        sim->fx[m] -= w[q] * f * tx;
-        sim->fy[m] -= w[q] * f * ty;
-        sim->fnx[m] -= w[q] * f * tx;
-        sim->fny[m] -= w[q] * f * ty;
     }
     id->torque = f * R;
     id->alpha = id->torque * im->inv_inertia;
