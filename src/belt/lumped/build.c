@@ -29,12 +29,12 @@ static double default_element_length(const bd_model_def *def)
  * shell contact (ints apart) */
 static const size_t BELT_DOUBLES[] = {offsetof(bd_lumped, ux), offsetof(bd_lumped, uy),
                                       offsetof(bd_lumped, len), offsetof(bd_lumped, td),
-                                      offsetof(bd_lumped, pw), offsetof(bd_lumped, ek),
-                                      offsetof(bd_lumped, arc_load)};
+                                      offsetof(bd_lumped, pw), offsetof(bd_lumped, ek)};
 static const size_t WRAP_DOUBLES[] = {offsetof(bd_wrap_contact, c_fn0),
                                       offsetof(bd_wrap_contact, c_g),
                                       offsetof(bd_wrap_contact, c_spring),
                                       offsetof(bd_wrap_contact, c_arc),
+                                      offsetof(bd_wrap_contact, run_arc),
                                       offsetof(bd_wrap_contact, c_tx),
                                       offsetof(bd_wrap_contact, c_ty),
                                       offsetof(bd_wrap_contact, c_f)};

@@ -40,6 +40,10 @@ typedef struct bd_wrap_contact {
     double *c_g;            /* kg, its growth with the carriage's acceleration */
     double *c_spring;       /* N, the contact spring's own force k_c·δ */
     double *c_arc;          /* N, the arcs' pressure its friction carries */
+    /* step (forces phase) [node_max]: N, the wrapped arcs' pressure each
+     * node of the run carries, by its place in the run (wrap_elements.c
+     * writes, gather reads) */
+    double *run_arc;
     double *c_tx, *c_ty;    /* unit tangent (positive in the wrap sense) */
     double *c_f;            /* N, friction (+ = retards the belt) */
     int *c_state;           /* sticking, slipping forward or back, off */
@@ -88,9 +92,6 @@ typedef struct bd_lumped {
     bd_wrapped_element *wrapped;
     int wrapped_count;
     unsigned char *wrap_mark;   /* [n] */
-    /* step: N, the wrapped arcs' pressure each node's friction carries
-     * (wrap_elements.c adds, the contact reads and clears) */
-    double *arc_load;      /* [n] */
     bd_idler_touch *touch; /* [idler_count] */
 } bd_lumped;
 

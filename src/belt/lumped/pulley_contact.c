@@ -197,12 +197,9 @@ static void gather(bd_sim *sim, bd_pulley_body *p, int moving)
     W->contact_count = 0;
     /* the sector's run, found in the forces phase (wrap_elements.c) */
     const int first = W->run_first, count = W->run_count;
-    /* the run's shares of the wrapped arcs' pressure (wrap_elements.c),
-     * read and cleared */
-    double *arc_load = bd_lumped_of(sim)->arc_load;
     for (int w = 0, k = first; w < count; w++, k = k + 1 == n ? 0 : k + 1) {
-        double arc = arc_load[k];
-        arc_load[k] = 0.0;
+        /* the run's share of the wrapped arcs' pressure (wrap_elements.c) */
+        double arc = W->run_arc[w];
         double rx = sim->x[k] - p->cx, ry = sim->y[k] - p->cy;
         double a2 = rx * rx + ry * ry;
         int near = a2 < Rc * Rc;

@@ -117,6 +117,8 @@ void bd_lumped_wrap_elements(bd_sim *sim)
         W->run_count = count;
         W->react[0] = W->react[1] = 0.0;
         W->react_d[0] = W->react_d[1] = 0.0;
+        for (int w = 0; w < count; w++)
+            W->run_arc[w] = 0.0;
         const double R = p->m->radius, wrap = p->m->wrap;
         const double vcx = p->qdot * p->m->axis[0], vcy = p->qdot * p->m->axis[1];
         /* the elements of the run, and the one that enters it */
@@ -147,14 +149,15 @@ void bd_lumped_wrap_elements(bd_sim *sim)
             W->react_d[0] += td * (gi[0] + gj[0]);
             W->react_d[1] += td * (gi[1] + gj[1]);
             /* the arc's pressure, shared by its nodes' friction by the
-             * lever rule about the arc's middle (pulley_contact.c) */
-            /* (to the run's nodes only: its contact reads and clears them) */
+             * lever rule about the arc's middle (pulley_contact.c), kept
+             * by the nodes' places in this pulley's run: a node in two
+             * pulleys' runs carries each one's share to its own shell */
             if (T > 0.0) {
                 double P = T * hypot(gi[0] + gj[0], gi[1] + gj[1]);
                 if (w > 0)
-                    L->arc_load[e] += (1.0 - lever) * P;
+                    W->run_arc[w - 1] += (1.0 - lever) * P;
                 if (w < count)
-                    L->arc_load[j] += lever * P;
+                    W->run_arc[w] += lever * P;
             }
         }
     }
