@@ -23,6 +23,17 @@
 
 #include "model/system.h"
 
+/* the node after and before node i of a closed belt of n nodes */
+static inline int bd_node_next(int i, int n)
+{
+    return i + 1 == n ? 0 : i + 1;
+}
+
+static inline int bd_node_prev(int i, int n)
+{
+    return i == 0 ? n - 1 : i - 1;
+}
+
 /* what a sensor reads at a point of the belt */
 typedef struct bd_belt_sample {
     double x, y;      /* m, where the belt is at the point (its foot on the

@@ -53,7 +53,7 @@ double bd_feed_force(const bd_sim *sim, double v, double m, int landing, int loa
      * belt slower than the material takes nothing from it (its push is
      * left out) */
     if (landing && sim->has_feed && v > 0.0) {
-        double v0 = individual ? def->design.loading_speed : 0.0;
+        double v0 = bd_landing_speed(def, individual, v);
         if (v > v0)
             F -= bd_res_loading_inertia(sim->model->material_mpl, v, v0);
     }

@@ -95,13 +95,16 @@ int bd_run_checks(const bd_sim *sim, const bd_static_result *st, bd_check *out, 
                 BD_CHECK_BELOW);
         }
         if (pd->has_takeup && p->m->movable) {
-            if (isfinite(pd->takeup.travel_max)) {
+            /* an end at 0 is where the carriage starts: at it without
+             * ever being held there, it would fail; held there, the run's
+             * warning says so */
+            if (isfinite(pd->takeup.travel_max) && pd->takeup.travel_max > 0.0) {
                 snprintf(name, sizeof name, "takeup travel out, %s", pd->name);
                 /* the carriage is held at the end it reaches: there it fails */
                 add(out, &n, max, name, "m", p->travel_max, pd->takeup.travel_max,
                     BD_CHECK_BELOW);
             }
-            if (isfinite(pd->takeup.travel_min)) {
+            if (isfinite(pd->takeup.travel_min) && pd->takeup.travel_min < 0.0) {
                 snprintf(name, sizeof name, "takeup travel in, %s", pd->name);
                 add(out, &n, max, name, "m", p->travel_min, pd->takeup.travel_min,
                     BD_CHECK_ABOVE);

@@ -81,8 +81,8 @@ static void add_pulleys(cJSON *layout, const bd_sim *sim)
         cJSON *p = cJSON_CreateObject();
         cJSON_AddStringToObject(p, "name", pd->name);
         /* the centre the belt was laid round: a takeup's may stand off the
-         * file's, moved along its axis until the belt closes at its tension
-         * (the lumped belt's polygon, belt/lumped/layout.c) */
+         * file's, moved along its axis until the belt's stretched length
+         * closes the loop (belt/lumped/layout.c) */
         bd_json_add_number(p, "x_m", arc->centre[0]);
         bd_json_add_number(p, "y_m", arc->centre[1]);
         bd_json_add_number(p, "radius_m", pd->radius);

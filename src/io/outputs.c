@@ -67,9 +67,13 @@ static int finish_part(bd_outputs *o, int which, FILE **f)
     return bad;
 }
 
-/* a failed open: the CSVs opened so far closed and removed */
+/* a failed open: the CSVs opened so far closed and removed, the
+ * envelope's bins freed (the caller closes nothing after a failed open) */
 static void drop_parts(bd_outputs *o)
 {
+    free(o->env_max);
+    free(o->env_min);
+    o->env_max = o->env_min = NULL;
     FILE **f[] = {&o->history, &o->tension, &o->parts};
     int which[] = {BD_OUT_HISTORY, BD_OUT_TENSION, BD_OUT_PARTS};
     for (int k = 0; k < 3; k++)

@@ -705,8 +705,8 @@ static int drive_torque_percent_panel(report *r, bd_plot_axes *a, const bd_csv *
         /* one 100 % line: one drive's rating on it; several drives carry
          * theirs in their legend entries (the series label of a single
          * drive stays its name: mark_extreme finds its summary peak by it) */
-        char *line = lbl(r);
         if (n == 1) {
+            char *line = lbl(r);
             snprintf(label, LABEL_LEN, "%s", g->name[i]);
             snprintf(line, LABEL_LEN, "100 %% = %s N·m (%s)", num, what);
             bd_plot_add_hline(a, 100.0, line, (bd_rgb){0.80, 0.0, 0.0}, 1);

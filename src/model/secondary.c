@@ -88,9 +88,7 @@ void bd_secondary_feed(const bd_model_def *m, double v, bd_feed_resistance *out)
     if (!bd_secondary_individual(m) || !m->material.present || v <= 0.0)
         return;
     const bd_design_def *d = &m->design;
-    /* material landing faster than the belt: its push on the belt is left
-     * out (F_bA and the acceleration zone 0), in static as in the run */
-    double mL = m->material.mass_per_length, v0 = fmin(d->loading_speed, v), g = m->gravity;
+    double mL = m->material.mass_per_length, v0 = bd_landing_speed(m, 1, v), g = m->gravity;
     out->loading_inertia = bd_res_loading_inertia(mL, v, v0);
     if (!d->skirts.present)
         return;

@@ -7,7 +7,18 @@
 #ifndef BD_SECONDARY_H
 #define BD_SECONDARY_H
 
+#include <math.h>
+
 #include "beltdyn/model.h"
+
+/* m/s, the speed material lands at on a belt running at v: the design's
+ * loading_speed in individual mode (none otherwise), and no faster than
+ * the belt: material landing faster does not push it (ISO 5048's F_bA
+ * and its acceleration zone are 0; in static as in the run) */
+static inline double bd_landing_speed(const bd_model_def *m, int individual, double v)
+{
+    return individual ? fmin(m->design.loading_speed, v) : 0.0;
+}
 
 /* what a pulley takes out of the belt, N */
 typedef struct bd_pulley_resistance {

@@ -12,7 +12,7 @@
  * - belt acceleration: the belt speed at the tight-side point averaged over
  *   windows of ACCEL_WINDOW; the acceleration is the change between two
  *   consecutive window means divided by the window. Averaging keeps the
- *   step-scale ripple of the contacts (idlers, chordal action) out of it,
+ *   step-scale ripple of the contacts (the idlers' node passage) out of it,
  *   which a per-step difference would blow up by 1/Δt.
  * - slip: the pulley's surface speed ω·R against the belt speed at the
  *   pulley (the mean of the tight- and slack-side speeds; elastic creep

@@ -1,5 +1,6 @@
 /* Energy bookkeeping (cli.md `energy`): the potential energy is the belt's
- * (its formulation's: gravity of belt and material with y = 0 the datum,
+ * (its formulation's: gravity of belt and material, each from its own
+ * datum (the lumped belt's material from the discharge pulley's height),
  * elastic energy of elements and bending springs), the pulleys' weight, the
  * contact springs of the wraps, the potential −F·q of the takeup pulls (a
  * gravity takeup's counterweight included) and the transmissions' spans.

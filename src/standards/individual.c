@@ -3,8 +3,9 @@
  * DIN 22101 §5.2). Where each acts (model/secondary.c):
  *   - each pulley's wrap and bearing resistance at the pulley: the belt
  *     leaves it with T_out = T_in + F (in the next section's T0);
- *   - F_bA, F_f and F_gl from the feed point on, cleaners from their
- *     pulley on (in the rise of the section starting there).
+ *   - F_bA, F_f and F_gl from the feed point on;
+ *   - cleaners on their pulley, a constant T_out = T_in + F_r (in the
+ *     section's pulley_special; at a drive T1 − T2 = Te − F_r).
  * Wrap and bearings depend on the tensions, which depend on them: a fixed
  * point, reached to 1e-9 of Te in a few passes (their tension terms are
  * ~0.1–0.2 % of T). */
@@ -59,13 +60,15 @@ int bd_individual_resistances(bd_std_ctx *c)
 
     /* each pulley's law, once; the cleaners scrape the belt on their
      * pulley, a constant force: at a drive they come out of the belt's
-     * T1 − T2 there, as in the run (docs/standards.md) */
+     * T1 − T2 there, as in the run (our reading: ISO 5048:1989 Table 3
+     * gives F_r = A·p·μ3, not where it acts; docs/standards.md) */
     bd_pulley_resistance_law *law = calloc((size_t)c->n, sizeof *law);
     if (!law)
         return 1;
     for (int p = 0; p < c->n; p++) {
         bd_secondary_pulley_law(m, p, &law[p]);
         c->sec[bd_std_first_sec(c, p)].pulley_special += law[p].cleaners;
+        r->pulleys[p].cleaners_N = law[p].cleaners;
     }
 
     /* the pulleys' wrap and bearings, to a fixed point with the tensions */
@@ -87,7 +90,6 @@ int bd_individual_resistances(bd_std_ctx *c)
             s->pulley_res = pr.wrap + pr.bearing;
             r->pulleys[p].wrap_N = pr.wrap;
             r->pulleys[p].bearing_N = pr.bearing;
-            r->pulleys[p].cleaners_N = pr.cleaners;
         }
         bd_std_propagate(c);
         pass++;

@@ -611,12 +611,16 @@ static void cases_report(study_run *R)
 {
     const bd_study_options *o = R->s.opt;
     char err[1024], line[1200];
-    if (bd_report_write(o->out_dir, err, sizeof err) != BD_REPORT_OK)
+    if (bd_report_write(o->out_dir, err, sizeof err) != BD_REPORT_OK) {
         snprintf(line, sizeof line, "report of %s: %s", o->out_dir, err);
-    else
-        snprintf(line, sizeof line, "report: %s/report.html", o->out_dir);
-    if (o->message)
-        o->message(line, o->message_ctx);
+        if (o->message)
+            o->message(line, o->message_ctx);
+    } else if (R->table) {
+        /* where the table and the best case go (stdout in the app) */
+        clear_progress(R);
+        fprintf(R->table, "report: %s/report.html\n", o->out_dir);
+        fflush(R->table);
+    }
 }
 
 static int finish(study_run *R, int runner_status, char *err, size_t errlen)

@@ -16,7 +16,8 @@
 # curve radius R = T/(m'g)): the empty belt in the curve lifts while
 # T > T_lift = m'·g·R·cos θ. In the curve θ runs from −1.9° to +5.7°, so
 # cos θ > 0.995; T_lift is taken at cos θ = 1, at most 0.5 % high, which
-# only makes the rest case (21 % below it) harder to pass. At rest (start
+# makes the rest case's check (Tr < T_lift) at most 0.5 % more lenient,
+# well inside its 21 % margin. At rest (start
 # delayed past the run) the curve's tension stays below T_lift: no
 # lift-off. In the start, the belt lifts when the probe in the middle of
 # the curve passes T_lift: the first lift within 0.15 s of the first output

@@ -12,9 +12,8 @@
 set -u
 . "$(dirname "$0")/lib/setup.sh"
 
-sed -e 's/^\(  duration:\).*/\1 5/' -e 's/start: {curve: s-curve, time: 5}/start: {curve: s-curve, time: 2.5}/' \
-    "$EXAMPLES/head_drive.yaml" >"$tmp/default.yaml"
-grep -q 'time: 2.5}' "$tmp/default.yaml" || { echo "FAIL head_drive's start is not the 5 s S-curve"; exit 1; }
+. "$(dirname "$0")/lib/hard_start.sh"
+head_drive_hard_start "$tmp/default.yaml" || { echo "FAIL head_drive's start is not the 5 s S-curve"; exit 1; }
 grep -q '^design:' "$tmp/default.yaml" || { echo "FAIL head_drive has no design section"; exit 1; }
 sed -e 's/^design:/design:\n  safety_factor: {running: 6, starting: 4}/' "$tmp/default.yaml" >"$tmp/lower.yaml"
 sed -e 's/^design:/design:\n  safety_factor: {running: 0, starting: 4}/' "$tmp/default.yaml" >"$tmp/bad.yaml"

@@ -10,9 +10,9 @@
  * fails a model only with --force-check. Issue 10 asks for it on every
  * model. The axial belt holds it (CI and scripts/soak check it); the
  * discrete belt does not yet on every model (the issue's note gives the
- * figures): its nodes passing the idlers cost force the law does not
- * declare (its chordal action on the pulleys is gone since its elements
- * follow the shell).
+ * figures): at the default element a span of a few elements between two
+ * pulleys (a snub beside its drive) and fast empty belts draw more than
+ * the law, by an excess that falls with the element length.
  *
  * The tolerances, and what each allows for:
  * - energy balance 0.5 % of the largest energy flow of the run (input,
@@ -40,7 +40,7 @@
  * - steady drive force within 3 % (discrete) or 1 % (axial, moving_node:
  *   issue 12 asks the same of it, its idler nodes carry their own support
  *   force with no polygon) of the law: the
- *   discrete belt sags between idlers and runs over them as a polygon, so
+ *   discrete belt sags between idlers and its nodes pass over them, so
  *   the weight each idler carries fluctuates with the node passage and is
  *   averaged over the window; the axial belt carries its idlers' resistance
  *   as a distributed force, so only the averaging remains. The error is

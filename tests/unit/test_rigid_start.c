@@ -235,11 +235,15 @@ static void loaded_steady_and_coast(void)
      * the half gap at each end, the idlers N·a. The material starts at
      * x_f = 0.02·L < a, and the first idler carries of the gap before it
      * only what lies beyond x_f, by the lever rule: N·a − x_f²/(2a). Until
-     * issue 10 this law took the whole strands (3 % more here), which the
-     * discrete belt's chordal losses happened to make up. */
-    double Lc = bd_sim_span_length(sim, 1), Lr = bd_sim_span_length(sim, 0);
-    int Nc = (int)lround(Lc / 1.0) - 1, Nr = (int)lround(Lr / 2.5) - 1;
-    double ac = Lc / (Nc + 1), ar = Lr / (Nr + 1), xf = 0.02 * Lc;
+     * issue 10 this law took the whole strands (the pulleys' half gaps
+     * more), which the discrete belt's chordal losses happened to make up.
+     * N and a as the build laid them (set 0 carries, set 1 returns). */
+    double Lc = bd_sim_span_length(sim, 1);
+    int Nc, Nr;
+    double ac, ar;
+    bd_sim_idler_set(sim, 0, &Nc, &ac);
+    bd_sim_idler_set(sim, 1, &Nr, &ar);
+    double xf = 0.02 * Lc;
     double Ll = Nc * ac - xf * xf / (2.0 * ac);
     double want = F_ROLL * G * (M_BELT * (Nc * ac + Nr * ar) + M_LOAD * Ll) + M_LOAD * v * v;
     printf("loaded steady: drive force %.2f N at %.4f m/s; resistances on the idlers f g (m'G L_c,r + "

@@ -74,7 +74,7 @@ static void check_slip_arc(bd_sim *sim, double t)
         }
         prev_stuck = stuck;
     }
-    double T1 = sim->tension[bd_mn_prev(first, n)], T2 = sim->tension[last];
+    double T1 = sim->tension[bd_node_prev(first, n)], T2 = sim->tension[last];
     double v = sim->vx[first], Fc = 10.0 * v * v;
     double want = log((T1 - Fc) / (T2 - Fc)) / mu / BD_DEG;
     double got = slip / R / BD_DEG;

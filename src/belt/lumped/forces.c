@@ -206,7 +206,8 @@ double bd_lumped_elastic_energy(const bd_sim *sim)
     return e + bd_lumped_wrap_elastic_correction(sim);
 }
 
-/* gravity of belt and material (y = 0 the datum) and the elastic energy */
+/* gravity of belt (y = 0 the datum) and material (from the discharge
+ * pulley's height, bd_lumped_material_datum) and the elastic energy */
 double bd_lumped_potential(const bd_sim *sim)
 {
     double g = sim->model->gravity, yd = bd_lumped_material_datum(sim);

@@ -3,7 +3,7 @@
  *
  * The smoothed line: round node k, the quadratic Bézier from the middle of
  * element k − 1 through the corner at node k to the middle of element k
- * (belt_piece below); the pieces meet with one tangent. Seed 001 presses
+ * (piece_at below); the pieces meet with one tangent. Seed 001 presses
  * the roll on the foot point of its centre on the straight element
  * (eqs 4.95–4.102): when a node passes the roll the element over it
  * changes and the normal turns at once by the belt's angle β there, an
@@ -63,19 +63,21 @@ static void note_lifted(bd_sim *sim, const bd_idler *id, double d)
  * middle of element k − 1 (t = 0) through the corner at node k to the
  * middle of element k (t = 1); the pieces of neighbouring nodes meet at
  * the element middles with one tangent (C1). The weights of nodes k − 1,
- * k, k + 1 in its point at t, and that point from c. */
-static void piece_at(const bd_sim *sim, int k, double t, const double c[2], bd_idler_touch *pc)
+ * k, k + 1 in its point at t, and that point from c. Derived here
+ * (docs/physics.md §5). */
+static void piece_at(const bd_sim *sim, int k, double t, const double c[2], bd_idler_touch *pc,
+                     double r[2])
 {
     const int n = sim->model->n;
-    int a = k == 0 ? n - 1 : k - 1, b = k + 1 == n ? 0 : k + 1;
+    int a = bd_node_prev(k, n), b = bd_node_next(k, n);
     pc->node[0] = a;
     pc->node[1] = k;
     pc->node[2] = b;
     pc->w[0] = 0.5 * (1.0 - t) * (1.0 - t);
     pc->w[2] = 0.5 * t * t;
     pc->w[1] = 1.0 - pc->w[0] - pc->w[2];
-    pc->r[0] = pc->w[0] * sim->x[a] + pc->w[1] * sim->x[k] + pc->w[2] * sim->x[b] - c[0];
-    pc->r[1] = pc->w[0] * sim->y[a] + pc->w[1] * sim->y[k] + pc->w[2] * sim->y[b] - c[1];
+    r[0] = pc->w[0] * sim->x[a] + pc->w[1] * sim->x[k] + pc->w[2] * sim->x[b] - c[0];
+    r[1] = pc->w[0] * sim->y[a] + pc->w[1] * sim->y[k] + pc->w[2] * sim->y[b] - c[1];
 }
 
 /* the point of the smoothed belt line nearest the roll's centre c: one
@@ -94,13 +96,13 @@ static void nearest_point(const bd_sim *sim, const bd_idler *id, bd_idler_touch 
     int e = id->tr.element, k;
     double t;
     if (id->tr.gamma >= 0.5) {
-        k = e + 1 == n ? 0 : e + 1;
+        k = bd_node_next(e, n);
         t = id->tr.gamma - 0.5;
     } else {
         k = e;
         t = id->tr.gamma + 0.5;
     }
-    int a = k == 0 ? n - 1 : k - 1, b = k + 1 == n ? 0 : k + 1;
+    int a = bd_node_prev(k, n), b = bd_node_next(k, n);
     /* B(t) = m + t·e1 + ½t²·(e2 − e1), from the centre */
     double e1x = x[k] - x[a], e1y = y[k] - y[a];
     double ddx = x[b] - x[k] - e1x, ddy = y[b] - y[k] - e1y;
@@ -123,11 +125,12 @@ static void nearest_point(const bd_sim *sim, const bd_idler *id, bd_idler_touch 
         k = b;
         t = t - 1.0 > 1.0 ? 1.0 : t - 1.0;
     }
-    piece_at(sim, k, t, id->m->centre, pc);
-    pc->d = sqrt(pc->r[0] * pc->r[0] + pc->r[1] * pc->r[1]);
+    double r[2];
+    piece_at(sim, k, t, id->m->centre, pc, r);
+    pc->d = sqrt(r[0] * r[0] + r[1] * r[1]);
     double inv_d = 1.0 / pc->d;
-    pc->n[0] = pc->r[0] * inv_d;
-    pc->n[1] = pc->r[1] * inv_d;
+    pc->n[0] = r[0] * inv_d;
+    pc->n[1] = r[1] * inv_d;
 }
 
 static void idler_contact(bd_sim *sim, bd_idler *id, const bd_idler_touch *pc)
@@ -176,9 +179,9 @@ static void idler_contact(bd_sim *sim, bd_idler *id, const bd_idler_touch *pc)
     if (sat < -1.0)
         sat = -1.0;
     double frr = im->rolling * fn * sat;
-    /* the stick force, with the rolling resistance's share of the contact
-     * point's tangential acceleration (−frr·Σ w_m²/m_m; the normal force
-     * has none) */
+    /* the stick force (eq 4.113 with the weights), with the rolling
+     * resistance's share of the contact point's tangential acceleration
+     * (−frr·Σ w_m²/m_m, derived here; the normal force has none) */
     double R = im->radius;
     double vr = vt - id->omega * R;
     double ft = aot - frr * inv_m_eff;

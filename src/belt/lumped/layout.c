@@ -72,7 +72,8 @@ static void weight_grid_build(const bd_model_def *def, const bd_path *path, doub
  * The element's nodes carry m'·l0 each (build.c), so this is the rest state
  * their tensions balance; with the stretched length's weight every node of a
  * strand was pulled up by ε·m·g, and a 100 m vertical loop settled 1.3 cm
- * off its laid state (test_vertical_loop). */
+ * off its laid state (test_vertical_loop). Derived here (statics of a
+ * string under its own weight; docs/physics.md §7). */
 static void weight_grid_stretch(weight_grid *g, double Tc, double EA)
 {
     g->W[0] = 0.0;
@@ -221,44 +222,43 @@ static double shift_misfit(double q, void *vctx)
  * elements (a 185 m loop at 3 % took 80,000 and seconds to refuse) */
 #define MIN_STRETCH 0.5
 
-static int compressed(const weight_grid *g, double Tc, double EA, char *err, size_t errlen)
-{
-    long at = 0;
-    for (long i = 1; i <= g->m; i++)
-        if (g->W[i] < g->W[at])
-            at = i;
-    double T = Tc + g->W[at];
-    if (1.0 + T / EA >= MIN_STRETCH)
-        return 0;
-    snprintf(err, errlen, "could not lay the belt on its path: at rest its tension would be "
-             "%.4g N at s = %.4g m, a strain of %.0f %% with axial stiffness %.4g N (a belt "
-             "is not laid compressed by %.0f %% or more); the takeup or initial tension is "
-             "too low for the belt's weight",
-             T, (double)at * g->ds, 100.0 * T / EA, EA, 100.0 * (1.0 - MIN_STRETCH));
-    return 1;
-}
-
 /* the most stretch 1 + T/EA a belt is laid with: a belt's strain is a
  * few per cent; at 100 % the tension is beyond any belt's strength, and
  * the unstretched elements would shrink without bound (an initial tension
  * of 2e13 N on EA 2e3 N made 6 nm elements, fuzz_model) */
 #define MAX_STRETCH 2.0
 
-static int overstretched(const weight_grid *g, double Tc, double EA, char *err, size_t errlen)
+/* a belt laid out of those bounds: refused with where and why (the
+ * weight table's least and most tension, one scan) */
+static int stretch_out_of_bounds(const weight_grid *g, double Tc, double EA, char *err,
+                                 size_t errlen)
 {
-    long at = 0;
-    for (long i = 1; i <= g->m; i++)
-        if (g->W[i] > g->W[at])
-            at = i;
-    double T = Tc + g->W[at];
-    if (1.0 + T / EA <= MAX_STRETCH)
-        return 0;
-    snprintf(err, errlen, "could not lay the belt on its path: at rest its tension would be "
-             "%.4g N at s = %.4g m, a strain of %.3g %% with axial stiffness %.4g N (a belt "
-             "is not laid stretched by %.0f %% or more); the takeup or initial tension is "
-             "too high for the belt",
-             T, (double)at * g->ds, 100.0 * T / EA, EA, 100.0 * (MAX_STRETCH - 1.0));
-    return 1;
+    long lo = 0, hi = 0;
+    for (long i = 1; i <= g->m; i++) {
+        if (g->W[i] < g->W[lo])
+            lo = i;
+        if (g->W[i] > g->W[hi])
+            hi = i;
+    }
+    double T = Tc + g->W[lo];
+    if (1.0 + T / EA < MIN_STRETCH) {
+        snprintf(err, errlen, "could not lay the belt on its path: at rest its tension would be "
+                 "%.4g N at s = %.4g m, a strain of %.0f %% with axial stiffness %.4g N (a belt "
+                 "is not laid compressed by %.0f %% or more); the takeup or initial tension is "
+                 "too low for the belt's weight",
+                 T, (double)lo * g->ds, 100.0 * T / EA, EA, 100.0 * (1.0 - MIN_STRETCH));
+        return 1;
+    }
+    T = Tc + g->W[hi];
+    if (1.0 + T / EA > MAX_STRETCH) {
+        snprintf(err, errlen, "could not lay the belt on its path: at rest its tension would be "
+                 "%.4g N at s = %.4g m, a strain of %.3g %% with axial stiffness %.4g N (a belt "
+                 "is not laid stretched by %.0f %% or more); the takeup or initial tension is "
+                 "too high for the belt",
+                 T, (double)hi * g->ds, 100.0 * T / EA, EA, 100.0 * (MAX_STRETCH - 1.0));
+        return 1;
+    }
+    return 0;
 }
 
 int bd_layout_belt(const bd_model_def *def, const bd_layout_request *req, bd_layout *out,
@@ -302,9 +302,9 @@ int bd_layout_belt(const bd_model_def *def, const bd_layout_request *req, bd_lay
         weight_grid_stretch(&g, Tc, EA);
     } else {
         L_un = L;
-        EA = INFINITY;   /* unstretched: chords are l0 */
+        EA = INFINITY;   /* unstretched: elements are l0 */
     }
-    if (!rest && (compressed(&g, Tc, EA, err, errlen) || overstretched(&g, Tc, EA, err, errlen))) {
+    if (!rest && stretch_out_of_bounds(&g, Tc, EA, err, errlen)) {
         weight_grid_free(&g);
         return 1;
     }
@@ -347,7 +347,7 @@ int bd_layout_belt(const bd_model_def *def, const bd_layout_request *req, bd_lay
     } else {
         /* no takeup: the installed tension T0 (or none, at rest) is kept and
          * the unstretched element length found so the elements close the
-         * loop (the weight's stretch makes it differ from L/(1+T0)/n) */
+         * loop (the weight's stretch makes it differ from L/(1+T0/EA)/n) */
         length_ctx c = {path, &g, EA, Tc, n};
         double l_fit;
         if (secant(length_misfit, &c, l0, l0 * 0.999, 1e-10 * L, &l_fit)) {

@@ -34,7 +34,8 @@ typedef struct bd_wrap_contact {
      * search for the sector's nodes starts */
     int anchor;
     /* step scratch of the contact solve [its sector's node_max]: the
-     * candidate nodes, after the solve the nodes in contact */
+     * candidate nodes, after the solve those the shell pushes or whose
+     * friction carries a wrapped arc's share */
     int *c_node;
     double *c_fn0;          /* N, normal force were the carriage not to accelerate */
     double *c_g;            /* kg, its growth with the carriage's acceleration */
@@ -57,12 +58,11 @@ typedef struct bd_wrap_contact {
 } bd_wrap_contact;
 
 /* an element that runs round a pulley this step (wrap_elements.c): its
- * length's gradients at its start node i and end node j, its tension and
- * the tension's dashpot part */
+ * length's gradients at its start node i and end node j (its tension and
+ * the tension's dashpot part are in sim->tension[e] and td[e]) */
 typedef struct bd_wrapped_element {
     int e;
     double gi[2], gj[2];
-    double T, td;
 } bd_wrapped_element;
 
 /* step (supports phase): where an idler's roll meets the belt's smoothed
@@ -70,9 +70,8 @@ typedef struct bd_wrapped_element {
 typedef struct bd_idler_touch {
     int node[3];
     double w[3];
-    double r[2];     /* m, from the roll's centre to the contact point */
-    double d;        /* m, its length */
-    double n[2];     /* its direction */
+    double d;        /* m, from the roll's centre to the contact point */
+    double n[2];     /* that direction */
 } bd_idler_touch;
 
 /* the lumped belt's state (behind sim->belt_data) */

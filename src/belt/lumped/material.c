@@ -1,6 +1,8 @@
 /* Bulk material on the lumped belt (model-format.md `material`). */
 #include "belt/lumped/lumped.h"
 
+#include "model/secondary.h"
+
 /* material: lands at the feed point with no velocity along the belt, or
  * with design.loading_speed v0 along it (secondary: individual; no faster
  * than the belt) — the momentum is shared, v' = (m·v + Δm·v0)/(m + Δm) —
@@ -17,9 +19,7 @@ static void material_transport(bd_sim *sim)
         double v = bd_tracker_speed(sim, fd);
         if (v > 0.0) {
             double dm = sim->model->material_mpl * v * sim->model->dt;
-            double v0 = sim->model->feed_individual ? sim->model->def->design.loading_speed : 0.0;
-            if (v0 > v)
-                v0 = v;
+            double v0 = bd_landing_speed(sim->model->def, sim->model->feed_individual, v);
             int nodes[2] = {e, j};
             double share[2] = {1.0 - g, g};
             for (int k = 0; k < 2; k++) {
@@ -53,8 +53,11 @@ static void material_transport(bd_sim *sim)
 
 static void material_discharge(bd_sim *sim)
 {
-    /* nodes that entered the discharge pulley's wrap lose their load */
+    /* nodes in contact with the discharge pulley lose their load: on its
+     * shell, or carrying a share of a wrapped arc (up to an element before
+     * the tangent point, pulley_contact.c) */
     const bd_wrap_contact *W = &bd_lumped_of(sim)->wraps[sim->model->discharge_pulley];
+    const double yd = bd_lumped_material_datum(sim);
     for (int c = 0; c < W->contact_count; c++) {
         int i = W->c_node[c];
         double dm = sim->material[i];
@@ -66,7 +69,7 @@ static void material_discharge(bd_sim *sim)
          * whose discharge lies below 0: 37 of the soak's first 76 failures
          * (issue 10) */
         double v2 = sim->vx[i] * sim->vx[i] + sim->vy[i] * sim->vy[i];
-        double h = sim->y[i] - bd_lumped_material_datum(sim);
+        double h = sim->y[i] - yd;
         sim->energy.dissipated += 0.5 * dm * v2 + dm * sim->model->gravity * h;
         sim->mass[i] -= dm;
         bd_node_mass_changed(sim, i);

@@ -3,11 +3,10 @@
  *
  * Normal: a node at distance a < R from the centre is pushed out along
  * n̂ = (x − x_p)/a by a penalty spring (eqs 4.70–4.75; our k_c is in N/m).
- * The spring must be stiff: a wrapped node sinks δ = T·l/(R·k_c), which
- * shortens its chords by δ/R and so lowers the tension on the wrap by
- * EA·δ/R = T·(l/R)²·(EA/l)/k_c. With k_c = 100·EA/l0 that is 0.3% of T for
- * 30° elements. Such a spring is far stiffer than the belt, so it is taken
- * linearly implicit: the force is the one the spring has at the end of the
+ * The tension presses the shell through the wrapped elements' arcs
+ * (wrap_elements.c), not through the nodes, so the spring holds only a
+ * node's weight and inertia; it is stiff (k_c = 100·EA/l0), far stiffer
+ * than the belt, so it is taken linearly implicit: the force is the one the spring has at the end of the
  * step, given the node's other forces F_o and its velocity,
  *   f_n = k_c·(δ − Δt·v_n − Δt²·F_o,n/m) / (1 + k_c·Δt²/m)  ≥ 0,
  * stable for any k_c. A node just off the shell (δ < 0) is in contact when
@@ -81,10 +80,11 @@ void bd_lumped_sector_init(bd_sim *sim, int pulley, bd_wrap_sector *S)
     double half = 0.5 * fabs(arc->sweep) + SECTOR_MARGIN_DEG * BD_DEG + 2.0 * l0 / R;
     S->cos_limit = half >= BD_PI ? -2.0 : cos(half);
     S->reach = R + SECTOR_REACH_ELEMENTS * l0;
-    /* no more than the belt has (compared in double: an absurd l0 would
+    /* no more than the belt has, so the run's walks (bd_lumped_find_sector)
+     * never take a node twice (compared in double: an absurd l0 would
      * overflow the int) */
     double most = ceil(2.0 * half * S->reach / l0) + 8.0;
-    S->node_max = most < (double)sim->model->n + 8.0 ? (int)most : sim->model->n + 8;
+    S->node_max = most < (double)sim->model->n ? (int)most : sim->model->n;
 }
 
 /* the node nearest the arc's middle, once by a full search (the belt laid) */
@@ -163,13 +163,14 @@ int bd_lumped_find_sector(const bd_sim *sim, const bd_pulley_body *p, const bd_w
 #define STICKING 0
 #define SLIPPING_FORWARD 1     /* slips, friction +μ_d·f_n */
 #define SLIPPING_BACK (-1)     /* slips, friction −μ_d·f_n */
-#define OFF 2                  /* no normal force */
+#define OFF 2                  /* no normal force and no arc share */
 /* passes of the carriage's contact set (moving takeups only): the set is
  * the one its acceleration A gives; one pass more when A changes it */
 #define CARRIAGE_PASSES 4
 
-/* The candidates: every node of the sector within the predictive gap of
- * the shell, with the normal force it gets as a function of the
+/* The candidates: every node of the sector's run within the predictive gap
+ * of the shell or carrying a share of a wrapped arc's pressure (its
+ * friction's normal, c_arc), with the normal force it gets as a function of the
  * carriage's acceleration A this step (0 for a pulley that does not
  * move): the shell then ends the step at a velocity larger by Δt·A along
  * the axis a, so the node's end-of-step gap closes by Δt²·A·(n̂·a) more,
@@ -234,13 +235,14 @@ static void gather(bd_sim *sim, bd_pulley_body *p, int moving)
  * that makes its slip speed zero at the end of the step, the shell's
  * surface there moving at t̂·a·(q̇ + Δt·A) + R·(ω + Δt·α):
  *   f_i = b_i − m_i·R·α − m_i·d_i·A,   b_i = m_i·v_r,i/Δt + t̂·F_i,  d_i = t̂·a;
- * a slipping one's is σ_i·μ_d·(f_n0 + g_i·A). The pulley and the carriage:
+ * a slipping one's is σ_i·μ_d·(f_n0 + g_i·A + arc_i), the shell's push
+ * counted only while it pushes. The pulley and the carriage:
  *   I_s·α = T_p + R·Σ f_i,
  *   M_c·A = P + Σ (f_i·d_i − f_n,i·(n̂·a)),
  * two linear equations, solved exactly (Cramer); seed 001 eqs 4.84–4.94
  * for the pulley alone, the carriage row derived here (docs/physics.md §4).
  * A node whose |f_i| passes
- * μ_s·f_n slips and the set is solved again; on a moving carriage the
+ * μ_s·(f_n + arc_i) slips and the set is solved again; on a moving carriage the
  * contact set is the one A gives, solved again when A changes it. */
 static void solve(bd_sim *sim, bd_pulley_body *p, double T_p, double P, double Mc)
 {
@@ -347,8 +349,10 @@ static void solve(bd_sim *sim, bd_pulley_body *p, double T_p, double P, double M
         if (same)
             break;
     }
-    /* apply, and keep only the nodes in contact (c_node, the material's
-     * discharge reads them) */
+    /* apply, and keep only the nodes the shell pushes or whose friction
+     * carries an arc's share (c_node; the material's discharge reads them,
+     * so material leaves a node up to an element before the tangent point
+     * when the element entering the wrap runs round it) */
     double sum = 0.0;
     int kept = 0;
     /* the wrapped elements' arcs press on the shell directly (wrap_elements.c) */

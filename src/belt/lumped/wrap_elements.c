@@ -122,11 +122,11 @@ void bd_lumped_wrap_elements(bd_sim *sim)
         const double R = p->m->radius, wrap = p->m->wrap;
         const double vcx = p->qdot * p->m->axis[0], vcy = p->qdot * p->m->axis[1];
         /* the elements of the run, and the one that enters it */
-        int e = first == 0 ? n - 1 : first - 1;
-        for (int w = 0; w <= count; w++, e = e + 1 == n ? 0 : e + 1) {
+        int e = bd_node_prev(first, n);
+        for (int w = 0; w <= count; w++, e = bd_node_next(e, n)) {
             if (L->wrap_mark[e])
                 continue;
-            int j = e + 1 == n ? 0 : e + 1;
+            int j = bd_node_next(e, n);
             double len, lever, gi[2], gj[2];
             if (!geodesic(p->cx, p->cy, R, wrap, sim->x[e], sim->y[e], sim->x[j],
                                     sim->y[j], &len, &lever, gi, gj))
@@ -141,8 +141,6 @@ void bd_lumped_wrap_elements(bd_sim *sim)
             we->e = e;
             memcpy(we->gi, gi, sizeof we->gi);
             memcpy(we->gj, gj, sizeof we->gj);
-            we->T = T;
-            we->td = td;
             /* −T·∂l/∂c = T·(∂l/∂x_i + ∂l/∂x_j) on the shell */
             W->react[0] += T * (gi[0] + gj[0]);
             W->react[1] += T * (gi[1] + gj[1]);
@@ -172,16 +170,17 @@ void bd_lumped_wrap_forces(bd_sim *sim)
     const int n = sim->model->n;
     for (int w = 0; w < L->wrapped_count; w++) {
         const bd_wrapped_element *we = &L->wrapped[w];
-        int e = we->e, j = e + 1 == n ? 0 : e + 1;
+        int e = we->e, j = bd_node_next(e, n);
         double ux = L->ux[e], uy = L->uy[e];
-        sim->fx[e] -= we->T * (we->gi[0] + ux);
-        sim->fy[e] -= we->T * (we->gi[1] + uy);
-        sim->fx[j] -= we->T * (we->gj[0] - ux);
-        sim->fy[j] -= we->T * (we->gj[1] - uy);
-        sim->fnx[e] -= we->td * (we->gi[0] + ux);
-        sim->fny[e] -= we->td * (we->gi[1] + uy);
-        sim->fnx[j] -= we->td * (we->gj[0] - ux);
-        sim->fny[j] -= we->td * (we->gj[1] - uy);
+        const double T = sim->tension[e], td = L->td[e];
+        sim->fx[e] -= T * (we->gi[0] + ux);
+        sim->fy[e] -= T * (we->gi[1] + uy);
+        sim->fx[j] -= T * (we->gj[0] - ux);
+        sim->fy[j] -= T * (we->gj[1] - uy);
+        sim->fnx[e] -= td * (we->gi[0] + ux);
+        sim->fny[e] -= td * (we->gi[1] + uy);
+        sim->fnx[j] -= td * (we->gj[0] - ux);
+        sim->fny[j] -= td * (we->gj[1] - uy);
         L->wrap_mark[e] = 0;
     }
 }
@@ -200,9 +199,9 @@ double bd_lumped_wrap_elastic_correction(const bd_sim *sim)
         const bd_pulley_body *p = &sim->pulleys[pi];
         int first, count;
         bd_lumped_find_sector(sim, p, &L->wraps[pi], &first, &count);
-        int e = first == 0 ? n - 1 : first - 1;
-        for (int w = 0; w <= count; w++, e = e + 1 == n ? 0 : e + 1) {
-            int j = e + 1 == n ? 0 : e + 1;
+        int e = bd_node_prev(first, n);
+        for (int w = 0; w <= count; w++, e = bd_node_next(e, n)) {
+            int j = bd_node_next(e, n);
             double len, gi[2], gj[2];
             if (!geodesic(p->cx, p->cy, p->m->radius, p->m->wrap, sim->x[e],
                                     sim->y[e], sim->x[j], sim->y[j], &len, NULL, gi, gj))

@@ -83,7 +83,7 @@ static double weight_between(const bd_sim *sim, double a, double b)
 static void cell(const bd_sim *sim, int i, double *a, double *z)
 {
     const bd_mn_model *mm = bd_mn_model_of(sim);
-    int b = bd_mn_prev(i, sim->model->n);
+    int b = bd_node_prev(i, sim->model->n);
     *a = sim->model->s_node0[i] - 0.5 * mm->ds0[b];
     *z = sim->model->s_node0[i] + 0.5 * mm->ds0[i];
 }
@@ -127,12 +127,12 @@ static int setup_movers(bd_sim *sim, bd_diag *diag)
         double c_in = u_in[0] * a[0] + u_in[1] * a[1];
         double c_out = u_out[0] * a[0] + u_out[1] * a[1];
         /* in: back from the tangent-in node */
-        int tin = pp->first, start = bd_mn_prev(tin, n);
+        int tin = pp->first, start = bd_node_prev(tin, n);
         while (mm->kind[start] == BD_MN_FREE)
-            start = bd_mn_prev(start, n);
-        int tout = (pp->first + pp->count - 1) % n, end = bd_mn_next(tout, n);
+            start = bd_node_prev(start, n);
+        int tout = (pp->first + pp->count - 1) % n, end = bd_node_next(tout, n);
         while (mm->kind[end] == BD_MN_FREE)
-            end = bd_mn_next(end, n);
+            end = bd_node_next(end, n);
         pp->in.first = start;
         pp->in.count = (tin - start + n) % n;
         pp->out.first = tout;
@@ -352,7 +352,7 @@ int bd_mn_build(bd_sim *sim, bd_diag *diag)
     mm->feed_node = -1;
     if (mat->present && sim->has_feed)
         mm->feed_node = sim->feed.gamma < 0.5 ? sim->feed.element
-                                              : bd_mn_next(sim->feed.element, n);
+                                              : bd_node_next(sim->feed.element, n);
     if (mat->present)
         mn->fronts.e_tail = mn->fronts.e_head = sim->feed.element;
     mn->liftoff_first_node = -1;
@@ -405,7 +405,7 @@ double bd_mn_stable_step(const bd_sim *sim, bd_time_step_limit *limit)
     for (int i = 0; i < n; i++) {
         if (mm->kind[i] == BD_MN_ARC)
             continue;
-        int b = bd_mn_prev(i, n);
+        int b = bd_node_prev(i, n);
         double m = sim->mass[i] - sim->material[i] - mm->idler_mass[i];
         double la = mm->ds0[b], lb = mm->ds0[i], lmin = fmin(la, lb);
         double K = 2.0 * Tb * (1.0 / la + 1.0 / lb);

@@ -47,7 +47,7 @@ static void elements(bd_sim *sim)
     const int n = sim->model->n;
     const double EA = sim->model->EA, *v = sim->vx;
     for (int e = 0; e < n; e++) {
-        int j = bd_mn_next(e, n);
+        int j = bd_node_next(e, n);
         double rate = v[j] - v[e];
         if (mm->eq[e] >= 0)
             rate += mm->dsq[e] * sim->pulleys[mm->eq[e]].qdot;
@@ -79,7 +79,7 @@ static void bending(const bd_sim *sim, double *out)
     for (int i = 0; i < n; i++) {
         if (mm->kind[i] == BD_MN_ARC)
             continue;
-        int b = bd_mn_prev(i, n), j = bd_mn_next(i, n);
+        int b = bd_node_prev(i, n), j = bd_node_next(i, n);
         double la = mm->ds0[b], lb = mm->ds0[i], h = 0.5 * (la + lb);
         double M = EI * ((w[j] - w[i]) / lb - (w[i] - w[b]) / la) / h;   /* EI·κ_i */
         out[j] -= M / lb;
@@ -94,7 +94,7 @@ static double arc_pressure(const bd_sim *sim, int i)
     const bd_mn_model *mm = bd_mn_model_of(sim);
     const bd_mn *mn = bd_mn_of(sim);
     const int n = sim->model->n;
-    int b = bd_mn_prev(i, n), j = bd_mn_next(i, n);
+    int b = bd_node_prev(i, n), j = bd_node_next(i, n);
     const double *T = sim->tension;
     double N = 0.0, R = 0.0;
     if (mm->on_arc[b]) {
@@ -140,7 +140,7 @@ static void convective(const bd_sim *sim, double *to_a, double *to_z, double *di
     const int n = sim->model->n;
     const double *v = sim->vx, *m = sim->mass, *mi = mm->idler_mass, *icell = mm->inv_cell;
     for (int e = 0; e < n; e++) {
-        int z = bd_mn_next(e, n);
+        int z = bd_node_next(e, n);
         double rho = 0.5 * ((m[e] - mi[e]) * icell[e] + (m[z] - mi[z]) * icell[z]);
         double va = v[e], vz = v[z];
         double d = 0.25 * rho * fabs(va + vz) * (vz - va);
@@ -165,7 +165,7 @@ void bd_mn_forces(bd_sim *sim)
 
     const double *v = sim->vx, *wd = sim->vy, *w = mn->w, *T = sim->tension, *td = mn->td;
     for (int i = 0; i < n; i++) {
-        int b = bd_mn_prev(i, n), j = bd_mn_next(i, n);
+        int b = bd_node_prev(i, n), j = bd_node_next(i, n);
         double vi = v[i];
         double m = sim->mass[i] - mm->idler_mass[i];
         /* the elastic pull along the path, and the mesh's dashpot part

@@ -37,7 +37,7 @@ void bd_mn_integrate(bd_sim *sim, double *ke_out, double *w_nc_out)
     const double EA = sim->model->EA;
     double d_up = 0.0;
     for (int i = 0; i < n; i++) {
-        int b = bd_mn_prev(i, n), up = vn[i] >= 0.0 ? b : i;
+        int b = bd_node_prev(i, n), up = vn[i] >= 0.0 ? b : i;
         double lam = mn->len[up] / dX[up];
         flux[i] = dt * vn[i] / lam;
         double de = mn->len[i] / dX[i] - mn->len[b] / dX[b];
@@ -45,7 +45,7 @@ void bd_mn_integrate(bd_sim *sim, double *ke_out, double *w_nc_out)
     }
     sim->energy.dissipated += d_up * dt;
     for (int e = 0; e < n; e++)
-        dX[e] += flux[e] - flux[bd_mn_next(e, n)];
+        dX[e] += flux[e] - flux[bd_node_next(e, n)];
     for (int i = 0; i < n; i++)
         v[i] = vn[i];
     /* across the spans */
@@ -115,7 +115,7 @@ double bd_mn_elastic_energy(const bd_sim *sim)
         for (int i = 0; i < n; i++) {
             if (mm->kind[i] == BD_MN_ARC)
                 continue;
-            int b = bd_mn_prev(i, n), j = bd_mn_next(i, n);
+            int b = bd_node_prev(i, n), j = bd_node_next(i, n);
             double la = mm->ds0[b], lb = mm->ds0[i], h = 0.5 * (la + lb);
             double kap = ((mn->w[j] - mn->w[i]) / lb - (mn->w[i] - mn->w[b]) / la) / h;
             e += 0.5 * EI * kap * kap * h;   /* κ as forces.c's bending() */

@@ -208,7 +208,7 @@ static void element_geometry(bd_sim *sim)
     const bd_path *path = &sim->model->path;
     double L = path->length;
     for (int e = 0; e < n; e++) {
-        int j = bd_mn_next(e, n);
+        int j = bd_node_next(e, n);
         double ds = sim->model->s_node0[j] - sim->model->s_node0[e];
         if (ds <= 0.0)
             ds += L;
@@ -250,7 +250,7 @@ void bd_mn_layout_fill(bd_sim *sim)
     for (int i = 0; i < n; i++) {
         if (mm->kind[i] != BD_MN_ARC)
             continue;
-        int b = bd_mn_prev(i, n);
+        int b = bd_node_prev(i, n);
         double half = 0.0;
         if (mm->on_arc[b]) {
             half += 0.5 * mm->ds0[b];
@@ -266,7 +266,7 @@ void bd_mn_layout_fill(bd_sim *sim)
         if (mm->kind[i] != BD_MN_ARC)
             continue;
         bd_mn_pulley *pp = &mm->pulleys[mm->pulley[i]];
-        int b = bd_mn_prev(i, n);
+        int b = bd_node_prev(i, n);
         if (!(mm->kind[b] == BD_MN_ARC && mm->pulley[b] == mm->pulley[i]))
             pp->first = i;
         pp->count++;

@@ -140,16 +140,6 @@ static inline bd_mn_model *bd_mn_model_build(bd_sim *sim)
     return (bd_mn_model *)sim->own->belt_model;
 }
 
-static inline int bd_mn_next(int i, int n)
-{
-    return i + 1 == n ? 0 : i + 1;
-}
-
-static inline int bd_mn_prev(int i, int n)
-{
-    return i == 0 ? n - 1 : i - 1;
-}
-
 /* element e's length along its path now: at q = 0, plus its share of
  * the carriage travel the belt has seen (forces.c, integrate.c) */
 static inline double bd_mn_element_ds(const bd_mn_model *mm, const bd_mn *mn, int e)
@@ -176,7 +166,7 @@ static inline double bd_mn_element_length(const bd_mn_model *mm, const bd_mn *mn
     *sn = 0.0;
     if (mm->on_arc[e])
         return ds;
-    int j = bd_mn_next(e, n);
+    int j = bd_node_next(e, n);
     double dw = mn->w[j] - mn->w[e], dl = ds - mm->kw[e] * (mn->w[e] + mn->w[j]);
     double l = sqrt(dl * dl + dw * dw);
     *cs = dl / l;

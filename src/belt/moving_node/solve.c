@@ -140,7 +140,7 @@ static void run_solve(bd_sim *sim, int first, int count, double dt)
     double prev_c = 0.0, px = 0.0, pa = 0.0, pb = 0.0;
     int i = first;
     for (int k = 0; k < count; k++) {
-        int b = bd_mn_prev(i, n);
+        int b = bd_node_prev(i, n);
         double al = mn->ca[b], ar = mn->ca[i];
         double D = sim->mass[i] / dt + al + ar;
         double r = mn->rhs[i] + slip_force(sim, i);
@@ -162,14 +162,14 @@ static void run_solve(bd_sim *sim, int first, int count, double dt)
         ya[i] = pa;
         yb[i] = pb;
         prev_c = c;
-        i = bd_mn_next(i, n);
+        i = bd_node_next(i, n);
     }
     /* back substitution */
     int last = (first + count - 1) % n;
     i = last;
     for (int k = count - 2; k >= 0; k--) {
         int j = i;
-        i = bd_mn_prev(i, n);
+        i = bd_node_prev(i, n);
         x[i] -= cp[i] * x[j];
         ya[i] -= cp[i] * ya[j];
         yb[i] -= cp[i] * yb[j];
@@ -296,10 +296,10 @@ static void solve_pass(bd_sim *sim, double dt, double *omega, double *fr)
      * nodes' rows take from it into the pulley system */
     int s = s0;
     do {
-        int first = bd_mn_next(s, n), count = 0, e = first;
+        int first = bd_node_next(s, n), count = 0, e = first;
         while (!is_stuck(mn, e)) {
             count++;
-            e = bd_mn_next(e, n);
+            e = bd_node_next(e, n);
         }
         if (count > 0)
             run_solve(sim, first, count, dt);
@@ -314,7 +314,7 @@ static void solve_pass(bd_sim *sim, double dt, double *omega, double *fr)
      * their runs (p0 + qa·v_left end + qb·v_right end) or their pulleys */
     s = s0;
     do {
-        int b = bd_mn_prev(s, n), j = bd_mn_next(s, n);
+        int b = bd_node_prev(s, n), j = bd_node_next(s, n);
         double ab = mn->ca[b], as = mn->ca[s];
         double D = sim->mass[s] / dt + ab + as;
         affine vs = surface(sim, s);
@@ -376,7 +376,7 @@ static void solve_pass(bd_sim *sim, double dt, double *omega, double *fr)
             mn->frg[3 * s + k] = gk[k];
         }
         do {
-            s = bd_mn_next(s, n);
+            s = bd_node_next(s, n);
         } while (!is_stuck(mn, s));
     } while (s != s0);
 
@@ -396,16 +396,16 @@ static void solve_pass(bd_sim *sim, double dt, double *omega, double *fr)
             if (mn->frp[3 * s + k] >= 0)
                 f += mn->frg[3 * s + k] * omega[mn->frp[3 * s + k]];
         fr[s] = f;
-        int e = bd_mn_next(s, n);
+        int e = bd_node_next(s, n);
         int first = e, count = 0;
         while (!is_stuck(mn, e)) {
             count++;
-            e = bd_mn_next(e, n);
+            e = bd_node_next(e, n);
         }
         if (count > 0) {
             affine R = surface(sim, e);
             double vr = R.c0 + (R.p >= 0 ? R.g * omega[R.p] : 0.0);
-            for (int k = 0, i = first; k < count; k++, i = bd_mn_next(i, n))
+            for (int k = 0, i = first; k < count; k++, i = bd_node_next(i, n))
                 mn->vnew[i] = mn->p0[i] + mn->qa[i] * vl + mn->qb[i] * vr;
         }
         s = e;
@@ -500,7 +500,7 @@ void bd_mn_solve(bd_sim *sim)
     const double dt = sim->model->dt, *v = sim->vx;
     coefs(sim, dt);
     for (int i = 0; i < n; i++) {
-        int b = bd_mn_prev(i, n), j = bd_mn_next(i, n);
+        int b = bd_node_prev(i, n), j = bd_node_next(i, n);
         mn->rhs[i] = sim->mass[i] * v[i] / dt + sim->fx[i]
                    + mn->cb[i] * (v[j] - v[i]) - mn->cb[b] * (v[i] - v[b]);
     }
@@ -532,7 +532,7 @@ void bd_mn_solve(bd_sim *sim)
     }
     const double *vn = mn->vnew;
     for (int i = 0; i < n; i++) {
-        int b = bd_mn_prev(i, n), j = bd_mn_next(i, n);
+        int b = bd_node_prev(i, n), j = bd_node_next(i, n);
         double dmi = 0.5 * (vn[j] - vn[i] + v[j] - v[i]), dmb = 0.5 * (vn[i] - vn[b] + v[i] - v[b]);
         double damp = mm->c[i] * dmi - mm->c[b] * dmb
                     + mn->cna[i] * (vn[j] - vn[i]) + mn->cnb[i] * (v[j] - v[i])
@@ -556,7 +556,7 @@ void bd_mn_solve(bd_sim *sim)
         const bd_mn_stretch *st[2] = {&pp->in, &pp->out};
         for (int h = 0; h < 2; h++)
             for (int k = 0; k < st[h]->count; k++) {
-                int e = (st[h]->first + k) % n, j = bd_mn_next(e, n);
+                int e = (st[h]->first + k) % n, j = bd_node_next(e, n);
                 double d = mm->c[e] * (0.5 * (vn[j] - vn[e] + v[j] - v[e]) + mm->dsq[e] * pb->qdot);
                 double Tel = sim->tension[e] - mn->td[e];
                 fa -= (Tel + d) * mn->cos_e[e] * mm->dsq[e];
