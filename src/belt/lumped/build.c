@@ -37,6 +37,8 @@ static const size_t WRAP_DOUBLES[] = {offsetof(bd_wrap_contact, c_fn0),
                                       offsetof(bd_wrap_contact, run_arc),
                                       offsetof(bd_wrap_contact, c_tx),
                                       offsetof(bd_wrap_contact, c_ty),
+                                      offsetof(bd_wrap_contact, c_nx),
+                                      offsetof(bd_wrap_contact, c_ny),
                                       offsetof(bd_wrap_contact, c_f)};
 #define COUNT(a) ((int)(sizeof a / sizeof a[0]))
 

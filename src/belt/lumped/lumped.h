@@ -45,7 +45,9 @@ typedef struct bd_wrap_contact {
      * node of the run carries, by its place in the run (wrap_elements.c
      * writes, gather reads) */
     double *run_arc;
-    double *c_tx, *c_ty;    /* unit tangent (positive in the wrap sense) */
+    double *c_tx, *c_ty;    /* unit direction of its friction: the belt's
+                               at the node (positive in the wrap sense) */
+    double *c_nx, *c_ny;    /* unit normal of the shell (outward, radial) */
     double *c_f;            /* N, friction (+ = retards the belt) */
     int *c_state;           /* sticking, slipping forward or back, off */
     int *c_press;           /* 1: the shell pushes it (f_n > 0) */

@@ -16,8 +16,23 @@
  * k_c·δ is conservative (½k_cδ² is potential energy); the rest of f_n, what
  * the implicit step adds to stop the node, is booked as non-conservative.
  *
- * Friction: tangent t̂ = wrap·perp(n̂) points the way the belt travels;
- * the slip speed is v_r = t̂·(v_i − v_p) − R·ω (eq 4.78). The stick force f_i
+ * Friction: t̂ points the way the belt travels at the node: wrap·perp(n̂)
+ * on the shell and within the contact's gap, and beyond it (a node
+ * carrying a share of a wrapped arc's pressure, below) along the tangent
+ * line from the node to the shell,
+ *   t̂ = (R·wrap·perp(n̂) ∓ L·n̂)/a,   L = √(a² − R²)
+ * (− before the arc, + after it), the line the wrapped element runs along
+ * (wrap_elements.c). Until issue 10 an off-shell node took the shell's
+ * tangent at its own angle, which leans by acos(R/a) from its path: the
+ * stick force held its speed along that line to the shell's, which a node
+ * running down the tangent line never has, so it slipped and dragged on
+ * every pulley in turn (generated empty belts: 40 W at each idle pulley,
+ * seed 1058 16 % above its law, 3.4 % now). Within the gap the shell's
+ * tangent is kept: there the spring acts, solved before the friction, and
+ * a friction with a part along the normal pushed the node against it (the
+ * dissipated energy fell at a start). The slip speed is
+ * v_r = t̂·(v_i − v_p) − R·ω (eq 4.78); the moment of the force about the
+ * centre is R·f on either line. The stick force f_i
  * (on the node −f_i·t̂, on the pulley +f_i·R as torque) is the one that makes
  * every sticking node's v_r zero at the end of the step, given the other
  * forces F_i on the nodes and the external torque T_p on the pulley
@@ -225,8 +240,24 @@ static void gather(bd_sim *sim, bd_pulley_body *p, int moving)
         W->c_g[c] = g;
         W->c_arc[c] = arc;
         W->c_spring[c] = delta > 0.0 ? k_c * delta : 0.0;
-        W->c_tx[c] = -p->m->wrap * ny;
-        W->c_ty[c] = p->m->wrap * nx;
+        W->c_nx[c] = nx;
+        W->c_ny[c] = ny;
+        /* the belt's direction at the node: the shell's tangent on it or
+         * within the contact's gap (so that its friction has no part along
+         * the normal, which the spring above did not see), beyond it the
+         * tangent line from the node to the shell (the way the wrapped
+         * element runs, wrap_elements.c), towards the shell before the
+         * arc's middle and away from it after */
+        double tx = -p->m->wrap * ny, ty = p->m->wrap * nx;
+        if (!near) {
+            double L = sqrt(a2 - R * R);
+            const bd_wrap_sector *S = sector_of(sim, p);
+            double side = p->m->wrap * (S->mid[0] * ny - S->mid[1] * nx) < 0.0 ? -1.0 : 1.0;
+            tx = (R * tx + side * L * nx) / a;
+            ty = (R * ty + side * L * ny) / a;
+        }
+        W->c_tx[c] = tx;
+        W->c_ty[c] = ty;
     }
 }
 
@@ -269,8 +300,8 @@ static void solve(bd_sim *sim, bd_pulley_body *p, double T_p, double P, double M
                     continue;
                 int k = W->c_node[c];
                 double d = W->c_tx[c] * ax + W->c_ty[c] * ay;
-                /* n̂·a, with n̂ = wrap·(t_y, −t_x) */
-                double cn = p->m->wrap * (W->c_ty[c] * ax - W->c_tx[c] * ay);
+                /* n̂·a, the shell's normal along the axis */
+                double cn = W->c_nx[c] * ax + W->c_ny[c] * ay;
                 const int press = W->c_press[c];
                 if (press) {
                     r2 -= W->c_fn0[c] * cn;
@@ -368,7 +399,7 @@ static void solve(bd_sim *sim, bd_pulley_body *p, double T_p, double P, double M
             continue;
         int k = W->c_node[c];
         double tx = W->c_tx[c], ty = W->c_ty[c];
-        double nx = p->m->wrap * ty, ny = -p->m->wrap * tx;
+        double nx = W->c_nx[c], ny = W->c_ny[c];
         double f = st == STICKING ? W->c_f[c] : st * p->m->mu_d * (fn + W->c_arc[c]);
         double fd = W->c_press[c] ? fn - W->c_spring[c] : 0.0;
         sim->fx[k] += fn * nx - f * tx;
