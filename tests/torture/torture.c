@@ -10,9 +10,9 @@
  * fails a model only with --force-check. Issue 10 asks for it on every
  * model. The axial belt holds it (CI and scripts/soak check it); the
  * discrete belt does not yet on every model (the issue's note gives the
- * figures): at the default element a span of a few elements between two
- * pulleys (a snub beside its drive) and fast empty belts draw more than
- * the law, by an excess that falls with the element length.
+ * figures): at the default element some draw more than the law, mostly
+ * fast empty belts whose sagging span lands on a takeup pulley (the nodes'
+ * landing impacts), by an excess that falls with the element length.
  *
  * The tolerances, and what each allows for:
  * - energy balance 0.5 % of the largest energy flow of the run (input,
