@@ -22,7 +22,8 @@
  * line from the node to the shell,
  *   t̂ = (R·wrap·perp(n̂) ∓ L·n̂)/a,   L = √(a² − R²)
  * (− before the arc, + after it), the line the wrapped element runs along
- * (wrap_elements.c). Until issue 10 an off-shell node took the shell's
+ * (wrap_elements.c; derived here, plane geometry of a tangent to a circle,
+ * docs/physics.md §4). Until issue 10 an off-shell node took the shell's
  * tangent at its own angle, which leans by acos(R/a) from its path: the
  * stick force held its speed along that line to the shell's, which a node
  * running down the tangent line never has, so it slipped and dragged on
@@ -143,7 +144,7 @@ int bd_lumped_find_sector(const bd_sim *sim, const bd_pulley_body *p, const bd_w
     int a = W->anchor;
     double da = hypot(sim->x[a] - mx, sim->y[a] - my);
     for (int it = 0; it < n; it++) {
-        int f = a + 1 == n ? 0 : a + 1, b = a == 0 ? n - 1 : a - 1;
+        int f = bd_node_next(a, n), b = bd_node_prev(a, n);
         double df = hypot(sim->x[f] - mx, sim->y[f] - my);
         double db = hypot(sim->x[b] - mx, sim->y[b] - my);
         if (df < da && df <= db) {
@@ -158,13 +159,13 @@ int bd_lumped_find_sector(const bd_sim *sim, const bd_pulley_body *p, const bd_w
     }
     int lo = a, c = 1;
     while (c < S->node_max) {
-        int b = lo == 0 ? n - 1 : lo - 1;
+        int b = bd_node_prev(lo, n);
         if (!bd_lumped_in_sector(sim, p, b))
             break;
         lo = b;
         c++;
     }
-    for (int k = a + 1 == n ? 0 : a + 1; c < S->node_max; k = k + 1 == n ? 0 : k + 1) {
+    for (int k = bd_node_next(a, n); c < S->node_max; k = bd_node_next(k, n)) {
         if (!bd_lumped_in_sector(sim, p, k))
             break;
         c++;
@@ -213,7 +214,8 @@ static void gather(bd_sim *sim, bd_pulley_body *p, int moving)
     W->contact_count = 0;
     /* the sector's run, found in the forces phase (wrap_elements.c) */
     const int first = W->run_first, count = W->run_count;
-    for (int w = 0, k = first; w < count; w++, k = k + 1 == n ? 0 : k + 1) {
+    const double *mid = sector_of(sim, p)->mid;
+    for (int w = 0, k = first; w < count; w++, k = bd_node_next(k, n)) {
         /* the run's share of the wrapped arcs' pressure (wrap_elements.c) */
         double arc = W->run_arc[w];
         double rx = sim->x[k] - p->cx, ry = sim->y[k] - p->cy;
@@ -251,8 +253,7 @@ static void gather(bd_sim *sim, bd_pulley_body *p, int moving)
         double tx = -p->m->wrap * ny, ty = p->m->wrap * nx;
         if (!near) {
             double L = sqrt(a2 - R * R);
-            const bd_wrap_sector *S = sector_of(sim, p);
-            double side = p->m->wrap * (S->mid[0] * ny - S->mid[1] * nx) < 0.0 ? -1.0 : 1.0;
+            double side = p->m->wrap * (mid[0] * ny - mid[1] * nx) < 0.0 ? -1.0 : 1.0;
             tx = (R * tx + side * L * nx) / a;
             ty = (R * ty + side * L * ny) / a;
         }
@@ -447,7 +448,7 @@ double bd_lumped_wrap_energy(const bd_sim *sim, const bd_pulley_body *p)
     double e = 0.0, R = p->m->radius;
     int first, count;
     bd_lumped_find_sector(sim, p, W, &first, &count);
-    for (int w = 0, k = first; w < count; w++, k = k + 1 == n ? 0 : k + 1) {
+    for (int w = 0, k = first; w < count; w++, k = bd_node_next(k, n)) {
         double a = hypot(sim->x[k] - p->cx, sim->y[k] - p->cy);
         if (a < R)
             e += 0.5 * bd_lumped_model_of(sim)->k_contact * (R - a) * (R - a);
