@@ -84,7 +84,8 @@ typedef struct bd_belt_ops {
     void (*material)(bd_sim *sim);
 
     /* energy: the belt's potential (elastic, gravity of belt and load),
-     * the elastic energy alone, and what the wrap of pulley p stores */
+     * the elastic energy alone, and what the wrap of pulley p stores
+     * (NULL: the forces phase sums it into bd_energy `springs`) */
     double (*potential)(const bd_sim *sim);
     double (*elastic_energy)(const bd_sim *sim);
     double (*wrap_energy)(const bd_sim *sim, const bd_pulley_body *p);

@@ -132,6 +132,7 @@ typedef struct bd_idler_model {
     double s;              /* m, path coordinate of its contact point */
     double inv_inertia;    /* 1/(kg·m²) */
     double r2_per_inertia; /* 1/kg, R²/I */
+    double half_per_k;     /* m/N, 1/(2k_c): a spring's energy f²/(2k_c) */
 } bd_idler_model;
 
 typedef struct bd_idler {
@@ -140,6 +141,7 @@ typedef struct bd_idler {
     double omega;          /* rad/s, + = surface moves with the belt (parts) */
     double alpha;          /* rad/s² this step (supports) */
     double torque;         /* N·m belt friction torque this step (supports) */
+    double spring_energy;  /* J, f_n²/(2k_c) of its contact this step (supports) */
 } bd_idler;
 
 typedef struct bd_probe {
@@ -194,6 +196,16 @@ typedef struct bd_energy {
      * over), not taken back */
     double step_input_at_t;
     double initial;        /* E_kin + E_pot at t = 0 */
+    /* J, what the contacts' penalty springs (the belt on pulley shells and
+     * idlers) hold at t, written by the forces phase (0 for a belt that
+     * books them otherwise), and at t = 0. The lumped belt books the
+     * contacts' whole normal forces as non-conservative work
+     * (pulley_contact.c, idler_contact.c), so the energy a loaded spring
+     * gives back as the belt lifts off would read as a fall of the
+     * dissipated energy: it counts as potential energy and the dissipated
+     * energy is net of it (bd_energy_at_t) */
+    double springs, springs0;
+    int springs_started;   /* springs0 and initial include the springs */
     double max_kinetic;
     double balance_error_rel; /* largest so far */
     /* negative dissipation: the largest fall of `dissipated` between two

@@ -20,7 +20,8 @@ double bd_energy_potential(const bd_sim *sim)
     for (int i = 0; i < sim->model->pulley_count; i++) {
         const bd_pulley_body *p = &sim->pulleys[i];
         e += p->m->def->mass * g * p->cy;
-        e += belt->wrap_energy(sim, p);
+        if (belt->wrap_energy)
+            e += belt->wrap_energy(sim, p);
         for (int k = p->m->first_part; k < p->m->first_part + p->m->part_count; k++)
             e += bd_part_potential(sim, &sim->parts[k]);
     }
@@ -61,10 +62,12 @@ void bd_energy_update_balance(bd_sim *sim)
  * [t − Δt/2, t + Δt/2], half a step past t. Without this the balance erred
  * by (input − dissipated power)·Δt/2, first order in Δt: 0.6–0.9 % of the
  * energy scale on motor starts, whose torque changes by 10 kN·m in 0.1 s,
- * and back to zero at steady running. */
+ * and back to zero at steady running. The contacts' springs' energy
+ * (bd_energy `springs`) counts as potential, not as dissipated. */
 void bd_energy_at_t(const bd_energy *en, double *dissipated, double *input)
 {
-    *dissipated = en->dissipated - 0.5 * en->step_dissipated;
+    /* net of what the contacts' springs took in since t = 0 (bd_energy) */
+    *dissipated = en->dissipated - 0.5 * en->step_dissipated - (en->springs - en->springs0);
     *input = en->input - 0.5 * en->step_input;
 }
 

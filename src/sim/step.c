@@ -75,6 +75,7 @@ static int check_elements(bd_sim *sim)
 int bd_step_forces(bd_sim *sim)
 {
     const bd_belt_ops *belt = sim->model->belt;
+    sim->energy.springs = 0.0;   /* summed by the contacts below */
     belt->forces(sim);
     if (check_elements(sim))
         return 1;
@@ -155,6 +156,15 @@ int bd_step_once(bd_sim *sim)
     /* forces → part torques → wrap coupling → supports */
     if (bd_step_forces(sim))
         return 1;
+    /* the contacts' springs at t (the forces phase just summed them):
+     * potential energy, from the first step on (bd_energy) */
+    if (!en->springs_started) {
+        en->springs_started = 1;
+        en->springs0 = en->springs;
+        en->initial += en->springs;
+    }
+    if (sim->want_energy || sim->energy_every_step)
+        en->potential += en->springs;
 
     /* integrate: belt nodes, then the parts (pulleys, transmissions,
      * carriages, idlers), then what follows the parts' motion */

@@ -32,7 +32,6 @@ static const size_t BELT_DOUBLES[] = {offsetof(bd_lumped, ux), offsetof(bd_lumpe
                                       offsetof(bd_lumped, pw), offsetof(bd_lumped, ek)};
 static const size_t WRAP_DOUBLES[] = {offsetof(bd_wrap_contact, c_fn0),
                                       offsetof(bd_wrap_contact, c_g),
-                                      offsetof(bd_wrap_contact, c_spring),
                                       offsetof(bd_wrap_contact, c_arc),
                                       offsetof(bd_wrap_contact, run_arc),
                                       offsetof(bd_wrap_contact, c_tx),
@@ -131,6 +130,7 @@ static void setup_idlers(bd_sim *sim)
             im->rolling = set->rolling_resistance;
             /* stiff, linearly implicit contact (idler_contact.c) */
             im->k_contact = bd_lumped_model_of(sim)->k_contact;
+            im->half_per_k = 0.5 / im->k_contact;
             im->set = k;
         }
     }

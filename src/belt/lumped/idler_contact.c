@@ -29,7 +29,10 @@
  * k_c·δ ≈ f_n, and booked as a spring k_c·δ did "work" that ½k_c·δ² never
  * stored (the balance of a belt falling onto its rolls from rest, generated
  * seed 1028: 0.77 % against 0.03 %). The energy the contact really stores,
- * f_n²/(2k_c), is millijoules.
+ * f_n²/(2k_c), is millijoules; it is counted as potential energy (summed
+ * here, sim/energy.c), since the spring gives it back as the belt lifts:
+ * booked as dissipated only, that read as negative dissipation at starts
+ * from rest (generated seeds 1162, 1335, 1403, 1441, issue 10).
  *
  * Rolling (indentation) resistance: a force rr·f_n on the belt against its
  * motion over the idler (model-format.md `rolling_resistance`), smoothed
@@ -133,6 +136,20 @@ static void nearest_point(const bd_sim *sim, const bd_idler *id, bd_idler_touch 
     pc->n[1] = r[1] * inv_d;
 }
 
+/* What the contact's spring holds at t (bd_energy `springs`), as the
+ * account needs it: the linearly implicit force is the spring's at the end
+ * of the step, f_k = k_c·δ_k+1, and its work is booked with the mid-step
+ * velocity, −(δ_k+1 − δ_k−1)/2 per step, so the booked work less the change
+ * of E_k = (f_k² + f_k−1²)/(4k_c) is k_c·(δ_k+1 − δ_k−1)²/4 ≥ 0 (derived
+ * here, docs/physics.md §9): with this step's f²/(2k_c) alone the
+ * dissipated energy still fell by millijoules as the belt settled on its
+ * rolls (generated seeds 1162, 1403). e is f_n²/(2k_c) now. */
+static void spring_energy(bd_sim *sim, bd_idler *id, double e)
+{
+    sim->energy.springs += 0.5 * (e + id->spring_energy);
+    id->spring_energy = e;
+}
+
 static void idler_contact(bd_sim *sim, bd_idler *id, const bd_idler_touch *pc)
 {
     id->alpha = 0.0;
@@ -141,6 +158,7 @@ static void idler_contact(bd_sim *sim, bd_idler *id, const bd_idler_touch *pc)
     const double d = pc->d, nx = pc->n[0], ny = pc->n[1];
     if (d >= im->radius + IDLER_CONTACT_GAP * sim->model->l0) {
         note_lifted(sim, id, d);
+        spring_energy(sim, id, 0.0);
         return;
     }
     const int *nd = pc->node;
@@ -163,6 +181,7 @@ static void idler_contact(bd_sim *sim, bd_idler *id, const bd_idler_touch *pc)
               / (1.0 + im->k_contact * dt * dt * inv_m_eff);
     if (fn <= 0.0) {
         note_lifted(sim, id, d);
+        spring_energy(sim, id, 0.0);
         return;
     }
     /* tangent along the travel direction */
@@ -200,6 +219,7 @@ static void idler_contact(bd_sim *sim, bd_idler *id, const bd_idler_touch *pc)
     }
     id->torque = f * R;
     id->alpha = id->torque * im->inv_inertia;
+    spring_energy(sim, id, fn * fn * im->half_per_k);
 }
 
 /* the supports phase: every idler, after the wraps; where each touches

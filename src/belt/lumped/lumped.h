@@ -33,13 +33,15 @@ typedef struct bd_wrap_contact {
     /* step: the node nearest the arc's middle, where the next step's
      * search for the sector's nodes starts */
     int anchor;
+    /* step (wrap coupling): J, Σ f_n²/(2k_c) of its contacts this step
+     * (pulley_contact.c, the springs' energy) */
+    double spring_e;
     /* step scratch of the contact solve [its sector's node_max]: the
      * candidate nodes, after the solve those the shell pushes or whose
      * friction carries a wrapped arc's share */
     int *c_node;
     double *c_fn0;          /* N, normal force were the carriage not to accelerate */
     double *c_g;            /* kg, its growth with the carriage's acceleration */
-    double *c_spring;       /* N, the contact spring's own force k_c·δ */
     double *c_arc;          /* N, the arcs' pressure its friction carries */
     /* step (forces phase) [node_max]: N, the wrapped arcs' pressure each
      * node of the run carries, by its place in the run (wrap_elements.c
@@ -145,7 +147,6 @@ int bd_lumped_find_sector(const bd_sim *sim, const bd_pulley_body *p, const bd_w
                           int *first, int *count);
 int bd_lumped_in_sector(const bd_sim *sim, const bd_pulley_body *p, int k);
 void bd_lumped_wrap(bd_sim *sim, bd_pulley_body *p, double external_torque);
-double bd_lumped_wrap_energy(const bd_sim *sim, const bd_pulley_body *p);
 void bd_lumped_idlers(bd_sim *sim);
 
 /* material.c: feed and discharge */

@@ -22,7 +22,8 @@ const bd_belt_ops bd_lumped_ops = {
     .material = bd_lumped_material,
     .potential = bd_lumped_potential,
     .elastic_energy = bd_lumped_elastic_energy,
-    .wrap_energy = bd_lumped_wrap_energy,
+    /* the shell contacts' springs: bd_energy `springs` (pulley_contact.c) */
+    .wrap_energy = NULL,
     .support_inertia = bd_lumped_support_inertia,
     .point_init = bd_tracker_init,
     .point_update = bd_tracker_update,

@@ -12,9 +12,16 @@
  * stable for any k_c. A node just off the shell (δ < 0) is in contact when
  * this force is positive: it would reach the shell during the step. Without
  * that, nodes resting on the shell chatter in and out of contact and the
- * belt creeps on the pulley for want of friction. The spring's own force
- * k_c·δ is conservative (½k_cδ² is potential energy); the rest of f_n, what
- * the implicit step adds to stop the node, is booked as non-conservative.
+ * belt creeps on the pulley for want of friction. The whole of f_n is
+ * booked as non-conservative work, and what the spring holds,
+ * (f_k² + f_k−1²)/(4k_c) of this step's and the last one's force, as
+ * potential energy (bd_energy `springs`): f_k is the spring's force at the
+ * end of the step, k_c·δ_k+1, and its work is booked with the mid-step
+ * velocity, so the booked work less that energy's change is
+ * k_c·(δ_k+1 − δ_k−1)²/4 ≥ 0 (docs/physics.md §9). Until issue 10 the
+ * spring's own force k_c·δ_k was conservative with ½k_c·δ_k² and only the
+ * rest of f_n non-conservative: on belts settling from a static start the
+ * rest put 0.1 W into the belt (the dissipated energy fell, seed 1403).
  *
  * Friction: t̂ points the way the belt travels at the node: wrap·perp(n̂)
  * on the shell and within the contact's gap, and beyond it (a node
@@ -241,7 +248,6 @@ static void gather(bd_sim *sim, bd_pulley_body *p, int moving)
         W->c_fn0[c] = fn0;
         W->c_g[c] = g;
         W->c_arc[c] = arc;
-        W->c_spring[c] = delta > 0.0 ? k_c * delta : 0.0;
         W->c_nx[c] = nx;
         W->c_ny[c] = ny;
         /* the belt's direction at the node: the shell's tangent on it or
@@ -260,6 +266,14 @@ static void gather(bd_sim *sim, bd_pulley_body *p, int moving)
         W->c_tx[c] = tx;
         W->c_ty[c] = ty;
     }
+}
+
+/* the contact springs' energy at t (bd_energy `springs`): the mean of
+ * this step's Σ f_n²/(2k_c), e, and the last step's (the file's header) */
+static void spring_energy(bd_sim *sim, bd_wrap_contact *W, double e)
+{
+    sim->energy.springs += 0.5 * (e + W->spring_e);
+    W->spring_e = e;
 }
 
 /* The wrap's stick–slip solve, the carriage with it. Unknowns: the
@@ -387,6 +401,8 @@ static void solve(bd_sim *sim, bd_pulley_body *p, double T_p, double P, double M
      * when the element entering the wrap runs round it) */
     double sum = 0.0;
     int kept = 0;
+    const double half_per_k = 0.5 / bd_lumped_model_of(sim)->k_contact;
+    double spring_e = 0.0;
     /* the wrapped elements' arcs press on the shell directly (wrap_elements.c) */
     p->f_axis = W->react[0] * ax + W->react[1] * ay;
     p->fnc_axis = W->react_d[0] * ax + W->react_d[1] * ay;
@@ -402,18 +418,19 @@ static void solve(bd_sim *sim, bd_pulley_body *p, double T_p, double P, double M
         double tx = W->c_tx[c], ty = W->c_ty[c];
         double nx = W->c_nx[c], ny = W->c_ny[c];
         double f = st == STICKING ? W->c_f[c] : st * p->m->mu_d * (fn + W->c_arc[c]);
-        double fd = W->c_press[c] ? fn - W->c_spring[c] : 0.0;
         sim->fx[k] += fn * nx - f * tx;
         sim->fy[k] += fn * ny - f * ty;
-        sim->fnx[k] += fd * nx - f * tx;
-        sim->fny[k] += fd * ny - f * ty;
+        sim->fnx[k] += fn * nx - f * tx;
+        sim->fny[k] += fn * ny - f * ty;
         double cn = nx * ax + ny * ay, d = tx * ax + ty * ay;
         p->f_axis += f * d - fn * cn;
-        p->fnc_axis += f * d - fd * cn;
+        p->fnc_axis += f * d - fn * cn;
+        spring_e += fn * fn * half_per_k;
         sum += f;
         W->c_node[kept++] = k;
     }
     W->contact_count = kept;
+    spring_energy(sim, W, spring_e);
     p->torque_friction = R * sum;
     p->alpha = alpha;
 }
@@ -423,12 +440,13 @@ void bd_lumped_wrap(bd_sim *sim, bd_pulley_body *p, double external_torque)
     /* the carriage's pull and mass (0: it does not move this step), with
      * what the wrapped elements' arcs press on the shell (wrap_elements.c) */
     double Mc;
-    const bd_wrap_contact *W = wrap_of(sim, p);
+    bd_wrap_contact *W = wrap_of(sim, p);
     const double react = W->react[0] * p->m->axis[0] + W->react[1] * p->m->axis[1];
     const double P = bd_pulley_carriage(sim, p, &Mc) + react;
     gather(sim, p, Mc > 0.0);
     p->torque_friction = 0.0;
     if (W->contact_count == 0) {
+        spring_energy(sim, W, 0.0);
         p->f_axis = react;
         p->fnc_axis = W->react_d[0] * p->m->axis[0] + W->react_d[1] * p->m->axis[1];
         p->alpha = p->held ? 0.0 : external_torque / bd_pulley_solve_inertia(sim, p);
@@ -437,21 +455,4 @@ void bd_lumped_wrap(bd_sim *sim, bd_pulley_body *p, double external_torque)
         return;
     }
     solve(sim, p, external_torque, P, Mc);
-}
-
-/* elastic energy of the contact springs: ½k_c·δ² of every node inside the
- * shell, among the nodes of the wrap's sector */
-double bd_lumped_wrap_energy(const bd_sim *sim, const bd_pulley_body *p)
-{
-    const bd_wrap_contact *W = wrap_of(sim, p);
-    const int n = sim->model->n;
-    double e = 0.0, R = p->m->radius;
-    int first, count;
-    bd_lumped_find_sector(sim, p, W, &first, &count);
-    for (int w = 0, k = first; w < count; w++, k = bd_node_next(k, n)) {
-        double a = hypot(sim->x[k] - p->cx, sim->y[k] - p->cy);
-        if (a < R)
-            e += 0.5 * bd_lumped_model_of(sim)->k_contact * (R - a) * (R - a);
-    }
-    return e;
 }
