@@ -143,6 +143,9 @@ typedef struct bd_run_result {
     double slip_t_s;               /* when the first confirmed slip began, or -1 */
     double slip_longest_s;         /* longest time above the threshold */
     double slip_speed_max_mps;     /* largest |surface − belt| speed */
+    /* the most of its wrap's friction any drive used, ln(T_hi/T_lo)/(μ_s·φ)
+     * of its tight and slack sides (the belt begins to slip at 1) */
+    double friction_used_max;
     double travel_range_m;         /* largest (max − min) over the takeups */
     double tension_max_N, tension_min_N;  /* anywhere in the belt */
     double tension_max_t_s, tension_max_s_m;  /* when and where the largest was */

@@ -10,6 +10,9 @@
  *   - sag: the static lowest tension of the carrying run against
  *     (m'G + m'L)·g·a/(8·sag_ratio);
  *   - drive slip in the run (the drive monitor's confirmed slip);
+ *   - the dynamic slip margin: the most of its wrap's friction a drive
+ *     used in the run, ln(T_hi/T_lo)/(μ_s·φ) (Euler–Eytelwein; the belt
+ *     begins to slip at 100 %);
  *   - the drive's peak torque while driving against its max_torque:
  *     reaching it, the speed loop was saturated and could not follow its
  *     start (a brake's torque after a stop is not the drive's);
@@ -32,10 +35,10 @@ const char *bd_check_rule_name(bd_check_rule rule)
 }
 
 /* four for the belt and the static design, one for lift-off, one for the
- * energy balance; per pulley two for a drive and two for a takeup */
+ * energy balance; per pulley three for a drive and two for a takeup */
 int bd_run_checks_max(const bd_sim *sim)
 {
-    return 6 + 4 * sim->model->pulley_count;
+    return 6 + 5 * sim->model->pulley_count;
 }
 
 static void add(bd_check *out, int *n, int max, const char *name, const char *unit, double value,
@@ -84,6 +87,9 @@ int bd_run_checks(const bd_sim *sim, const bd_static_result *st, bd_check *out, 
             /* slip counts once it lasts BD_SLIP_TIME (the monitor's rule) */
             snprintf(name, sizeof name, "drive slip, %s", pd->name);
             add(out, &n, max, name, "s", p->mon.slip_longest, BD_SLIP_TIME, BD_CHECK_BELOW);
+            snprintf(name, sizeof name, "drive friction used, %s", pd->name);
+            add(out, &n, max, name, "%", 100.0 * p->mon.friction_used_max, 100.0,
+                BD_CHECK_BELOW);
         }
         const bd_part *dp = bd_pulley_drive_part(sim, p);
         const bd_drive *dr = dp ? bd_part_drive(dp) : NULL;

@@ -440,6 +440,8 @@ static int write_summary(bd_outputs *o, const bd_sim *sim, double wall, const ch
             bd_json_add_number(p, "belt_accel_max_mps2", m->accel_max);
             bd_json_add_number(p, "slip_longest_s", m->slip_longest);
             cJSON_AddBoolToObject(p, "slipped", m->slip_first_t >= 0.0);
+            bd_json_add_number(p, "friction_used_max_pct", 100.0 * m->friction_used_max);
+            bd_json_add_number(p, "friction_used_max_time_s", m->friction_used_max_t);
         }
         const bd_part *dp = bd_pulley_drive_part(sim, pb);
         if (dp && dp->type == BD_PART_TRANSMISSION) {

@@ -746,9 +746,9 @@ static int drive_friction_panel(report *r, bd_plot_axes *a, const group *g, cons
             double hi = fmax(T1, T2), lo = fmin(T1, T2);
             y[q] = lo > 0.0 ? 100.0 * log(hi / lo) / cap : NAN;
         }
-        char *label = lbl(r);
-        snprintf(label, LABEL_LEN, "%s (μ %.3g, wrap %.0f°)", g->name[i], mu, phi);
-        bd_plot_add_series(a, parts->col[0], y, parts->nrows, label, bd_plot_palette(k++));
+        /* the drive stays its name: mark_extreme finds its summary peak,
+         * the check's value, by it */
+        bd_plot_add_series(a, parts->col[0], y, parts->nrows, g->name[i], bd_plot_palette(k++));
     }
     if (a->nseries > 0)
         bd_plot_add_hline(a, 100.0, "slip: the whole wrap's friction used", (bd_rgb){0.80, 0.0, 0.0}, 1);
@@ -845,7 +845,7 @@ static int plot_history(report *r, char *err, size_t errlen)
             mark_extreme(r, &f.panel[1], "peak", u[3].name, 1, "pulleys", "torque_max_Nm",
                          u[3].scale);
         mark_extreme(r, &f.panel[2], "peak", "kW", 1, NULL, NULL, 0.0);
-        mark_extreme(r, &f.panel[3], "most", "%", 0, NULL, NULL, 0.0);
+        mark_extreme(r, &f.panel[3], "most", "%", 0, "pulleys", "friction_used_max_pct", 1.0);
         /* the panels that have curves, top to bottom */
         int np = 0;
         for (int k = 0; k < 4; k++)
@@ -861,7 +861,8 @@ static int plot_history(report *r, char *err, size_t errlen)
                  pct ? " as a share of its rating (the motor's rated torque, else max_torque; "
                        "dashed: 100 %)" : "",
                  f.npanels == 4 ? ", the power they deliver (M·ω) and the friction they use "
-                                  "against time: ln(T₁/T₂) over μ·φ, the belt slips at 100 %."
+                                  "against time: ln(T₁/T₂) over μ·φ (μ the static friction, φ the "
+                                  "wrap, as the layout table gives them), the belt slips at 100 %."
                                 : " and the power they deliver (M·ω) against time.");
         if ((rc = write_plot(r, &f, "drives", cap, err, errlen)))
             goto done;

@@ -57,6 +57,11 @@ typedef struct bd_drive_monitor {
     double slip_since;           /* s, start of the current slip, or −1 */
     double slip_longest;         /* s, longest slip */
     double slip_first_t;         /* s, when slip was first confirmed, or −1 */
+    /* the friction the drive uses, ln(T_hi/T_lo)/(μ_s·φ) of its tight and
+     * slack sides either way round (Euler–Eytelwein: the belt starts to
+     * slip at 1): its largest and when; friction_cap is μ_s·φ (build) */
+    double friction_cap;
+    double friction_used_max, friction_used_max_t;
 } bd_drive_monitor;
 
 /* A pulley: a body turning on its axle, the axle on a takeup carriage when

@@ -18,7 +18,15 @@
  *   pulley (the mean of the tight- and slack-side speeds; elastic creep
  *   makes them differ by ΔT/EA of the speed, a fraction of a percent). The
  *   drive slips when they differ by more than SLIP_SPEED + SLIP_FRACTION·|ωR|
- *   for at least BD_SLIP_TIME without a break. */
+ *   for at least BD_SLIP_TIME without a break.
+ * - friction used: ln(T_hi/T_lo)/(μ_s·φ) of the tight- and slack-side
+ *   tensions, the larger over the smaller (a braking drive pulls the other
+ *   way): the share of the wrap's friction the drive needs to pass its
+ *   force (Euler–Eytelwein, seed 001 §2, seed 004's capstan law; the belt
+ *   begins to slip at 1, and slides on at μ_d/μ_s). Its largest over the
+ *   run is the dynamic slip margin (io/checks.c); samples with a slack
+ *   side at or below zero tension are left out, as in the report's plot
+ *   (the belt in compression has its own warning). */
 #include "sensors/sensors.h"
 
 #include <math.h>
@@ -48,6 +56,7 @@ void bd_monitor_init(bd_sim *sim, bd_pulley_body *p)
     bd_wrap_side_points(sim, (int)(p - sim->pulleys), &s_in, &s_out);
     sim->model->belt->point_init(sim, &p->mon.tight, s_in);
     sim->model->belt->point_init(sim, &p->mon.slack, s_out);
+    p->mon.friction_cap = p->m->mu_s * fabs(bd_path_arc(&sim->model->path, (int)(p - sim->pulleys))->sweep);
     bd_monitor_reset(sim, p);
 }
 
@@ -70,6 +79,7 @@ void bd_monitor_reset(bd_sim *sim, bd_pulley_body *p)
     m->slip_since = -1.0;
     m->slip_longest = 0.0;
     m->slip_first_t = -1.0;
+    m->friction_used_max = m->friction_used_max_t = 0.0;
 }
 
 static void window_acceleration(bd_drive_monitor *m, double v, double t)
@@ -149,6 +159,14 @@ void bd_monitor_update(bd_sim *sim, bd_pulley_body *p)
     double v_out = out.speed;
     window_acceleration(m, v_in, t);
     slip(m, p->omega * p->m->radius, 0.5 * (v_in + v_out), t);
+    double hi = fmax(T_in, T_out), lo = fmin(T_in, T_out);
+    if (lo > 0.0 && m->friction_cap > 0.0) {
+        double used = log(hi / lo) / m->friction_cap;
+        if (used > m->friction_used_max) {
+            m->friction_used_max = used;
+            m->friction_used_max_t = t;
+        }
+    }
 }
 
 /* tight-side tension range after the ramp; 0 while the ramp runs */
@@ -167,6 +185,7 @@ void bd_sim_result(const bd_sim *sim, bd_run_result *r)
     r->slipped = 0;
     r->slip_t_s = -1.0;
     r->slip_longest_s = r->slip_speed_max_mps = 0.0;
+    r->friction_used_max = 0.0;
     r->travel_range_m = 0.0;
     r->tight_swing_N = 0.0;
     r->tension_max_N = sim->tension_max;
@@ -208,5 +227,7 @@ void bd_sim_result(const bd_sim *sim, bd_run_result *r)
             r->slip_longest_s = m->slip_longest;
         if (m->slip_dv_max > r->slip_speed_max_mps)
             r->slip_speed_max_mps = m->slip_dv_max;
+        if (m->friction_used_max > r->friction_used_max)
+            r->friction_used_max = m->friction_used_max;
     }
 }
