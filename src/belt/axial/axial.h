@@ -36,6 +36,14 @@ typedef struct bd_axial_model {
     bd_axial_pulley *pulleys;   /* [pulley_count] */
     int feed_node;      /* node at the feed point, -1 = none */
     double min_mass;    /* kg, lightest node without material */
+    /* the nodes whose share of a span with idlers lies in a vertical curve
+     * (build.c curve_turn): there the idlers' rolling resistance has a part
+     * that follows the tension, rr·T/R per metre, kr·T on the node */
+    int curve_count;
+    int *curve_node;    /* [curve_count] */
+    /* [curve_count] -, the idlers' normal force (kn) and rolling
+     * resistance (kr) per newton of tension, + convex (presses), − concave */
+    double *curve_kn, *curve_kr;
 } bd_axial_model;
 
 /* the axial belt's state (behind sim->belt_data) */
@@ -46,6 +54,7 @@ typedef struct bd_axial {
     double *td;         /* [n] step (forces): N, the dashpot's part of the tension */
     double *f_const;    /* [n] N, gravity along the path on node i (material phase) */
     double *resist;     /* [n] N, rolling resistance on node i at speed (material) */
+    double *normal;     /* [n] N, the weight's share the idlers carry there (material) */
     bd_axial_pulley_state *pulleys;   /* [pulley_count] */
     bd_load_fronts fronts;  /* the loaded region (belt/load_fronts.h) */
 } bd_axial;

@@ -106,7 +106,8 @@ static int place_stations(bd_sim *sim, double target, int **pulley_node_out)
 /* the axial state's and compiled model's arrays of doubles [n] */
 static const size_t STATE_DOUBLES[] = {offsetof(bd_axial, u),       offsetof(bd_axial, gap),
                                        offsetof(bd_axial, gap_rate), offsetof(bd_axial, td),
-                                       offsetof(bd_axial, f_const), offsetof(bd_axial, resist)};
+                                       offsetof(bd_axial, f_const), offsetof(bd_axial, resist),
+                                       offsetof(bd_axial, normal)};
 static const size_t MODEL_DOUBLES[] = {offsetof(bd_axial_model, k), offsetof(bd_axial_model, c),
                                        offsetof(bd_axial_model, l0),
                                        offsetof(bd_axial_model, s_len)};
@@ -263,11 +264,13 @@ static void spread_idlers(bd_sim *sim)
 
 /* the idlers' rolling resistance on node i, spread along their span in
  * proportion to the weight on it: the loaded region now, or (`full`) all
- * that can be loaded */
-static double node_resist(const bd_sim *sim, int i, int full)
+ * that can be loaded; the weight's part normal to the path, N, the idlers
+ * carry there in *normal (may be NULL) */
+static double node_resist(const bd_sim *sim, int i, int full, double *normal)
 {
     const bd_model_def *def = sim->model->def;
     double L = sim->model->path.length, mL = def->material.mass_per_length, a, z, R = 0.0;
+    double N = 0.0;
     node_range(sim, i, &a, &z);
     for (int k = 0; k < def->idler_set_count; k++) {
         int count = sim->model->idlers_per_set[k];
@@ -287,11 +290,89 @@ static double node_resist(const bd_sim *sim, int i, int full)
             bd_path_point(&sim->model->path, 0.5 * (lo + hi), p, t);
             cosd = fabs(t[0]);
         }
-        double rr = set->rolling_resistance * sim->model->gravity * cosd * cover;
-        if (on > 0.0)
-            R += rr * (sim->model->belt_mpl * on + mL * loaded_length(sim, full, lo, hi));
+        if (on > 0.0) {
+            double w = sim->model->gravity * cosd * cover
+                     * (sim->model->belt_mpl * on + mL * loaded_length(sim, full, lo, hi));
+            R += set->rolling_resistance * w;
+            N += w;
+        }
     }
+    if (normal)
+        *normal = N;
     return R;
+}
+
+/* The part of the idlers' rolling resistance on node i that follows the
+ * belt tension in a vertical curve: a string under tension T bent to
+ * radius R presses T/R per metre on its supports (seed 004's normal force
+ * of a wrap; as the moving-node belt, moving_node/forces.c), onto the
+ * idlers in a convex curve, off them in a concave one, where the belt
+ * lifts once T/R exceeds m'·g·cos δ (CEMA's concave-curve radius
+ * R = T/(m'g); D. Pitcher, IMHC B17-16). Over the node's share, the
+ * pull is T·Σ±(its length on each curve)/R, spread as the weight is
+ * (cover): kn·T with kn = Σ ± cover·turn, the turn in rad, + where the
+ * curve's centre lies on the idlers' side (convex); the resistance kr·T,
+ * kr = Σ ± rr·cover·turn. */
+static double curve_turn(const bd_sim *sim, int i, double *kn)
+{
+    const bd_model_def *def = sim->model->def;
+    const bd_path *path = &sim->model->path;
+    double a, z, kr = 0.0;
+    *kn = 0.0;
+    node_range(sim, i, &a, &z);
+    for (int k = 0; k < def->idler_set_count; k++) {
+        int count = sim->model->idlers_per_set[k];
+        const bd_path_segment *sp = bd_path_span(path, def->idler_sets[k].span);
+        if (count == 0 || sp->piece_count == 0)
+            continue;
+        double cover = count * sim->model->idler_spacing[k] / sp->length;
+        for (int q = sp->piece_first; q < sp->piece_first + sp->piece_count; q++) {
+            const bd_path_piece *pc = &path->pieces[q];
+            double lo = 0.0, hi = 0.0;
+            double on = pc->is_arc ? bd_loop_overlap(a, z, pc->s0, pc->s0 + pc->length,
+                                                     path->length, &lo, &hi) : 0.0;
+            if (on <= 0.0)
+                continue;
+            double p[2], t[2], up[2];
+            bd_path_point(path, 0.5 * (lo + hi), p, t);
+            bd_path_up_normal(t, up);
+            double concave = (pc->centre[0] - p[0]) * up[0] + (pc->centre[1] - p[1]) * up[1] > 0.0;
+            double turn = (concave ? -1.0 : 1.0) * cover * on / pc->radius;
+            *kn += turn;
+            kr += def->idler_sets[k].rolling_resistance * turn;
+        }
+    }
+    return kr;
+}
+
+/* the nodes in a vertical curve, and their kn and kr (curve_turn) */
+static void find_curve_nodes(bd_sim *sim)
+{
+    bd_axial_model *am = bd_axial_model_build(sim);
+    const int n = sim->model->n;
+    am->curve_count = 0;
+    if (sim->model->path.piece_count == 0)
+        return;
+    for (int pass = 0; pass < 2; pass++) {
+        int c = 0;
+        for (int i = 0; i < n; i++) {
+            double kn, kr = curve_turn(sim, i, &kn);
+            if (kn == 0.0)
+                continue;
+            if (pass == 1) {
+                am->curve_node[c] = i;
+                am->curve_kn[c] = kn;
+                am->curve_kr[c] = kr;
+            }
+            c++;
+        }
+        if (pass == 0) {
+            am->curve_count = c;
+            am->curve_node = bd_xcalloc((size_t)(c ? c : 1), sizeof *am->curve_node);
+            am->curve_kr = bd_xcalloc((size_t)(c ? c : 1), sizeof *am->curve_kr);
+            am->curve_kn = bd_xcalloc((size_t)(c ? c : 1), sizeof *am->curve_kn);
+        }
+    }
 }
 
 /* node i's share of the loaded region: its material (the node's mass
@@ -314,7 +395,7 @@ void bd_axial_node_load(bd_sim *sim, int i)
     double si = sim->model->s_node0[i], hi = 0.5 * am->s_len[i];
     bd_axial_of(sim)->f_const[i] = -(weight_between(sim, sb + hb, sb + 2.0 * hb)
                            + weight_between(sim, si, si + hi));
-    bd_axial_of(sim)->resist[i] = node_resist(sim, i, 0);
+    bd_axial_of(sim)->resist[i] = node_resist(sim, i, 0, &bd_axial_of(sim)->normal[i]);
 }
 
 int bd_axial_build(bd_sim *sim, bd_diag *diag)
@@ -394,6 +475,7 @@ int bd_axial_build(bd_sim *sim, bd_diag *diag)
         sim->y[i] = p[1];
     }
     spread_idlers(sim);
+    find_curve_nodes(sim);
     /* the lightest node carries no material: load leaving a node never
      * takes it below this, and the stable step is taken with it */
     am->min_mass = INFINITY;
@@ -438,7 +520,7 @@ double bd_axial_stable_step(const bd_sim *sim, bd_time_step_limit *limit)
         int b = i == 0 ? n - 1 : i - 1;
         double K = 2.0 * (am->k[b] + am->k[i]);
         /* the rolling resistance's slope with the most load the node can carry */
-        double C = 2.0 * (am->c[b] + am->c[i]) + node_resist(sim, i, 1) / BD_ROLLING_SPEED;
+        double C = 2.0 * (am->c[b] + am->c[i]) + node_resist(sim, i, 1, NULL) / BD_ROLLING_SPEED;
         for (int p = 0; p < sim->model->pulley_count; p++) {
             const bd_axial_pulley *ap = &am->pulleys[p];
             if (!sim->pulleys[p].m->movable)
@@ -486,6 +568,9 @@ void bd_axial_free_model(bd_model *model)
         return;
     bd_doubles_free(am, MODEL_DOUBLES, COUNT(MODEL_DOUBLES));
     free(am->pulleys);
+    free(am->curve_node);
+    free(am->curve_kr);
+    free(am->curve_kn);
     free(am);
     model->belt_model = NULL;
 }

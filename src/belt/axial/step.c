@@ -72,10 +72,34 @@ static void nodes(int n, const double *restrict fc, const double *restrict res,
     }
 }
 
+/* in a vertical curve the rolling resistance follows the tension too
+ * (build.c curve_turn): R_i + kr·T at the node's mean tension, none once
+ * T/R lifts the belt off its idlers (N_i + kn·T < 0, noted as lift-off) */
+static void curve_pass(bd_sim *sim)
+{
+    const bd_axial *ax = bd_axial_of(sim);
+    const bd_axial_model *am = bd_axial_model_of(sim);
+    const int n = sim->model->n;
+    for (int c = 0; c < am->curve_count; c++) {
+        int i = am->curve_node[c], b = bd_node_prev(i, n);
+        double T = 0.5 * (sim->tension[b] + sim->tension[i]);
+        double R = ax->resist[i] + am->curve_kr[c] * T;
+        if (ax->normal[i] + am->curve_kn[c] * T < 0.0) {
+            R = 0.0;
+            if (!sim->stabilizing)
+                bd_lift_off_note(sim, sim->model->s_node0[i]);
+        }
+        double d = rolling(R, sim->vx[i]) - rolling(ax->resist[i], sim->vx[i]);
+        sim->fx[i] += d;
+        sim->fnx[i] += d;
+    }
+}
+
 static void node_pass(bd_sim *sim)
 {
     const bd_axial *ax = bd_axial_of(sim);
     nodes(sim->model->n, ax->f_const, ax->resist, sim->vx, sim->tension, ax->td, sim->fx, sim->fnx);
+    curve_pass(sim);
 }
 
 /* the wrap coupling: the seed-004 law at pulley p, implicit in the
@@ -291,4 +315,6 @@ const bd_belt_ops bd_axial_ops = {
     .element_strain = element_strain,
     .node_speed = bd_station_node_speed,
     .report_events = bd_axial_report_events,
+    /* it notes a curve's nodes lifted by T/R (curve_pass) */
+    .records_lift_off = 1,
 };
