@@ -79,6 +79,14 @@ size_t bd_gen_conveyor(unsigned long seed, const bd_gen_options *opt, char *buf,
     int snub = chance(&r_snub, 0.3);
     double Rs_draw = uniform(&r_snub, 0.25, 0.45), snub_gap = uniform(&r_snub, 0.1, 0.5);
     double snub_clearance = uniform(&r_snub, 0.08, 0.25);
+    /* a vertical curve on part of the carry span (issue 15: idlers
+     * `curve`), from a stream of its own as the snub: concave or convex,
+     * its radius a few times the one at which the start's tension would
+     * lift the belt off (CEMA's R = T/(m'g)) */
+    rng r_curve = {0xC0FFEEULL + 15485863ULL * (unsigned long long)seed};
+    int vcurve = chance(&r_curve, 0.3) && opt->curves, vcurve_convex = chance(&r_curve, 0.5);
+    double vcurve_from = uniform(&r_curve, 0.2, 0.4), vcurve_len = uniform(&r_curve, 0.2, 0.4);
+    double vcurve_margin = uniform(&r_curve, 2.5, 5.0);
 
     /* route */
     double L = uniform(&r, 30.0, opt->max_length);
@@ -144,6 +152,9 @@ size_t bd_gen_conveyor(unsigned long seed, const bd_gen_options *opt, char *buf,
                         * sin(15.0 * PI / 180.0);
     double elem = axial ? (chance(&r, 0.5) ? 0.0 : uniform(&r, 0.5, 2.0))
                         : (chance(&r, 0.5) ? 0.0 : uniform(&r, 0.5, 1.0) * elem_default);
+    /* the curve's radius against the carry's highest tension, and no less
+     * than its chord */
+    double vcurve_R = fmax(vcurve_margin * T_max / (mB * G), 2.0 * vcurve_len * Lc);
 
     double ramp_end = motor ? 0.5 + 1.5 * t_acc : delay + ramp;
     double fill = preloaded ? 0.0 : Lc / v;
@@ -163,6 +174,10 @@ size_t bd_gen_conveyor(unsigned long seed, const bd_gen_options *opt, char *buf,
         if (snub)
             snprintf(info->summary + strlen(info->summary),
                      sizeof info->summary - strlen(info->summary), ", snub");
+        if (vcurve)
+            snprintf(info->summary + strlen(info->summary),
+                     sizeof info->summary - strlen(info->summary), ", %s curve R %.0f m",
+                     vcurve_convex ? "convex" : "concave", vcurve_R);
         info->speed = v;
         info->ramp_end = ramp_end;
         info->duration = duration;
@@ -253,8 +268,14 @@ size_t bd_gen_conveyor(unsigned long seed, const bd_gen_options *opt, char *buf,
     /* idlers: the carry strand leaves the tail; the long return span
      * leaves bend2 (head loop), or the snub, or the head */
     put(&o, "idlers:\n");
-    put(&o, "  - {span: tail, spacing: %.6g, rolling_resistance: %.6g, rotating_mass: 15}\n",
-        a_carry, rr);
+    if (vcurve)
+        put(&o, "  - {span: tail, spacing: %.6g, rolling_resistance: %.6g, rotating_mass: 15,\n"
+                "     curve: {radius: %.6g, from: %.6g, to: %.6g%s}}\n",
+            a_carry, rr, vcurve_R, vcurve_from, vcurve_from + vcurve_len,
+            vcurve_convex ? ", sense: convex" : "");
+    else
+        put(&o, "  - {span: tail, spacing: %.6g, rolling_resistance: %.6g, rotating_mass: 15}\n",
+            a_carry, rr);
     const char *return_span = takeup == LOOP_HEAD ? "bend2" : snub ? "snub" : "head";
     put(&o, "  - {span: %s, spacing: %.6g, rolling_resistance: %.6g, rotating_mass: 10}\n",
         return_span, a_return, rr);
@@ -267,5 +288,9 @@ size_t bd_gen_conveyor(unsigned long seed, const bd_gen_options *opt, char *buf,
     /* the checks read the belt speed at the first probe */
     put(&o, "  probes:\n    - {name: carry, span: tail, at: 0.5}\n"
             "    - {name: return, span: %s, at: 0.5}\n", return_span);
+    /* the running-force law reads the tension in the curve here
+     * (invariants.c) */
+    if (vcurve)
+        put(&o, "    - {name: curve, span: tail, at: %.6g}\n", vcurve_from + 0.5 * vcurve_len);
     return o.len;
 }

@@ -17,11 +17,12 @@ typedef struct bd_gen_options {
     const char *formulation;   /* "discrete" or "axial" */
     double max_length;         /* m, upper bound of the conveyor length */
     double settle;             /* s of steady running after the start */
+    int curves;                /* 1: a vertical curve on the carry span of some (--curves) */
 } bd_gen_options;
 
 /* what the generator chose that the checks need besides the model file */
 typedef struct bd_gen_info {
-    char summary[200];         /* one line: layout, length, incline, load */
+    char summary[256];         /* one line: layout, length, incline, load */
     double speed;              /* m/s target belt speed */
     double ramp_end;           /* s, when the start is over */
     double duration;           /* s */

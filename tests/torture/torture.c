@@ -4,7 +4,14 @@
  * (scripts/soak) a long one.
  *
  *   torture [--first SEED] [--count N] [--formulation discrete|axial]
- *           [--max-length M] [--settle S] [--force-check] [--print SEED]
+ *           [--max-length M] [--settle S] [--force-check] [--curves]
+ *           [--print SEED]
+ *
+ * --curves puts a vertical curve (idlers `curve`, concave or convex, its
+ * radius 2.5–5× the one at which the start's tension would lift the belt)
+ * on part of the carry span of about a third of the conveyors; the law
+ * then adds ±rr·T·θ of the curve (T/R per metre over its turn θ, T read at
+ * a probe in its middle). The other conveyors stay as they were.
  *
  * The running force against the law is always measured and printed; it
  * fails a model only with --force-check. Issue 10 asks for it on every
@@ -64,7 +71,7 @@ int main(int argc, char **argv)
     unsigned long first = 1;
     int count = 30, print = 0, force_check = 0;
     double max_extension = 30.0;
-    bd_gen_options gen = {"discrete", 120.0, 6.0};
+    bd_gen_options gen = {"discrete", 120.0, 6.0, 0};
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--first") && i + 1 < argc)
             first = strtoul(argv[++i], NULL, 10);
@@ -80,13 +87,15 @@ int main(int argc, char **argv)
             max_extension = atof(argv[++i]);
         else if (!strcmp(argv[i], "--force-check"))
             force_check = 1;
+        else if (!strcmp(argv[i], "--curves"))
+            gen.curves = 1;
         else if (!strcmp(argv[i], "--print") && i + 1 < argc) {
             first = strtoul(argv[++i], NULL, 10);
             print = 1;
         } else {
             fprintf(stderr, "usage: torture [--first SEED] [--count N] [--formulation F] "
                             "[--max-length M] [--settle S] [--max-extension S] [--force-check] "
-                            "[--print SEED]\n");
+                            "[--curves] [--print SEED]\n");
             return 2;
         }
     }
