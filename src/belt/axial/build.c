@@ -336,7 +336,7 @@ static double curve_turn(const bd_sim *sim, int i, double *kn)
             double p[2], t[2], up[2];
             bd_path_point(path, 0.5 * (lo + hi), p, t);
             bd_path_up_normal(t, up);
-            double concave = (pc->centre[0] - p[0]) * up[0] + (pc->centre[1] - p[1]) * up[1] > 0.0;
+            int concave = (pc->centre[0] - p[0]) * up[0] + (pc->centre[1] - p[1]) * up[1] > 0.0;
             double turn = (concave ? -1.0 : 1.0) * cover * on / pc->radius;
             *kn += turn;
             kr += def->idler_sets[k].rolling_resistance * turn;
