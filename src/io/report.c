@@ -10,6 +10,7 @@
 #include "io/cases_report.h"
 #include "io/study_report.h"
 #include "io/plot.h"
+#include "laws/belt_pulley_law.h"
 
 #include <cjson/cJSON.h>
 #include <errno.h>
@@ -741,11 +742,9 @@ static int drive_friction_panel(report *r, bd_plot_axes *a, const group *g, cons
         double cap = mu * phi * BD_PI / 180.0;
         double *y = own(r, malloc((parts->nrows ? parts->nrows : 1) * sizeof *y));
         if (!y) return -1;
-        for (size_t q = 0; q < parts->nrows; q++) {
-            double T1 = parts->col[a1][q], T2 = parts->col[a2][q];
-            double hi = fmax(T1, T2), lo = fmin(T1, T2);
-            y[q] = lo > 0.0 ? 100.0 * log(hi / lo) / cap : NAN;
-        }
+        /* as the drive monitor computes the check's value */
+        for (size_t q = 0; q < parts->nrows; q++)
+            y[q] = 100.0 * bd_capstan_friction_used(parts->col[a1][q], parts->col[a2][q], cap);
         /* the drive stays its name: mark_extreme finds its summary peak,
          * the check's value, by it */
         bd_plot_add_series(a, parts->col[0], y, parts->nrows, g->name[i], bd_plot_palette(k++));

@@ -99,3 +99,9 @@ double bd_bpl_solve(const bd_bpl *law, double T_in, double T_out, double v_belt,
     }
     return F;
 }
+
+double bd_capstan_friction_used(double T_a, double T_b, double mu_phi)
+{
+    double hi = fmax(T_a, T_b), lo = fmin(T_a, T_b);
+    return lo > 0.0 && mu_phi > 0.0 ? log(hi / lo) / mu_phi : NAN;
+}

@@ -43,4 +43,11 @@ void bd_bpl_capacity(const bd_bpl *law, double T_in, double T_out, double v_belt
 double bd_bpl_solve(const bd_bpl *law, double T_in, double T_out, double v_belt,
                     double v_rel_free, double kappa);
 
+/* the share of a wrap's friction that passing the force between its two
+ * ends takes, ln(T_hi/T_lo)/(μ·φ), the larger end over the smaller either
+ * way round (Euler–Eytelwein, the capstan law above without centrifugal
+ * tension; the belt begins to slip at 1); NaN when the smaller end has no
+ * tension, or mu_phi ≤ 0 */
+double bd_capstan_friction_used(double T_a, double T_b, double mu_phi);
+
 #endif

@@ -31,6 +31,8 @@
 
 #include <math.h>
 
+#include "laws/belt_pulley_law.h"
+
 #define MONITOR_OFFSET 0.5   /* m before / after the wrap, at most 1/4 span */
 #define ACCEL_WINDOW 0.1     /* s */
 #define SLIP_SPEED 0.05      /* m/s */
@@ -56,7 +58,7 @@ void bd_monitor_init(bd_sim *sim, bd_pulley_body *p)
     bd_wrap_side_points(sim, (int)(p - sim->pulleys), &s_in, &s_out);
     sim->model->belt->point_init(sim, &p->mon.tight, s_in);
     sim->model->belt->point_init(sim, &p->mon.slack, s_out);
-    p->mon.friction_cap = p->m->mu_s * fabs(bd_path_arc(&sim->model->path, (int)(p - sim->pulleys))->sweep);
+    p->mon.friction_cap = p->m->mu_s * bd_path_wrap_angle(&sim->model->path, (int)(p - sim->pulleys));
     bd_monitor_reset(sim, p);
 }
 
@@ -159,13 +161,10 @@ void bd_monitor_update(bd_sim *sim, bd_pulley_body *p)
     double v_out = out.speed;
     window_acceleration(m, v_in, t);
     slip(m, p->omega * p->m->radius, 0.5 * (v_in + v_out), t);
-    double hi = fmax(T_in, T_out), lo = fmin(T_in, T_out);
-    if (lo > 0.0 && m->friction_cap > 0.0) {
-        double used = log(hi / lo) / m->friction_cap;
-        if (used > m->friction_used_max) {
-            m->friction_used_max = used;
-            m->friction_used_max_t = t;
-        }
+    double used = bd_capstan_friction_used(T_in, T_out, m->friction_cap);
+    if (used > m->friction_used_max) {   /* false for NaN: no tension on a side */
+        m->friction_used_max = used;
+        m->friction_used_max_t = t;
     }
 }
 

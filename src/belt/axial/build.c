@@ -262,6 +262,14 @@ static void spread_idlers(bd_sim *sim)
     }
 }
 
+/* the share of idler set k's span its idlers carry the belt on,
+ * count·spacing over the span's length (0: none stand on it) */
+static double idler_cover(const bd_sim *sim, int k)
+{
+    const bd_path_segment *sp = bd_path_span(&sim->model->path, sim->model->def->idler_sets[k].span);
+    return sim->model->idlers_per_set[k] * sim->model->idler_spacing[k] / sp->length;
+}
+
 /* the idlers' rolling resistance on node i, spread along their span in
  * proportion to the weight on it: the loaded region now, or (`full`) all
  * that can be loaded; the weight's part normal to the path, N, the idlers
@@ -281,7 +289,7 @@ static double node_resist(const bd_sim *sim, int i, int full, double *normal)
         /* the idlers carry the weight on count·spacing of the span, its
          * component normal to the path: cos δ of the span, or on a routed
          * one at the middle of the node's share */
-        double cover = count * sim->model->idler_spacing[k] / sp->length;
+        double cover = idler_cover(sim, k);
         double lo = 0.0, hi = 0.0;
         double on = bd_loop_overlap(a, z, sp->s0, sp->s0 + sp->length, L, &lo, &hi);
         double cosd = fabs(sp->dir[0]);
@@ -325,7 +333,7 @@ static double curve_turn(const bd_sim *sim, int i, double *kn)
         const bd_path_segment *sp = bd_path_span(path, def->idler_sets[k].span);
         if (count == 0 || sp->piece_count == 0)
             continue;
-        double cover = count * sim->model->idler_spacing[k] / sp->length;
+        double cover = idler_cover(sim, k);
         for (int q = sp->piece_first; q < sp->piece_first + sp->piece_count; q++) {
             const bd_path_piece *pc = &path->pieces[q];
             double lo = 0.0, hi = 0.0;
