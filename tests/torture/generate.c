@@ -288,9 +288,6 @@ size_t bd_gen_conveyor(unsigned long seed, const bd_gen_options *opt, char *buf,
     /* the checks read the belt speed at the first probe */
     put(&o, "  probes:\n    - {name: carry, span: tail, at: 0.5}\n"
             "    - {name: return, span: %s, at: 0.5}\n", return_span);
-    /* the running-force law reads the tension in the curve here
-     * (invariants.c) */
-    if (vcurve)
-        put(&o, "    - {name: curve, span: tail, at: %.6g}\n", vcurve_from + 0.5 * vcurve_len);
+
     return o.len;
 }

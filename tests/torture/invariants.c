@@ -62,25 +62,14 @@ double bd_torture_law_force(const bd_sim *sim, const bd_model_def *def, double v
             F += set->rolling_resistance * N;
             sum_abs += set->rolling_resistance * N;
         }
-        /* a vertical curve: the belt under tension T bent to radius R
-         * presses T/R per metre on the idlers (convex) or lifts off them
-         * by that (concave), over the arc's length: ±T·θ, θ = 2·asin(c/2R)
-         * of the chord c between its ends; T from the probe `curve` (the
-         * generator puts it at the arc's middle), the idlers covering
-         * count·spacing of the span */
-        if (set->has_curve) {
-            double c = (set->curve_to - set->curve_from) * Ls;
-            double theta = 2.0 * asin(fmin(1.0, c / (2.0 * set->curve_radius)));
-            double T = 0.0;
-            for (int q = 0; q < bd_sim_probe_count(sim); q++) {
-                bd_probe_state pr;
-                if (bd_sim_probe(sim, q, &pr) == 0 && strcmp(def->simulation.probes[q].name, "curve") == 0)
-                    T = pr.tension_N;
-            }
-            double N = (set->curve_convex ? 1.0 : -1.0) * T * theta * count * spacing / Ls;
-            F += set->rolling_resistance * N;
-            sum_abs += set->rolling_resistance * fabs(N);
-        }
+        /* an idler `curve` (torture --curves) adds nothing: it is an arc
+         * through two points of the span, meeting the straight span at two
+         * corners that turn the belt back by half its sweep each, so the
+         * tension pulls its ends along one line and the idlers carry the
+         * weight alone, Σ N = m'·g·cos δ·length, however the load is
+         * shared among them (T/R on the arc, T·Δ at the corners, the belt
+         * lifting off some; vertical balance of the belt over the curve).
+         * The linear law rr·ΣN is then this span's as if straight. */
     }
     /* the load: lifted from the feed point to the end of the loaded region,
      * and brought to belt speed where it lands */

@@ -10,8 +10,9 @@
  * --curves puts a vertical curve (idlers `curve`, concave or convex, its
  * radius 2.5–5× the one at which the start's tension would lift the belt)
  * on part of the carry span of about a third of the conveyors; the law
- * then adds ±rr·T·θ of the curve (T/R per metre over its turn θ, T read at
- * a probe in its middle). The other conveyors stay as they were.
+ * is unchanged (the curve turns the belt back to the span's line at its
+ * corners: the idlers carry its weight alone, invariants.c). The other
+ * conveyors stay as they were.
  *
  * The running force against the law is always measured and printed; it
  * fails a model only with --force-check. Issue 10 asks for it on every

@@ -310,17 +310,38 @@ static double node_resist(const bd_sim *sim, int i, int full, double *normal)
     return R;
 }
 
-/* The part of the idlers' rolling resistance on node i that follows the
- * belt tension in a vertical curve: a string under tension T bent to
- * radius R presses T/R per metre on its supports (seed 004's normal force
- * of a wrap; as the moving-node belt, moving_node/forces.c), onto the
- * idlers in a convex curve, off them in a concave one, where the belt
- * lifts once T/R exceeds m'·g·cos δ (CEMA's concave-curve radius
- * R = T/(m'g); D. Pitcher, IMHC B17-16). Over the node's share, the
- * pull is T·Σ±(its length on each curve)/R, spread as the weight is
- * (cover): kn·T with kn = Σ ± cover·turn, the turn in rad, + where the
- * curve's centre lies on the idlers' side (convex); the resistance kr·T,
- * kr = Σ ± rr·cover·turn. */
+/* the unit tangent of a routed span's piece at its start or its end */
+static void piece_tangent(const bd_path_piece *pc, int end, double t[2])
+{
+    if (!pc->is_arc) {
+        t[0] = pc->dir[0];
+        t[1] = pc->dir[1];
+        return;
+    }
+    double a = pc->angle0 + (end ? pc->sweep : 0.0), sense = pc->sweep >= 0.0 ? 1.0 : -1.0;
+    t[0] = -sense * sin(a);
+    t[1] = sense * cos(a);
+}
+
+/* The part of the idlers' load on node i that follows the belt tension
+ * where a routed span turns: a string under tension T whose direction
+ * turns by Δ presses T·Δ on its supports (T/R per metre on an arc of
+ * radius R; seed 004's normal force of a wrap, as the moving-node belt,
+ * moving_node/forces.c), onto the idlers where it turns away from them
+ * (convex), off them where it turns towards them (concave), and there the
+ * belt lifts once T/R exceeds m'·g·cos δ (CEMA's concave-curve radius
+ * R = T/(m'g); D. Pitcher, IMHC B17-16). The turns are the arcs' (over the
+ * node's share of each) and the corners between pieces: an idler `curve`
+ * on an explicit span is an arc through two of its points, so it meets the
+ * span at two corners that turn back by half its sweep each. Its turns
+ * sum to zero, and so does what they add to the idlers' load (a belt
+ * bent by a curve and straight on both sides: the tension's ends pull
+ * along one line); a profile's fillet has no corners. A corner's turn is
+ * shared by the idler spacing a on either side (the two idlers nearest
+ * it carry it between them, as the 2D belts' would), so T·Δ over 2a.
+ * Spread as the weight is (cover): kn·T on the node, kn = Σ −side·Δ·cover
+ * (side +1 when up is left of the travel, Δ + ccw), and the resistance
+ * kr·T, kr = Σ rr·(its part of kn). */
 static double curve_turn(const bd_sim *sim, int i, double *kn)
 {
     const bd_model_def *def = sim->model->def;
@@ -333,22 +354,40 @@ static double curve_turn(const bd_sim *sim, int i, double *kn)
         const bd_path_segment *sp = bd_path_span(path, def->idler_sets[k].span);
         if (count == 0 || sp->piece_count == 0)
             continue;
-        double cover = idler_cover(sim, k);
+        double cover = idler_cover(sim, k), spacing = sim->model->idler_spacing[k];
+        double press = 0.0;
         for (int q = sp->piece_first; q < sp->piece_first + sp->piece_count; q++) {
             const bd_path_piece *pc = &path->pieces[q];
-            double lo = 0.0, hi = 0.0;
-            double on = pc->is_arc ? bd_loop_overlap(a, z, pc->s0, pc->s0 + pc->length,
-                                                     path->length, &lo, &hi) : 0.0;
-            if (on <= 0.0)
+            double t[2], up[2], turn = 0.0, share = 0.0;
+            if (pc->is_arc) {
+                share = bd_loop_overlap(a, z, pc->s0, pc->s0 + pc->length, path->length, NULL,
+                                        NULL) / pc->length;
+                turn = pc->sweep;
+                piece_tangent(pc, 0, t);
+                if (share > 0.0) {
+                    bd_path_up_normal(t, up);
+                    press -= (t[0] * up[1] - t[1] * up[0] >= 0.0 ? 1.0 : -1.0) * turn * share;
+                }
+            }
+            /* the corner where the next piece begins */
+            if (q + 1 == sp->piece_first + sp->piece_count)
                 continue;
-            double p[2], t[2], up[2];
-            bd_path_point(path, 0.5 * (lo + hi), p, t);
-            bd_path_up_normal(t, up);
-            int concave = (pc->centre[0] - p[0]) * up[0] + (pc->centre[1] - p[1]) * up[1] > 0.0;
-            double turn = (concave ? -1.0 : 1.0) * cover * on / pc->radius;
-            *kn += turn;
-            kr += def->idler_sets[k].rolling_resistance * turn;
+            double t1[2];
+            piece_tangent(pc, 1, t);
+            piece_tangent(&path->pieces[q + 1], 0, t1);
+            turn = atan2(t[0] * t1[1] - t[1] * t1[0], t[0] * t1[0] + t[1] * t1[1]);
+            if (fabs(turn) < 1e-9)
+                continue;   /* a fillet's tangent joint */
+            double s_c = path->pieces[q + 1].s0;
+            share = bd_loop_overlap(a, z, s_c - spacing, s_c + spacing, path->length, NULL, NULL)
+                  / (2.0 * spacing);
+            if (share > 0.0) {
+                bd_path_up_normal(t, up);
+                press -= (t[0] * up[1] - t[1] * up[0] >= 0.0 ? 1.0 : -1.0) * turn * share;
+            }
         }
+        *kn += cover * press;
+        kr += def->idler_sets[k].rolling_resistance * cover * press;
     }
     return kr;
 }

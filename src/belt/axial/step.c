@@ -72,18 +72,34 @@ static void nodes(int n, const double *restrict fc, const double *restrict res,
     }
 }
 
-/* in a vertical curve the rolling resistance follows the tension too
- * (build.c curve_turn): R_i + kr·T at the node's mean tension, none once
- * T/R lifts the belt off its idlers (N_i + kn·T < 0, noted as lift-off) */
+/* where the path turns the idlers' load follows the tension too (build.c
+ * curve_turn): N_i + kn·T at the node's mean tension, R_i + kr·T its
+ * rolling resistance. A node whose load would be negative is lifted (none,
+ * noted as lift-off); the 2D belt then spans it straight and the turn it
+ * would have taken is taken at the idlers next to it, so the idlers of
+ * the turns carry what the tension adds over them in all, Σ kn·T, no
+ * more: the loads left are scaled down by the lifted nodes' deficit
+ * (derived here: the belt's vertical balance over the curve, whose
+ * corners and arc turn it back to its line). */
 static void curve_pass(bd_sim *sim)
 {
     const bd_axial *ax = bd_axial_of(sim);
     const bd_axial_model *am = bd_axial_model_of(sim);
     const int n = sim->model->n;
+    double carried = 0.0, deficit = 0.0;
+    for (int c = 0; c < am->curve_count; c++) {
+        int i = am->curve_node[c], b = bd_node_prev(i, n);
+        double N = ax->normal[i] + am->curve_kn[c] * 0.5 * (sim->tension[b] + sim->tension[i]);
+        if (N >= 0.0)
+            carried += N;
+        else
+            deficit -= N;
+    }
+    double scale = carried > deficit ? (carried - deficit) / carried : 0.0;
     for (int c = 0; c < am->curve_count; c++) {
         int i = am->curve_node[c], b = bd_node_prev(i, n);
         double T = 0.5 * (sim->tension[b] + sim->tension[i]);
-        double R = ax->resist[i] + am->curve_kr[c] * T;
+        double R = (ax->resist[i] + am->curve_kr[c] * T) * scale;
         if (ax->normal[i] + am->curve_kn[c] * T < 0.0) {
             R = 0.0;
             if (!sim->stabilizing)
