@@ -42,16 +42,18 @@ void bd_secondary_pulley_law(const bd_model_def *m, int p, bd_pulley_resistance_
     const bd_design_def *d = &m->design;
     const bd_pulley_def *pd = &m->pulleys[p];
     double D = 2.0 * pd->radius;
-    /* the wrap (ISO 5048 Table 3, F_l): on the pulleys that do not drive;
-     * a drive pulley's own losses are not in the effective tension at its
-     * circumference but in the drive's efficiency (our reading, stated in
-     * docs/standards.md's table) */
-    if (!pd->has_drive) {
-        double thick = d->belt_thickness > 0.0 ? d->belt_thickness : m->belt.thickness;
-        bd_res_wrap_coeffs(d->carcass == BD_CARCASS_STEEL_CORD, m->belt.width, thick, D,
-                           &law->wrap0, &law->wrap_per_N);
-        law->active = 1;
-    }
+    /* the wrap (ISO 5048:1989 Table 3, F_l; DIN 22101's bending resistance
+     * of the belt around the pulleys): the belt flexes over every pulley it
+     * wraps, the drive pulley too (there the drive supplies it at the
+     * pulley's surface: T1 − T2 = Te − F_l). The bearing resistance below
+     * is the standard's for non-driving pulleys only, a drive pulley's
+     * bearings belonging to the drive's efficiency: it is counted where
+     * design.bearings lists it (the static calculation notes a drive
+     * pulley listed there). */
+    double thick = d->belt_thickness > 0.0 ? d->belt_thickness : m->belt.thickness;
+    bd_res_wrap_coeffs(d->carcass == BD_CARCASS_STEEL_CORD, m->belt.width, thick, D,
+                       &law->wrap0, &law->wrap_per_N);
+    law->active = 1;
     const bd_bearing_def *b = bearing_of(m, p);
     if (b) {
         law->bearing_per_N = bd_res_bearing(b->bore, D, 1.0);

@@ -2,7 +2,8 @@
  * place of DIN 22101's (C − 1)·F_H (ISO 5048:1989 §5.2 and Table 3,
  * DIN 22101 §5.2). Where each acts (model/secondary.c):
  *   - each pulley's wrap and bearing resistance at the pulley: the belt
- *     leaves it with T_out = T_in + F (in the next section's T0);
+ *     leaves it with T_out = T_in + F (in the next section's T0; at a
+ *     drive T1 − T2 = Te − F, the drive supplying F at its surface);
  *   - F_bA, F_f and F_gl from the feed point on;
  *   - cleaners on their pulley, a constant T_out = T_in + F_r (in the
  *     section's pulley_special; at a drive T1 − T2 = Te − F_r).
@@ -67,6 +68,11 @@ int bd_individual_resistances(bd_std_ctx *c)
         return 1;
     for (int p = 0; p < c->n; p++) {
         bd_secondary_pulley_law(m, p, &law[p]);
+        if (m->pulleys[p].has_drive && law[p].bearing_per_N > 0.0)
+            bd_std_note(r, "design.bearings.%s: %s drives; ISO 5048 leaves a drive pulley's "
+                           "bearing resistance to the drive's efficiency, and it is counted "
+                           "here as given (design.efficiency should then not include it)",
+                        m->pulleys[p].name, m->pulleys[p].name);
         c->sec[bd_std_first_sec(c, p)].pulley_special += law[p].cleaners;
         r->pulleys[p].cleaners_N = law[p].cleaners;
     }

@@ -21,6 +21,21 @@ static void print_diag(const bd_diag *d)
         fprintf(stderr, "%s\n", d->lines[i]);
 }
 
+char *bd_test_replaced(const char *text, const char *from, const char *to)
+{
+    const char *at = strstr(text, from);
+    if (!at)
+        return NULL;
+    size_t n = strlen(text) + strlen(to) + 1;
+    char *s = malloc(n);
+    if (!s)
+        return NULL;
+    size_t head = (size_t)(at - text);
+    memcpy(s, text, head);
+    snprintf(s + head, n - head, "%s%s", to, at + strlen(from));
+    return s;
+}
+
 int bd_test_make_sim(const char *yaml, bd_model_def *def, bd_sim **sim)
 {
     bd_diag d;

@@ -33,6 +33,9 @@ extern const char *const bd_test_run_files[BD_TEST_RUN_FILE_COUNT];
 void bd_test_remove_run(const char *dir);
 #endif
 
+/* `text` with its first `from` replaced by `to` (malloc'd), or NULL when
+ * `from` is not in it */
+char *bd_test_replaced(const char *text, const char *from, const char *to);
 /* build a simulation from model text; aborts the test on failure */
 struct bd_model_def;
 struct bd_sim;
