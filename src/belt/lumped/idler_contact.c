@@ -228,11 +228,14 @@ static void idler_contact(bd_sim *sim, bd_idler *id, const bd_idler_touch *pc)
 void bd_lumped_idlers(bd_sim *sim)
 {
     bd_idler_touch *touch = bd_lumped_of(sim)->touch;
-    for (int i = 0; i < sim->model->idler_count; i++) {
+    const int count = sim->model->idler_count;
+    /* three passes of short bodies, so that the processor overlaps the
+     * idlers' independent division and square-root chains */
+    for (int i = 0; i < count; i++)
         bd_tracker_update(sim, &sim->idlers[i].tr);
+    for (int i = 0; i < count; i++)
         nearest_point(sim, &sim->idlers[i], &touch[i]);
-    }
-    for (int i = 0; i < sim->model->idler_count; i++)
+    for (int i = 0; i < count; i++)
         idler_contact(sim, &sim->idlers[i], &touch[i]);
 }
 
