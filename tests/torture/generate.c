@@ -188,8 +188,14 @@ size_t bd_gen_conveyor(unsigned long seed, const bd_gen_options *opt, char *buf,
     put(&o, "name: generated %lu\ngravity: %.6g\n", seed, G);
     put(&o, "belt:\n  formulation: %s\n  mass_per_length: %.6g\n  axial_stiffness: %.6g\n"
             "  damping_ratio: %.6g\n", opt->formulation, mB, EA, zeta);
+    /* a mesh study scales the element the conveyor would have (the drawn
+     * one or the default); the draws above are unchanged */
+    if (opt->element_scale > 0.0 && !axial)
+        elem = (elem > 0.0 ? elem : elem_default) * opt->element_scale;
     if (elem > 0.0)
         put(&o, "  element_length: %.6g\n", elem);
+    if (opt->bending_stiffness > 0.0)
+        put(&o, "  bending_stiffness: %.6g\n", opt->bending_stiffness);
 
     /* drives: a motor's gear ratio suits its own pulley, so that dual
      * drives on pulleys of different radii run the belt at one speed */

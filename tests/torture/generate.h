@@ -18,6 +18,9 @@ typedef struct bd_gen_options {
     double max_length;         /* m, upper bound of the conveyor length */
     double settle;             /* s of steady running after the start */
     int curves;                /* 1: a vertical curve on the carry span of some (--curves) */
+    double element_scale;      /* > 0: the discrete belt's element length times this
+                                  (--element-scale, for mesh studies), 0: as drawn */
+    double bending_stiffness;  /* > 0: the belt's EI in N·m² (--bending-stiffness), 0: none */
 } bd_gen_options;
 
 /* what the generator chose that the checks need besides the model file */

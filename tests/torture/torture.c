@@ -5,7 +5,12 @@
  *
  *   torture [--first SEED] [--count N] [--formulation discrete|axial]
  *           [--max-length M] [--settle S] [--force-check] [--curves]
- *           [--print SEED]
+ *           [--element-scale K] [--bending-stiffness EI] [--print SEED]
+ *
+ * --element-scale K multiplies the discrete belt's element length (the
+ * drawn one or the default) by K and --bending-stiffness EI gives the belt
+ * that EI in N·m²: mesh and bending studies of the same conveyors (every
+ * other draw unchanged). Neither is used by CI or the soak.
  *
  * --curves puts a vertical curve (idlers `curve`, concave or convex, its
  * radius 2.5–5× the one at which the start's tension would lift the belt)
@@ -72,7 +77,7 @@ int main(int argc, char **argv)
     unsigned long first = 1;
     int count = 30, print = 0, force_check = 0;
     double max_extension = 30.0;
-    bd_gen_options gen = {"discrete", 120.0, 6.0, 0};
+    bd_gen_options gen = {"discrete", 120.0, 6.0, 0, 0.0, 0.0};
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--first") && i + 1 < argc)
             first = strtoul(argv[++i], NULL, 10);
@@ -90,13 +95,18 @@ int main(int argc, char **argv)
             force_check = 1;
         else if (!strcmp(argv[i], "--curves"))
             gen.curves = 1;
+        else if (!strcmp(argv[i], "--element-scale") && i + 1 < argc)
+            gen.element_scale = atof(argv[++i]);
+        else if (!strcmp(argv[i], "--bending-stiffness") && i + 1 < argc)
+            gen.bending_stiffness = atof(argv[++i]);
         else if (!strcmp(argv[i], "--print") && i + 1 < argc) {
             first = strtoul(argv[++i], NULL, 10);
             print = 1;
         } else {
             fprintf(stderr, "usage: torture [--first SEED] [--count N] [--formulation F] "
                             "[--max-length M] [--settle S] [--max-extension S] [--force-check] "
-                            "[--curves] [--print SEED]\n");
+                            "[--curves] [--element-scale K] [--bending-stiffness EI] "
+                            "[--print SEED]\n");
             return 2;
         }
     }
