@@ -234,7 +234,9 @@ typedef struct bd_energy_state {
 void bd_sim_energy(const bd_sim *sim, bd_energy_state *out);
 /* book the potential energy in every step from now on (slower) */
 void bd_sim_book_energy_every_step(bd_sim *sim, int on);
-/* the potential energy of the state now, J */
+/* the potential energy of the state now, J: gravity, the belt's and the
+ * parts' elastic energy and what the contact springs hold (as of the last
+ * step; none before the first), as bd_sim_energy counts it */
 double bd_sim_potential_energy(const bd_sim *sim);
 
 int bd_sim_warning_count(const bd_sim *sim);

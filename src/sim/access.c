@@ -159,7 +159,12 @@ void bd_sim_energy(const bd_sim *sim, bd_energy_state *out)
 
 void bd_sim_book_energy_every_step(bd_sim *sim, int on) { sim->energy_every_step = on != 0; }
 
-double bd_sim_potential_energy(const bd_sim *sim) { return bd_energy_potential(sim); }
+/* with what the contacts' springs hold, as the account counts it (the last
+ * step's forces phase summed them: 0 before the first step) */
+double bd_sim_potential_energy(const bd_sim *sim)
+{
+    return bd_energy_potential(sim) + sim->energy.springs;
+}
 
 int bd_sim_warning_count(const bd_sim *sim) { return sim->warning_count; }
 
