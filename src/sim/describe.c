@@ -56,6 +56,18 @@ void bd_sim_describe(const bd_sim *sim, FILE *f)
     fprintf(f, "belt loop length: %.3f m\n", sim->model->path.length);
     fprintf(f, "belt elements: %d (unstretched length %.4f m)\n", sim->model->n, sim->model->l0);
     fprintf(f, "belt nodes: %d\n", sim->model->n);
+    if (def->belt.formulation == BD_FORMULATION_DISCRETE) {
+        /* docs/physics.md §10: without bending stiffness the nodes' passage
+         * over idlers and onto pulleys excites the string's transverse
+         * modes at every element length */
+        fprintf(f, "belt bending stiffness: %.4g N m2", sim->model->EI);
+        if (sim->model->EI > 0.0)
+            fprintf(f, "\n");
+        else
+            fprintf(f, " (none: the running force may carry a few %% of node vibration that "
+                       "does not fall with the element length, docs/physics.md §10; give "
+                       "belt.bending_stiffness, or modulus, width and thickness)\n");
+    }
     fprintf(f, "degrees of freedom: %d (%s)\n", dof, sim->model->belt->dof_text);
     fprintf(f, "stable time step: %.4g s, limited by the %s\n", sim->model->dt_limit,
             bd_time_step_limit_name(sim->model->limit_kind));
