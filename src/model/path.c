@@ -271,8 +271,7 @@ static void arc_point(const double centre[2], double radius, double angle0, doub
     tangent[1] = sense * c;
 }
 
-/* the point of a piece at distance u from its start, and the tangent */
-static void piece_point(const bd_path_piece *g, double u, double p[2], double tangent[2])
+void bd_path_piece_point(const bd_path_piece *g, double u, double p[2], double tangent[2])
 {
     if (g->is_arc)
         arc_point(g->centre, g->radius, g->angle0, g->sweep, u, p, tangent);
@@ -527,7 +526,7 @@ void bd_path_point(const bd_path *path, double s, double p[2], double tangent[2]
     double u = s - g->s0;
     if (g->kind == BD_SEGMENT_SPAN && g->piece_count > 0) {
         const bd_path_piece *q = span_piece_at(path, g, s);
-        piece_point(q, s - q->s0, p, tangent);
+        bd_path_piece_point(q, s - q->s0, p, tangent);
         return;
     }
     if (g->kind == BD_SEGMENT_SPAN)
@@ -548,7 +547,7 @@ double bd_path_span_project(const bd_path *path, const bd_path_segment *g, doubl
         if ((q == 0 && u < 0.0) || (q == g->piece_count - 1 && u > pc->length))
             uc = u;
         double p[2], t[2];
-        piece_point(pc, fmin(fmax(uc, 0.0), pc->length), p, t);
+        bd_path_piece_point(pc, fmin(fmax(uc, 0.0), pc->length), p, t);
         double off = uc - fmin(fmax(uc, 0.0), pc->length);
         double d = hypot(p[0] + off * t[0] - x, p[1] + off * t[1] - y);
         if (d < best) {

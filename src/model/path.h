@@ -61,6 +61,9 @@ void bd_path_free(bd_path *path);
 /* point and unit tangent (direction of travel) at path coordinate s
  * (taken modulo the loop length) */
 void bd_path_point(const bd_path *path, double s, double p[2], double tangent[2]);
+/* the point of a routed span's piece at distance u from its start, and the
+ * travel direction there */
+void bd_path_piece_point(const bd_path_piece *g, double u, double p[2], double tangent[2]);
 /* index of the segment holding s (s modulo the loop length) */
 int bd_path_segment_at(const bd_path *path, double s);
 

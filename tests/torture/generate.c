@@ -294,6 +294,5 @@ size_t bd_gen_conveyor(unsigned long seed, const bd_gen_options *opt, char *buf,
     /* the checks read the belt speed at the first probe */
     put(&o, "  probes:\n    - {name: carry, span: tail, at: 0.5}\n"
             "    - {name: return, span: %s, at: 0.5}\n", return_span);
-
     return o.len;
 }

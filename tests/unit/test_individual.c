@@ -45,7 +45,6 @@
 #include "beltdyn/model.h"
 #include "beltdyn/sim.h"
 #include "beltdyn/standards.h"
-#include "base/file.h"
 #include "testlib.h"
 
 #define TOL 0.005
@@ -252,11 +251,7 @@ static void refused(const char *text, const char *from, const char *to, const ch
 
 int main(void)
 {
-    char path[1024];
-    snprintf(path, sizeof path, "%s/static_individual.yaml", BD_TEST_DATA_DIR);
-    char *text = NULL;
-    size_t len;
-    CHECK(bd_read_file(path, &text, &len) == BD_READ_OK);
+    char *text = bd_test_read_data("static_individual.yaml");
     if (!text)
         return bd_test_finish("test_individual");
     double extra = 0.0;

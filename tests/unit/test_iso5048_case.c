@@ -42,7 +42,6 @@
 #include "beltdyn/model.h"
 #include "beltdyn/sim.h"
 #include "beltdyn/standards.h"
-#include "base/file.h"
 #include "testlib.h"
 
 #define TOL 0.005
@@ -164,11 +163,7 @@ static void dynamic_case(const char *text)
 
 int main(void)
 {
-    char path[1024];
-    snprintf(path, sizeof path, "%s/iso5048_worked_case.yaml", BD_TEST_DATA_DIR);
-    char *text = NULL;
-    size_t len;
-    CHECK(bd_read_file(path, &text, &len) == BD_READ_OK);
+    char *text = bd_test_read_data("iso5048_worked_case.yaml");
     if (!text)
         return bd_test_finish("test_iso5048_case");
     static_case(text);

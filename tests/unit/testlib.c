@@ -12,6 +12,7 @@ int bd_test_finish(const char *name)
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/file.h"
 #include "beltdyn/model.h"
 #include "beltdyn/sim.h"
 
@@ -19,6 +20,16 @@ static void print_diag(const bd_diag *d)
 {
     for (int i = 0; i < d->count + d->warning_count; i++)
         fprintf(stderr, "%s\n", d->lines[i]);
+}
+
+char *bd_test_read_data(const char *name)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/%s", BD_TEST_DATA_DIR, name);
+    char *text = NULL;
+    size_t len;
+    CHECK(bd_read_file(path, &text, &len) == BD_READ_OK);
+    return text;
 }
 
 char *bd_test_replaced(const char *text, const char *from, const char *to)

@@ -33,6 +33,8 @@ extern const char *const bd_test_run_files[BD_TEST_RUN_FILE_COUNT];
 void bd_test_remove_run(const char *dir);
 #endif
 
+/* the text of tests/data/NAME (malloc'd), or NULL after a failed CHECK */
+char *bd_test_read_data(const char *name);
 /* `text` with its first `from` replaced by `to` (malloc'd), or NULL when
  * `from` is not in it */
 char *bd_test_replaced(const char *text, const char *from, const char *to);

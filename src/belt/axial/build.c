@@ -313,14 +313,16 @@ static double node_resist(const bd_sim *sim, int i, int full, double *normal)
 /* the unit tangent of a routed span's piece at its start or its end */
 static void piece_tangent(const bd_path_piece *pc, int end, double t[2])
 {
-    if (!pc->is_arc) {
-        t[0] = pc->dir[0];
-        t[1] = pc->dir[1];
-        return;
-    }
-    double a = pc->angle0 + (end ? pc->sweep : 0.0), sense = pc->sweep >= 0.0 ? 1.0 : -1.0;
-    t[0] = -sense * sin(a);
-    t[1] = sense * cos(a);
+    double p[2];
+    bd_path_piece_point(pc, end ? pc->length : 0.0, p, t);
+}
+
+/* +1 when up (bd_path_up_normal) is left of travel direction t, else −1 */
+static double up_side(const double t[2])
+{
+    double up[2];
+    bd_path_up_normal(t, up);
+    return t[0] * up[1] - t[1] * up[0] >= 0.0 ? 1.0 : -1.0;
 }
 
 /* The part of the idlers' load on node i that follows the belt tension
@@ -358,16 +360,14 @@ static double curve_turn(const bd_sim *sim, int i, double *kn)
         double press = 0.0;
         for (int q = sp->piece_first; q < sp->piece_first + sp->piece_count; q++) {
             const bd_path_piece *pc = &path->pieces[q];
-            double t[2], up[2], turn = 0.0, share = 0.0;
+            double t[2], turn = 0.0, share = 0.0;
             if (pc->is_arc) {
                 share = bd_loop_overlap(a, z, pc->s0, pc->s0 + pc->length, path->length, NULL,
                                         NULL) / pc->length;
                 turn = pc->sweep;
                 piece_tangent(pc, 0, t);
-                if (share > 0.0) {
-                    bd_path_up_normal(t, up);
-                    press -= (t[0] * up[1] - t[1] * up[0] >= 0.0 ? 1.0 : -1.0) * turn * share;
-                }
+                if (share > 0.0)
+                    press -= up_side(t) * turn * share;
             }
             /* the corner where the next piece begins */
             if (q + 1 == sp->piece_first + sp->piece_count)
@@ -381,10 +381,8 @@ static double curve_turn(const bd_sim *sim, int i, double *kn)
             double s_c = path->pieces[q + 1].s0;
             share = bd_loop_overlap(a, z, s_c - spacing, s_c + spacing, path->length, NULL, NULL)
                   / (2.0 * spacing);
-            if (share > 0.0) {
-                bd_path_up_normal(t, up);
-                press -= (t[0] * up[1] - t[1] * up[0] >= 0.0 ? 1.0 : -1.0) * turn * share;
-            }
+            if (share > 0.0)
+                press -= up_side(t) * turn * share;
         }
         *kn += cover * press;
         kr += def->idler_sets[k].rolling_resistance * cover * press;
