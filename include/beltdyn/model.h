@@ -194,7 +194,8 @@ typedef struct bd_idler_set_def {
 typedef enum bd_formulation {
     BD_FORMULATION_DISCRETE = 0,  /* 2D lumped-mass belt (seed 001) */
     BD_FORMULATION_AXIAL,         /* 1D chain with capstan pulleys (seed 004) */
-    BD_FORMULATION_MOVING_NODE    /* nodes fixed in space, material flowing (seed 003) */
+    BD_FORMULATION_MOVING_NODE,   /* nodes fixed in space, material flowing (seed 003) */
+    BD_FORMULATION_RFE            /* rigid finite elements joined by spring-damping elements (seed 000) */
 } bd_formulation;
 
 typedef struct bd_belt_def {
@@ -207,6 +208,9 @@ typedef struct bd_belt_def {
     double element_length;    /* m target, 0 = formulation default */
     double wrap_element_angle;  /* rad, moving_node: one arc element on a wrap */
     double span_element_length; /* m, moving_node: span element target, 0 = default */
+    double shear_stiffness;   /* N, rfe: GA of the spring-damping elements, 0 = 10·EA */
+    int group_sections;       /* rfe: variable_topology.enabled (default 1) */
+    double group_length;      /* m, rfe: variable_topology.group_length (default 10) */
     double width;             /* m, 0 = not given */
     double thickness;         /* m, 0 = not given */
     double modulus;           /* Pa, 0 = not given */

@@ -80,6 +80,11 @@ typedef struct bd_belt_ops {
     void (*wrap)(bd_sim *sim, bd_pulley_body *p, double external_torque);
     void (*supports)(bd_sim *sim);
     void (*integrate)(bd_sim *sim, double *ke, double *w_nc);
+    /* velocities of its own beyond the nodes' vx, vy (an element's spin),
+     * at rest at t: after the forces, the half-step values −h·acceleration
+     * with h = Δt/2, or 0 with h = 0 (sim/step.c, sim/stabilize.c); may
+     * be NULL */
+    void (*rest_velocities)(bd_sim *sim, double h);
     void (*after_parts)(bd_sim *sim);
     void (*material)(bd_sim *sim);
 
@@ -117,6 +122,7 @@ const bd_belt_ops *bd_belt_ops_for(bd_formulation f);
 extern const bd_belt_ops bd_lumped_ops;   /* belt/lumped: seed 001 */
 extern const bd_belt_ops bd_axial_ops;    /* belt/axial: seed 004 */
 extern const bd_belt_ops bd_moving_node_ops; /* belt/moving_node: seed 003 */
+extern const bd_belt_ops bd_rfe_ops;      /* belt/rfe: seed 000 */
 
 /* shared by the formulations' builds (belt/common.c) */
 /* probes and the feed point: points fixed on the path */

@@ -15,6 +15,7 @@ const bd_belt_ops *bd_belt_ops_for(bd_formulation f)
     case BD_FORMULATION_DISCRETE: return &bd_lumped_ops;
     case BD_FORMULATION_AXIAL: return &bd_axial_ops;
     case BD_FORMULATION_MOVING_NODE: return &bd_moving_node_ops;
+    case BD_FORMULATION_RFE: return &bd_rfe_ops;
     }
     return NULL;
 }

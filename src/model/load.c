@@ -573,7 +573,13 @@ static void belt_post(ctx *c, const fieldset *fs, yaml_node_t *const *found, bd_
         b->bending_stiffness = b->modulus * b->width * b->thickness * b->thickness * b->thickness / 12.0;
 }
 
-static const char *const formulation_names[] = {"discrete", "axial", "moving_node", NULL};
+static const field topology_fields[] = {
+    BOOL("enabled", bd_belt_def, group_sections),
+    POS("group_length", bd_belt_def, group_length, 0),
+};
+FIELDSET(topology_fs, topology_fields, NULL);
+
+static const char *const formulation_names[] = {"discrete", "axial", "moving_node", "rfe", NULL};
 static const field belt_fields[] = {
     POS("mass_per_length", bd_belt_def, mass_per_length, REQ),
     POS("axial_stiffness", bd_belt_def, axial_stiffness, 0),
@@ -587,6 +593,8 @@ static const field belt_fields[] = {
     POS("element_length", bd_belt_def, element_length, 0),
     NUM("wrap_element_angle_deg", bd_belt_def, wrap_element_angle, GT | DEG, 0.0, 90.0),
     POS("span_element_length", bd_belt_def, span_element_length, 0),
+    POS("shear_stiffness", bd_belt_def, shear_stiffness, 0),
+    SUBMAP("variable_topology", 0, &topology_fs),
     ENUM("formulation", bd_belt_def, formulation, 0, formulation_names, NULL),
 };
 FIELDSET(belt_fs, belt_fields, belt_post);

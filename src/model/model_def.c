@@ -117,6 +117,8 @@ bd_belt_def bd_belt_default(void)
     memset(&b, 0, sizeof b);
     b.formulation = BD_FORMULATION_DISCRETE;
     b.wrap_element_angle = 5.0 * BD_DEG;
+    b.group_sections = 1;
+    b.group_length = 10.0;
     return b;
 }
 

@@ -156,7 +156,7 @@ typedef struct bd_probe {
 
 typedef enum bd_time_step_limit {
     BD_LIMIT_AXIAL = 0, BD_LIMIT_BENDING, BD_LIMIT_USER, BD_LIMIT_TRANSVERSE,
-    BD_LIMIT_TRANSPORT
+    BD_LIMIT_TRANSPORT, BD_LIMIT_SHEAR
 } bd_time_step_limit;
 
 /* What a run costs, estimated before the build and updated after it with

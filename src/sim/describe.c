@@ -68,6 +68,13 @@ void bd_sim_describe(const bd_sim *sim, FILE *f)
                        "does not fall with the element length, docs/physics.md §10; give "
                        "belt.bending_stiffness, or modulus, width and thickness)\n");
     }
+    if (def->belt.formulation == BD_FORMULATION_RFE) {
+        double ga = def->belt.shear_stiffness > 0.0 ? def->belt.shear_stiffness
+                                                    : 10.0 * def->belt.axial_stiffness;
+        fprintf(f, "spring-damping elements: EA %.4g N, GA %.4g N%s, EI %.4g N m2\n",
+                def->belt.axial_stiffness, ga,
+                def->belt.shear_stiffness > 0.0 ? "" : " (10 EA)", sim->model->EI);
+    }
     fprintf(f, "degrees of freedom: %d (%s)\n", dof, sim->model->belt->dof_text);
     fprintf(f, "stable time step: %.4g s, limited by the %s\n", sim->model->dt_limit,
             bd_time_step_limit_name(sim->model->limit_kind));

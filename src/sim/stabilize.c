@@ -45,6 +45,8 @@ static void zero_velocities(bd_sim *sim)
 {
     memset(sim->vx, 0, (size_t)sim->model->n * sizeof *sim->vx);
     memset(sim->vy, 0, (size_t)sim->model->n * sizeof *sim->vy);
+    if (sim->model->belt->rest_velocities)
+        sim->model->belt->rest_velocities(sim, 0.0);
     for (int i = 0; i < sim->model->pulley_count; i++) {
         sim->pulleys[i].omega = 0.0;
         sim->pulleys[i].qdot = 0.0;

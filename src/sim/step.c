@@ -128,6 +128,8 @@ int bd_sim_start_at_rest(bd_sim *sim)
         sim->vx[i] = -sim->fx[i] / sim->mass[i] * h;
         sim->vy[i] = -sim->fy[i] / sim->mass[i] * h;
     }
+    if (sim->model->belt->rest_velocities)
+        sim->model->belt->rest_velocities(sim, h);
     for (int i = 0; i < sim->model->pulley_count; i++) {
         bd_pulley_body *p = &sim->pulleys[i];
         p->omega = -p->alpha * h;

@@ -16,7 +16,7 @@
 
 /* default target element length: chord of a 30° arc of the smallest pulley
  * (seed 001 §4.3.1, §6.1) */
-static double default_element_length(const bd_model_def *def)
+double bd_lumped_default_element_length(const bd_model_def *def)
 {
     double r = INFINITY;
     for (int i = 0; i < def->pulley_count; i++)
@@ -170,14 +170,19 @@ static void load_material(bd_sim *sim)
 
 int bd_lumped_build(bd_sim *sim, bd_diag *diag)
 {
+    return bd_lumped_build_sized(sim, diag, sizeof(bd_lumped), sizeof(bd_lumped_model));
+}
+
+int bd_lumped_build_sized(bd_sim *sim, bd_diag *diag, size_t state_size, size_t model_size)
+{
     const bd_model_def *def = sim->model->def;
     bd_path given;
     if (bd_path_build(def, &given, diag))
         return 1;
-    bd_lumped *L = bd_xcalloc(1, sizeof *L);
+    bd_lumped *L = bd_xcalloc(1, state_size);
     sim->belt_data = L;
     double target = def->belt.element_length > 0.0 ? def->belt.element_length
-                                                   : default_element_length(def);
+                                                   : bd_lumped_default_element_length(def);
     bd_layout lay;
     char err[512];
     bd_layout_request req = {&given, target};
@@ -191,7 +196,7 @@ int bd_lumped_build(bd_sim *sim, bd_diag *diag)
     memset(&lay.path, 0, sizeof lay.path);   /* the simulation owns it now */
     sim->own->n = lay.n;
     sim->own->l0 = lay.l0;
-    bd_lumped_model *LM = bd_xcalloc(1, sizeof *LM);
+    bd_lumped_model *LM = bd_xcalloc(1, model_size);
     sim->own->belt_model = LM;
     LM->k_axial = sim->model->EA / sim->model->l0;
     double m_el = sim->model->belt_mpl * sim->model->l0;
@@ -218,7 +223,7 @@ int bd_lumped_build(bd_sim *sim, bd_diag *diag)
                       "circumference of pulley '%s' (radius %.3g m) and cannot follow it; "
                       "use less than %.3g m (the default is %.3g m, 30° of it)",
                       sim->model->l0, def->pulleys[worst].name, R, BD_PI * R,
-                      default_element_length(def));
+                      bd_lumped_default_element_length(def));
         bd_layout_free(&lay);
         return 1;
     }
@@ -227,7 +232,7 @@ int bd_lumped_build(bd_sim *sim, bd_diag *diag)
                     "radius %.3g m): the wrap's pressure and friction are carried by few "
                     "nodes; belt.element_length %.3g m gives 30°",
                     span / BD_DEG, def->pulleys[worst].name, sim->model->l0, R,
-                    default_element_length(def));
+                    bd_lumped_default_element_length(def));
 
     bd_node_arrays_alloc(sim);
     size_t n = (size_t)sim->model->n;
@@ -285,9 +290,14 @@ void bd_lumped_free_model(bd_model *model)
  * memory half way leaves nothing shared to free */
 void bd_lumped_clone(bd_sim *dst, const bd_sim *src)
 {
+    bd_lumped_clone_sized(dst, src, sizeof(bd_lumped));
+}
+
+void bd_lumped_clone_sized(bd_sim *dst, const bd_sim *src, size_t state_size)
+{
     const bd_lumped *S = bd_lumped_of(src);
     size_t n = (size_t)src->model->n;
-    bd_lumped *L = bd_xcalloc(1, sizeof *L);
+    bd_lumped *L = bd_xcalloc(1, state_size);
     dst->belt_data = L;
     bd_doubles_dup(L, S, BELT_DOUBLES, COUNT(BELT_DOUBLES), n);
     L->seg_hint = bd_xdup(S->seg_hint, n, sizeof *L->seg_hint);
@@ -340,6 +350,15 @@ double bd_lumped_stable_step(const bd_sim *sim, bd_time_step_limit *limit)
                            L->k_bend, L->c_axial, limit);
 }
 
+/* bytes per node at the build's peak: the node arrays, the lumped arrays,
+ * seg_hint and s_node0, with the layout's s and tension still held (the
+ * layout's weight grid, 8 doubles a node, is freed before) */
+double bd_lumped_node_bytes(void)
+{
+    return (double)(bd_node_arrays_bytes() + (size_t)COUNT(BELT_DOUBLES) * sizeof(double)
+                    + sizeof(int) + 3 * sizeof(double));
+}
+
 /* (node + idler)-steps per second: bench/bench_long_conveyor (8006 nodes,
  * 1164 idlers) runs 9.1e7 node-steps per second on the two-core machine
  * this was written on; a faster machine is done sooner */
@@ -351,7 +370,7 @@ double bd_lumped_stable_step(const bd_sim *sim, bd_time_step_limit *limit)
 void bd_lumped_estimate(const bd_model_def *def, const bd_path *path, bd_belt_estimate *out)
 {
     double l = def->belt.element_length > 0.0 ? def->belt.element_length
-                                              : default_element_length(def);
+                                              : bd_lumped_default_element_length(def);
     out->element_length = l;
     out->nodes = fmax(8.0, floor(path->length / l + 0.5));
     out->idlers = 0.0;
@@ -359,11 +378,7 @@ void bd_lumped_estimate(const bd_model_def *def, const bd_path *path, bd_belt_es
         double spacing;
         out->idlers += bd_idler_count(def, path, k, &spacing);
     }
-    /* the peak is after the layout: the node arrays, the lumped arrays,
-     * seg_hint and s_node0, with the layout's s and tension still held (the
-     * layout's weight grid, 8 doubles a node, is freed before) */
-    out->node_bytes = (double)(bd_node_arrays_bytes() + (size_t)COUNT(BELT_DOUBLES) * sizeof(double)
-                               + sizeof(int) + 3 * sizeof(double));
+    out->node_bytes = bd_lumped_node_bytes();
     out->idler_bytes = (double)(sizeof(bd_idler_model) + sizeof(bd_idler));
     double k = def->belt.axial_stiffness / l, m = def->belt.mass_per_length * l;
     bd_time_step_limit limit;

@@ -1,0 +1,211 @@
+/* The spring–damping elements' shear and bending, and the rigid elements'
+ * rotation (seed 000 §2.3–2.4).
+ *
+ * SDE e joins element i = e to j = e + 1. With u the unit vector from i's
+ * mass centre to j's, t_i = (cos φ_i, sin φ_i), and all angles measured
+ * the counter-clockwise way:
+ *   shear  γ = angle from the bisector of t_i and t_j to u
+ *            = θ_u − ½(φ_i + φ_j)      (the SDE's transverse gap over l0)
+ *   bend   β = angle from t_i to t_j = φ_j − φ_i
+ * its potential (§2.3, Voigt, a rectangular section: GA and EI of the
+ * belt over an element's length l0)
+ *   V = ½·k_γ·γ² + ½·k_β·β²,   k_γ = GA·l0,  k_β = EI/l0,
+ * and its dissipation function ½c_γ·γ̇² + ½c_β·β̇², with
+ *   γ̇ = perp(u)·(v_j − v_i)/|x_j − x_i| − ½(ω_i + ω_j),  β̇ = ω_j − ω_i.
+ * Lagrange's equations (§2.4) give, with Q = k_γ·γ + c_γ·γ̇ and
+ * M = k_β·β + c_β·β̇ (∂θ_u/∂x_j = perp(u)/|x_j − x_i| = −∂θ_u/∂x_i,
+ * perp(u) = (−u_y, u_x)):
+ *   on i:  +Q·perp(u)/|x_j − x_i|,  torque  ½Q + M
+ *   on j:  −Q·perp(u)/|x_j − x_i|,  torque  ½Q − M.
+ * The SDE's axial part, EA/l0 on the belt's stretch between the centres,
+ * is the lumped chain's (belt/lumped/forces.c). It pulls at the centres,
+ * where the belt's tension pulls at an element's joints, ½l0 before and
+ * after it: there it turns an element that stands askew to the line of
+ * the belt back into it, by l0·T·ψ for a small angle ψ from the bisector
+ * of the lines to its neighbours' centres,
+ *   ψ_i = φ_i − ½(θ_{i−1} + θ_i).
+ * Without it nothing holds the elements turning against each other with
+ * their centres in line (γ = 0 for φ alternating ±Φ): with EI = 0 that
+ * mode has no stiffness at all, and on a running belt it filled with
+ * energy until tensions swung by ±2 kN (head_drive.yaml; with EI = 20 N·m²
+ * the run matched the lumped belt's). It is taken as a spring of its own,
+ *   V = ½·k_ψ,i·ψ_i²,  k_ψ,i = l0·T_i  (T_i the tension as laid there),
+ * so that the forces stay conservative; its forces on the centres follow
+ * from ∂θ_e/∂x as the shear's do: SDE e's Q less ½(H_e + H_e+1), with
+ * H = k_ψ·ψ + c_ψ·ψ̇ and the torque −H on the element. For small angles γ·l0 is
+ * the SDE's transverse gap of §2.3: this is its energy, not linearized
+ * further, so the forces are conservative (the dashpots apart) and the
+ * energy account holds to the scheme's accuracy. Derived here;
+ * docs/physics.md §11. */
+#include "belt/rfe/rfe.h"
+
+#include <math.h>
+
+/* cos φ and sin φ of every element */
+static void orientations(int n, const double *restrict phi, double *restrict ct,
+                         double *restrict st)
+{
+    for (int i = 0; i < n; i++) {
+        ct[i] = cos(phi[i]);
+        st[i] = sin(phi[i]);
+    }
+}
+
+/* SDE e's shear and bend, their forces (the element pass: nothing of an
+ * element is written) */
+static void sde(bd_sim *sim, int e, int j)
+{
+    bd_rfe *R = bd_rfe_of(sim);
+    const bd_rfe_model *RM = bd_rfe_model_of(sim);
+    const bd_lumped *L = &R->lumped;
+    const int i = e;
+    double ux = L->ux[e], uy = L->uy[e];
+    /* the bisector of t_i and t_j (not normalized: atan2 needs none) */
+    double bx = R->ct[i] + R->ct[j], by = R->st[i] + R->st[j];
+    double gam = atan2(bx * uy - by * ux, bx * ux + by * uy);
+    double bend = atan2(R->ct[i] * R->st[j] - R->st[i] * R->ct[j],
+                        R->ct[i] * R->ct[j] + R->st[i] * R->st[j]);
+    double thdot = (-uy * (sim->vx[j] - sim->vx[i]) + ux * (sim->vy[j] - sim->vy[i])) / L->len[e];
+    double gdot = thdot - 0.5 * (R->omega[i] + R->omega[j]);
+    double qd = RM->c_shear * gdot, mbd = RM->c_bend * (R->omega[j] - R->omega[i]);
+    R->thdot[e] = thdot;
+    R->gam[e] = gam;
+    R->dphi[e] = bend;
+    R->qd[e] = qd;
+    R->q[e] = RM->k_shear * gam + qd;
+    R->mbd[e] = mbd;
+    R->mb[e] = RM->k_bend * bend + mbd;
+}
+
+/* element i's angle to the line of the belt, the bisector of the lines
+ * from centre i − 1 to i (SDE b) and from i to i + 1 (SDE a), and its
+ * aligning moment (after every SDE's turn rate) */
+static void align(bd_sim *sim, int i, int b)
+{
+    bd_rfe *R = bd_rfe_of(sim);
+    const bd_rfe_model *RM = bd_rfe_model_of(sim);
+    const bd_lumped *L = &R->lumped;
+    double wx = L->ux[i] + L->ux[b], wy = L->uy[i] + L->uy[b];
+    double psi = atan2(wx * R->st[i] - wy * R->ct[i], wx * R->ct[i] + wy * R->st[i]);
+    double hd = RM->c_align[i] * (R->omega[i] - 0.5 * (R->thdot[i] + R->thdot[b]));
+    R->psi[i] = psi;
+    R->hd[i] = hd;
+    R->h[i] = RM->k_align[i] * psi + hd;
+}
+
+/* element i: SDE i (it is its start) and SDE i − 1 (its end), and its
+ * alignment; SDE e's force across the line is Q_e − ½(H_e + H_e+1) */
+static void body(bd_sim *sim, int i, int b, int a)
+{
+    bd_rfe *R = bd_rfe_of(sim);
+    const bd_lumped *L = &R->lumped;
+    double ia = 1.0 / L->len[i], ib = 1.0 / L->len[b];
+    double pax = -L->uy[i] * ia, pay = L->ux[i] * ia;   /* perp(u)/|x_j − x_i| */
+    double pbx = -L->uy[b] * ib, pby = L->ux[b] * ib;
+    double qa = R->q[i] - 0.5 * (R->h[i] + R->h[a]), qb = R->q[b] - 0.5 * (R->h[b] + R->h[i]);
+    double qda = R->qd[i] - 0.5 * (R->hd[i] + R->hd[a]);
+    double qdb = R->qd[b] - 0.5 * (R->hd[b] + R->hd[i]);
+    sim->fx[i] += qa * pax - qb * pbx;
+    sim->fy[i] += qa * pay - qb * pby;
+    sim->fnx[i] += qda * pax - qdb * pbx;
+    sim->fny[i] += qda * pay - qdb * pby;
+    R->tq[i] = 0.5 * (R->q[i] + R->q[b]) + R->mb[i] - R->mb[b] - R->h[i];
+    R->tqn[i] = 0.5 * (R->qd[i] + R->qd[b]) + R->mbd[i] - R->mbd[b] - R->hd[i];
+}
+
+/* the forces phase: the lumped chain's (axial SDE round the wraps,
+ * gravity, the skirts), then the SDEs' shear and bending */
+void bd_rfe_forces(bd_sim *sim)
+{
+    bd_rfe *R = bd_rfe_of(sim);
+    const int n = sim->model->n;
+    bd_lumped_forces(sim);
+    orientations(n, R->phi, R->ct, R->st);
+    for (int e = 0; e + 1 < n; e++)
+        sde(sim, e, e + 1);
+    sde(sim, n - 1, 0);
+    align(sim, 0, n - 1);
+    for (int i = 1; i < n; i++)
+        align(sim, i, i - 1);
+    body(sim, 0, n - 1, 1 % n);
+    for (int i = 1; i < n; i++)
+        body(sim, i, i - 1, bd_node_next(i, n));
+}
+
+/* rotations to t + Δt (φ) and t + Δt/2 (ω), as the centres move
+ * (belt/lumped/forces.c advance): J = mass·gyration2, so Δt/J is
+ * dt_per_mass/gyration2 and follows the material on the element */
+void bd_rfe_integrate(bd_sim *sim, double *ke_out, double *w_nc_out)
+{
+    bd_rfe *R = bd_rfe_of(sim);
+    const int n = sim->model->n;
+    const double dt = sim->model->dt, g2 = bd_rfe_model_of(sim)->gyration2;
+    const double inv_g2 = 1.0 / g2;
+    bd_lumped_integrate(sim, ke_out, w_nc_out);
+    const double *restrict dpm = sim->dt_per_mass, *restrict mass = sim->mass;
+    const double *restrict tq = R->tq, *restrict tqn = R->tqn;
+    double *restrict om = R->omega, *restrict phi = R->phi, *restrict pw = R->pw,
+           *restrict ek = R->ek;
+    for (int i = 0; i < n; i++) {
+        double a = tq[i] * dpm[i] * inv_g2;
+        double mid = om[i] + 0.5 * a;
+        pw[i] = tqn[i] * mid;
+        ek[i] = mass[i] * g2 * mid * mid;
+        om[i] += a;
+        phi[i] += om[i] * dt;
+    }
+    double w_nc = 0.0, ke = 0.0;
+    for (int i = 0; i < n; i++) {
+        w_nc += pw[i];
+        ke += ek[i];
+    }
+    *w_nc_out += w_nc * dt;
+    *ke_out += 0.5 * ke;
+}
+
+/* at rest at t (sim/step.c bd_sim_start_at_rest): the half-step angular
+ * velocities −h·τ/J after the forces (h = Δt/2), or 0 (h = 0) */
+void bd_rfe_rest_velocities(bd_sim *sim, double h)
+{
+    bd_rfe *R = bd_rfe_of(sim);
+    const double g2 = bd_rfe_model_of(sim)->gyration2;
+    for (int i = 0; i < sim->model->n; i++)
+        R->omega[i] = h > 0.0 ? -R->tq[i] / (sim->mass[i] * g2) * h : 0.0;
+}
+
+/* the SDEs' shear and bending energy, from the present positions */
+static double sde_energy(const bd_sim *sim)
+{
+    const bd_rfe *R = bd_rfe_of(sim);
+    const bd_rfe_model *RM = bd_rfe_model_of(sim);
+    const int n = sim->model->n;
+    double e = 0.0;
+    for (int i = 0; i < n; i++) {
+        int j = bd_node_next(i, n);
+        double ci = cos(R->phi[i]), si = sin(R->phi[i]);
+        double cj = cos(R->phi[j]), sj = sin(R->phi[j]);
+        double ux = sim->x[j] - sim->x[i], uy = sim->y[j] - sim->y[i];
+        double bx = ci + cj, by = si + sj;
+        double gam = atan2(bx * uy - by * ux, bx * ux + by * uy);
+        double bend = atan2(ci * sj - si * cj, ci * cj + si * sj);
+        e += 0.5 * RM->k_shear * gam * gam + 0.5 * RM->k_bend * bend * bend;
+        /* element i's alignment (its lines to i − 1 and i + 1) */
+        int b = bd_node_prev(i, n);
+        double lx = sim->x[i] - sim->x[b], ly = sim->y[i] - sim->y[b];
+        double la = hypot(ux, uy), lb = hypot(lx, ly);
+        double wx = ux / la + lx / lb, wy = uy / la + ly / lb;
+        double psi = atan2(wx * si - wy * ci, wx * ci + wy * si);
+        e += 0.5 * RM->k_align[i] * psi * psi;
+    }
+    return e;
+}
+
+double bd_rfe_elastic_energy(const bd_sim *sim)
+{
+    return bd_lumped_elastic_energy(sim) + sde_energy(sim);
+}
+
+double bd_rfe_potential(const bd_sim *sim)
+{
+    return bd_lumped_potential(sim) + sde_energy(sim);
+}

@@ -1,0 +1,85 @@
+/* The rigid-finite-element (RFE) belt of seed 000 (Guo & Wang 2020): the
+ * belt cut into rigid elements of length l0, each with a mass centre
+ * (x, y), an orientation φ, its mass and rotary inertia (§2.1, assumption
+ * i), joined by spring–damping elements (SDE, Voigt) with axial, shear and
+ * bending stiffness and damping (§2.3), moving by Lagrange's equations of
+ * the second kind (§2.4), written here in absolute coordinates
+ * (docs/physics.md §11 says why).
+ *
+ * It extends the lumped belt (belt/lumped): the elements' mass centres are
+ * its nodes, and the SDE between elements i and i + 1 is its element i.
+ * The SDE's axial part is the lumped element's (EA/l0 on the stretch of
+ * the belt between the centres, round a pulley along the shell,
+ * wrap_elements.c), and the centres meet pulleys and idlers through the
+ * lumped belt's contacts, friction laws and material. What the rigid
+ * elements add is in this folder: the orientations φ, the SDE's shear and
+ * bending, the rotary inertia. */
+#ifndef BD_RFE_H
+#define BD_RFE_H
+
+#include "belt/lumped/lumped.h"
+
+/* compiled data (behind model->belt_model) */
+typedef struct bd_rfe_model {
+    bd_lumped_model lumped;   /* first: the centres' chain and its contacts
+                                 (its k_bend is 0: bending is the SDE's) */
+    double k_shear;           /* N·m = GA·l0: an SDE's energy ½·k_shear·γ² */
+    double c_shear;           /* N·m·s: its dashpot on dγ/dt */
+    double k_bend;            /* N·m/rad = EI/l0 */
+    double c_bend;            /* N·m·s/rad */
+    double gyration2;         /* m², J = mass·gyration2 = mass·(l0² + h²)/12 */
+    double *k_align;          /* [n] N·m/rad: the tension's pull at element i's
+                                 joints turning it into the line of the belt,
+                                 l0·T of the belt as laid there (forces.c) */
+    double *c_align;          /* [n] N·m·s/rad, its dashpot */
+    double k_align_max;       /* N·m/rad, the largest (stable step) */
+} bd_rfe_model;
+
+/* state (behind sim->belt_data) */
+typedef struct bd_rfe {
+    bd_lumped lumped;         /* first: the centres' chain */
+    double *phi;              /* [n] rad, element i's orientation (integrate) */
+    double *omega;            /* [n] rad/s at the half step (integrate) */
+    /* forces phase */
+    double *ct, *st;          /* [n] cos φ, sin φ */
+    double *tq, *tqn;         /* [n] N·m on element i, its non-conservative part */
+    double *gam, *dphi;       /* [n] SDE e's shear angle γ and bend φ_{e+1} − φ_e, rad */
+    double *q, *qd;           /* [n] N·m, SDE e's shear force k·γ + c·dγ/dt, its dashpot part */
+    double *mb, *mbd;         /* [n] N·m, SDE e's bending moment, its dashpot part */
+    double *thdot;            /* [n] rad/s, the turn rate of the line from centre e to e + 1 */
+    double *psi;              /* [n] rad, element i's angle to the line of the belt there */
+    double *h, *hd;           /* [n] N·m, its aligning moment, the dashpot part */
+    /* integrate: element i's rotation, power of its non-conservative
+     * torque (W) and twice its kinetic energy (J) */
+    double *pw, *ek;          /* [n] */
+} bd_rfe;
+
+static inline bd_rfe *bd_rfe_of(const bd_sim *sim)
+{
+    return (bd_rfe *)sim->belt_data;
+}
+
+static inline const bd_rfe_model *bd_rfe_model_of(const bd_sim *sim)
+{
+    return (const bd_rfe_model *)sim->model->belt_model;
+}
+
+/* build.c */
+int bd_rfe_build(bd_sim *sim, bd_diag *diag);
+void bd_rfe_free(bd_sim *sim);
+void bd_rfe_free_model(bd_model *model);
+void bd_rfe_clone(bd_sim *dst, const bd_sim *src);
+double bd_rfe_stable_step(const bd_sim *sim, bd_time_step_limit *limit);
+void bd_rfe_estimate(const bd_model_def *def, const bd_path *path, bd_belt_estimate *out);
+
+/* forces.c */
+void bd_rfe_forces(bd_sim *sim);
+void bd_rfe_integrate(bd_sim *sim, double *ke, double *w_nc);
+void bd_rfe_rest_velocities(bd_sim *sim, double h);
+double bd_rfe_elastic_energy(const bd_sim *sim);
+double bd_rfe_potential(const bd_sim *sim);
+
+/* material.c */
+void bd_rfe_material(bd_sim *sim);
+
+#endif
