@@ -193,8 +193,9 @@ int main(void)
     if (!root)
         return bd_test_finish("test_formulation_contract");
     /* each formulation at a mesh typical for it */
-    const char *forms[][2] = {{"discrete", "0.1"}, {"axial", "1.0"}, {"moving_node", "1.0"}};
-    for (int k = 0; k < 3; k++) {
+    const char *forms[][2] = {
+        {"discrete", "0.1"}, {"axial", "1.0"}, {"moving_node", "1.0"}, {"rfe", "0.1"}};
+    for (int k = 0; k < 4; k++) {
         char dir[512];
         snprintf(dir, sizeof dir, "%s/%s", root, forms[k][0]);
         contract(forms[k][0], forms[k][1], dir);

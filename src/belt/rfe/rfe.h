@@ -38,10 +38,12 @@ typedef struct bd_rfe_model {
 /* state (behind sim->belt_data) */
 typedef struct bd_rfe {
     bd_lumped lumped;         /* first: the centres' chain */
-    double *phi;              /* [n] rad, element i's orientation (integrate) */
-    double *omega;            /* [n] rad/s at the half step (integrate) */
+    /* integrate: element i's orientation φ as its unit vector (cos φ,
+     * sin φ), turned by ω·Δt each step (no angle is kept: it needs no
+     * cosine in the step and does not grow round the loop) */
+    double *ct, *st;          /* [n] */
+    double *omega;            /* [n] rad/s at the half step */
     /* forces phase */
-    double *ct, *st;          /* [n] cos φ, sin φ */
     double *tq, *tqn;         /* [n] N·m on element i, its non-conservative part */
     double *gam, *dphi;       /* [n] SDE e's shear angle γ and bend φ_{e+1} − φ_e, rad */
     double *q, *qd;           /* [n] N·m, SDE e's shear force k·γ + c·dγ/dt, its dashpot part */
