@@ -172,6 +172,9 @@ int bd_rfe_build(bd_sim *sim, bd_diag *diag)
     orient(sim);
     align_constants(sim, RM);
     relax_orientations(sim, RM);
+    if (sim->model->def->belt.group_sections)
+        bd_sim_warn(sim, "belt.variable_topology: grouping free sections into long sections is "
+                         "not built yet; every element of the rfe belt is free (issue 14)");
     return 0;
 }
 
