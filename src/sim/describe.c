@@ -1,6 +1,7 @@
 /* `beltdyn check`: what was derived from the model */
 #include "sim/engine.h"
 #include "sim/timestep.h"
+#include "belt/rfe/rfe.h"
 #include "base/constants.h"
 
 #include <math.h>
@@ -69,8 +70,7 @@ void bd_sim_describe(const bd_sim *sim, FILE *f)
                        "belt.bending_stiffness, or modulus, width and thickness)\n");
     }
     if (def->belt.formulation == BD_FORMULATION_RFE) {
-        double ga = def->belt.shear_stiffness > 0.0 ? def->belt.shear_stiffness
-                                                    : 10.0 * def->belt.axial_stiffness;
+        double ga = bd_rfe_shear_stiffness(def);
         fprintf(f, "spring-damping elements: EA %.4g N, GA %.4g N%s, EI %.4g N m2\n",
                 def->belt.axial_stiffness, ga,
                 def->belt.shear_stiffness > 0.0 ? "" : " (10 EA)", sim->model->EI);

@@ -15,14 +15,13 @@
 /* the state's arrays of doubles, [n] each */
 static const size_t RFE_DOUBLES[] = {
     offsetof(bd_rfe, omega), offsetof(bd_rfe, ct),  offsetof(bd_rfe, st),
-    offsetof(bd_rfe, tq),  offsetof(bd_rfe, tqn),   offsetof(bd_rfe, gam), offsetof(bd_rfe, dphi),
-    offsetof(bd_rfe, q),   offsetof(bd_rfe, qd),    offsetof(bd_rfe, mb),  offsetof(bd_rfe, mbd),
-    offsetof(bd_rfe, pw),  offsetof(bd_rfe, ek),    offsetof(bd_rfe, thdot), offsetof(bd_rfe, psi),
-    offsetof(bd_rfe, h),   offsetof(bd_rfe, hd)};
+    offsetof(bd_rfe, tq),  offsetof(bd_rfe, tqn),   offsetof(bd_rfe, q),   offsetof(bd_rfe, qd),
+    offsetof(bd_rfe, mb),  offsetof(bd_rfe, mbd),   offsetof(bd_rfe, thdot),
+    offsetof(bd_rfe, h),   offsetof(bd_rfe, hd),    offsetof(bd_rfe, pw),  offsetof(bd_rfe, ek)};
 #define COUNT(a) ((int)(sizeof a / sizeof a[0]))
 
 /* GA: model-format.md `shear_stiffness`, default 10·EA */
-static double shear_stiffness(const bd_model_def *def)
+double bd_rfe_shear_stiffness(const bd_model_def *def)
 {
     return def->belt.shear_stiffness > 0.0 ? def->belt.shear_stiffness
                                            : 10.0 * def->belt.axial_stiffness;
@@ -38,7 +37,7 @@ static void sde_constants(const bd_model_def *def, double l0, bd_rfe_model *RM)
     double m = def->belt.mass_per_length * l0, h = def->belt.thickness;
     double zeta = def->belt.damping_ratio;
     RM->gyration2 = (l0 * l0 + h * h) / 12.0;
-    RM->k_shear = shear_stiffness(def) * l0;
+    RM->k_shear = bd_rfe_shear_stiffness(def) * l0;
     RM->k_bend = def->belt.bending_stiffness / l0;
     RM->c_shear = 2.0 * zeta * sqrt(RM->k_shear * m * RM->gyration2);
     RM->c_bend = 2.0 * zeta * sqrt(RM->k_bend * m * RM->gyration2);
@@ -72,29 +71,6 @@ static void orient(bd_sim *sim)
 #define RELAX_TOL 1e-13
 #define RELAX_SWEEPS 20000
 
-static double sde_shear(const bd_sim *sim, int e, double *bend)
-{
-    const bd_rfe *R = bd_rfe_of(sim);
-    int i = e, j = bd_node_next(e, sim->model->n);
-    double ux = sim->x[j] - sim->x[i], uy = sim->y[j] - sim->y[i];
-    double bx = R->ct[i] + R->ct[j], by = R->st[i] + R->st[j];
-    *bend = atan2(R->ct[i] * R->st[j] - R->st[i] * R->ct[j],
-                  R->ct[i] * R->ct[j] + R->st[i] * R->st[j]);
-    return atan2(bx * uy - by * ux, bx * ux + by * uy);
-}
-
-static double element_psi(const bd_sim *sim, int i)
-{
-    const bd_rfe *R = bd_rfe_of(sim);
-    const int n = sim->model->n;
-    int b = bd_node_prev(i, n), a = bd_node_next(i, n);
-    double ax = sim->x[a] - sim->x[i], ay = sim->y[a] - sim->y[i];
-    double bx = sim->x[i] - sim->x[b], by = sim->y[i] - sim->y[b];
-    double la = hypot(ax, ay), lb = hypot(bx, by);
-    double wx = ax / la + bx / lb, wy = ay / la + by / lb;
-    return atan2(wx * R->st[i] - wy * R->ct[i], wx * R->ct[i] + wy * R->st[i]);
-}
-
 static void relax_orientations(bd_sim *sim, const bd_rfe_model *RM)
 {
     const int n = sim->model->n;
@@ -103,8 +79,8 @@ static void relax_orientations(bd_sim *sim, const bd_rfe_model *RM)
     double *p = bd_xcalloc((size_t)n, sizeof *p);     /* ψ_i */
     double *d = bd_xcalloc((size_t)n, sizeof *d);     /* δ_i */
     for (int e = 0; e < n; e++) {
-        g[e] = sde_shear(sim, e, &bt[e]);
-        p[e] = element_psi(sim, e);
+        g[e] = bd_rfe_sde_angles(sim, e, &bt[e]);
+        p[e] = bd_rfe_align_angle(sim, e);
     }
     const double S = RM->k_shear, kb = RM->k_bend;
     for (int sweep = 0; sweep < RELAX_SWEEPS; sweep++) {
@@ -112,9 +88,7 @@ static void relax_orientations(bd_sim *sim, const bd_rfe_model *RM)
         for (int i = 0; i < n; i++) {
             int b = bd_node_prev(i, n), a = bd_node_next(i, n);
             double kh = RM->k_align[i];
-            double coef = 0.5 * S + kh + 2.0 * kb;
-            if (!(coef > 0.0))
-                continue;
+            double coef = 0.5 * S + kh + 2.0 * kb;   /* > 0: GA > 0 */
             double c = -0.5 * S * (g[b] - 0.5 * d[b]) - 0.5 * S * (g[i] - 0.5 * d[a]) + kh * p[i]
                      - kb * (bt[i] + d[a]) + kb * (bt[b] - d[b]);
             double step = -c / coef - d[i];

@@ -36,7 +36,7 @@
  * the SDE's transverse gap of §2.3: this is its energy, not linearized
  * further, so the forces are conservative (the dashpots apart) and the
  * energy account holds to the scheme's accuracy. Derived here;
- * docs/physics.md §11. */
+ * docs/physics.md §15. */
 #include "belt/rfe/rfe.h"
 
 #include <math.h>
@@ -72,8 +72,6 @@ static void sde(bd_sim *sim, int e, int j)
     double gdot = thdot - 0.5 * (R->omega[i] + R->omega[j]);
     double qd = RM->c_shear * gdot, mbd = RM->c_bend * (R->omega[j] - R->omega[i]);
     R->thdot[e] = thdot;
-    R->gam[e] = gam;
-    R->dphi[e] = bend;
     R->qd[e] = qd;
     R->q[e] = RM->k_shear * gam + qd;
     R->mbd[e] = mbd;
@@ -91,7 +89,6 @@ static void align(bd_sim *sim, int i, int b)
     double wx = L->ux[i] + L->ux[b], wy = L->uy[i] + L->uy[b];
     double psi = angle_of(wx * R->st[i] - wy * R->ct[i], wx * R->ct[i] + wy * R->st[i]);
     double hd = RM->c_align[i] * (R->omega[i] - 0.5 * (R->thdot[i] + R->thdot[b]));
-    R->psi[i] = psi;
     R->hd[i] = hd;
     R->h[i] = RM->k_align[i] * psi + hd;
 }
@@ -196,28 +193,44 @@ void bd_rfe_rest_velocities(bd_sim *sim, double h)
         R->omega[i] = h > 0.0 ? -R->tq[i] / (sim->mass[i] * g2) * h : 0.0;
 }
 
-/* the SDEs' shear and bending energy, from the present positions */
-static double sde_energy(const bd_sim *sim)
+/* SDE e's shear γ and bend β (into *bend) from the present positions,
+ * as the forces phase measures them (there from the lumped pass's unit
+ * vectors); for the energy and the build */
+double bd_rfe_sde_angles(const bd_sim *sim, int e, double *bend)
 {
     const bd_rfe *R = bd_rfe_of(sim);
-    const bd_rfe_model *RM = bd_rfe_model_of(sim);
+    int i = e, j = bd_node_next(e, sim->model->n);
+    double ci = R->ct[i], si = R->st[i], cj = R->ct[j], sj = R->st[j];
+    double ux = sim->x[j] - sim->x[i], uy = sim->y[j] - sim->y[i];
+    double bx = ci + cj, by = si + sj;
+    *bend = atan2(ci * sj - si * cj, ci * cj + si * sj);
+    return atan2(bx * uy - by * ux, bx * ux + by * uy);
+}
+
+/* element i's angle ψ to the line of the belt from the present positions
+ * (the bisector of the lines to its neighbours' centres) */
+double bd_rfe_align_angle(const bd_sim *sim, int i)
+{
+    const bd_rfe *R = bd_rfe_of(sim);
     const int n = sim->model->n;
+    int b = bd_node_prev(i, n), a = bd_node_next(i, n);
+    double ax = sim->x[a] - sim->x[i], ay = sim->y[a] - sim->y[i];
+    double bx = sim->x[i] - sim->x[b], by = sim->y[i] - sim->y[b];
+    double la = hypot(ax, ay), lb = hypot(bx, by);
+    double wx = ax / la + bx / lb, wy = ay / la + by / lb;
+    return atan2(wx * R->st[i] - wy * R->ct[i], wx * R->ct[i] + wy * R->st[i]);
+}
+
+/* the SDEs' shear and bending energy and the alignment's */
+static double sde_energy(const bd_sim *sim)
+{
+    const bd_rfe_model *RM = bd_rfe_model_of(sim);
     double e = 0.0;
-    for (int i = 0; i < n; i++) {
-        int j = bd_node_next(i, n);
-        double ci = R->ct[i], si = R->st[i], cj = R->ct[j], sj = R->st[j];
-        double ux = sim->x[j] - sim->x[i], uy = sim->y[j] - sim->y[i];
-        double bx = ci + cj, by = si + sj;
-        double gam = atan2(bx * uy - by * ux, bx * ux + by * uy);
-        double bend = atan2(ci * sj - si * cj, ci * cj + si * sj);
-        e += 0.5 * RM->k_shear * gam * gam + 0.5 * RM->k_bend * bend * bend;
-        /* element i's alignment (its lines to i − 1 and i + 1) */
-        int b = bd_node_prev(i, n);
-        double lx = sim->x[i] - sim->x[b], ly = sim->y[i] - sim->y[b];
-        double la = hypot(ux, uy), lb = hypot(lx, ly);
-        double wx = ux / la + lx / lb, wy = uy / la + ly / lb;
-        double psi = atan2(wx * si - wy * ci, wx * ci + wy * si);
-        e += 0.5 * RM->k_align[i] * psi * psi;
+    for (int i = 0; i < sim->model->n; i++) {
+        double bend, gam = bd_rfe_sde_angles(sim, i, &bend);
+        double psi = bd_rfe_align_angle(sim, i);
+        e += 0.5 * RM->k_shear * gam * gam + 0.5 * RM->k_bend * bend * bend
+           + 0.5 * RM->k_align[i] * psi * psi;
     }
     return e;
 }

@@ -45,12 +45,10 @@ typedef struct bd_rfe {
     double *omega;            /* [n] rad/s at the half step */
     /* forces phase */
     double *tq, *tqn;         /* [n] N·m on element i, its non-conservative part */
-    double *gam, *dphi;       /* [n] SDE e's shear angle γ and bend φ_{e+1} − φ_e, rad */
     double *q, *qd;           /* [n] N·m, SDE e's shear force k·γ + c·dγ/dt, its dashpot part */
     double *mb, *mbd;         /* [n] N·m, SDE e's bending moment, its dashpot part */
     double *thdot;            /* [n] rad/s, the turn rate of the line from centre e to e + 1 */
-    double *psi;              /* [n] rad, element i's angle to the line of the belt there */
-    double *h, *hd;           /* [n] N·m, its aligning moment, the dashpot part */
+    double *h, *hd;           /* [n] N·m, element i's aligning moment, its dashpot part */
     /* integrate: element i's rotation, power of its non-conservative
      * torque (W) and twice its kinetic energy (J) */
     double *pw, *ek;          /* [n] */
@@ -68,6 +66,8 @@ static inline const bd_rfe_model *bd_rfe_model_of(const bd_sim *sim)
 
 /* build.c */
 int bd_rfe_build(bd_sim *sim, bd_diag *diag);
+/* GA, N: belt.shear_stiffness, default 10·EA */
+double bd_rfe_shear_stiffness(const bd_model_def *def);
 void bd_rfe_free(bd_sim *sim);
 void bd_rfe_free_model(bd_model *model);
 void bd_rfe_clone(bd_sim *dst, const bd_sim *src);
@@ -80,6 +80,10 @@ void bd_rfe_integrate(bd_sim *sim, double *ke, double *w_nc);
 void bd_rfe_rest_velocities(bd_sim *sim, double h);
 double bd_rfe_elastic_energy(const bd_sim *sim);
 double bd_rfe_potential(const bd_sim *sim);
+/* from the present positions: SDE e's shear γ (its bend β in *bend) and
+ * element i's angle ψ to the line of the belt, rad */
+double bd_rfe_sde_angles(const bd_sim *sim, int e, double *bend);
+double bd_rfe_align_angle(const bd_sim *sim, int i);
 
 /* material.c */
 void bd_rfe_material(bd_sim *sim);
