@@ -50,7 +50,9 @@
  *   may outlast that, and then force and speed are the means over the
  *   later half of the extended run, which average the swing over many
  *   periods: said on the line, not a failure of its own.
- * - steady drive force within 3 % (discrete) or 1 % (axial, moving_node:
+ * - steady drive force within 3 % (discrete; rfe, whose elements rest on
+ *   the idlers through the discrete belt's contact; issue 10's figure) or
+ *   1 % (axial, moving_node:
  *   issue 12 asks the same of it, its idler nodes carry their own support
  *   force with no polygon) of the law: the
  *   discrete belt sags between idlers and its nodes pass over them, so
@@ -114,7 +116,10 @@ int main(int argc, char **argv)
         fprintf(stderr, "torture: --count must be at least 1\n");
         return 2;
     }
-    double tol_force = strcmp(gen.formulation, "discrete") == 0 ? 0.03 : 0.01;
+    /* the belts whose nodes pass over the idlers (discrete, and rfe, whose
+     * elements' centres rest on them through the discrete belt's contact) */
+    int passing = !strcmp(gen.formulation, "discrete") || !strcmp(gen.formulation, "rfe");
+    double tol_force = passing ? 0.03 : 0.01;
     static char yaml[1 << 16];
     bd_gen_info info;
     if (print) {
