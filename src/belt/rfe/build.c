@@ -10,6 +10,7 @@
 
 #include "base/alloc.h"
 #include "base/constants.h"
+#include "belt/lumped/layout.h"
 #include "laws/stable_step.h"
 
 /* the state's arrays of doubles, [n] each */
@@ -112,25 +113,73 @@ static void relax_orientations(bd_sim *sim, const bd_rfe_model *RM)
     free(d);
 }
 
+/* The tension the alignment is linearized about, per element (SDE e's):
+ * the belt's tension at rest on its supports, Tc + W(s) of the layout
+ * (belt/lumped/layout.c). A `static` start lays the belt with it; a `rest`
+ * start lays it unstretched (no tension at all), so the static layout is
+ * made here for the tension alone, and element e takes the tension at its
+ * place along the loop. 0 where it cannot be laid (said in a warning). */
+static void reference_tension(bd_sim *sim, double *T)
+{
+    const bd_model_def *def = sim->model->def;
+    const int n = sim->model->n;
+    if (def->simulation.initial_state != BD_INITIAL_REST) {
+        for (int e = 0; e < n; e++)
+            T[e] = sim->tension[e];
+        return;
+    }
+    bd_model_def laid = *def;
+    laid.simulation.initial_state = BD_INITIAL_STATIC;
+    bd_path given;
+    bd_diag quiet;
+    bd_diag_init(&quiet);
+    int bad = bd_path_build(def, &given, &quiet);
+    bd_diag_free(&quiet);
+    bd_layout lay;
+    char err[512] = "";
+    bd_layout_request req = {&given, sim->model->l0};
+    if (!bad)
+        bad = bd_layout_belt(&laid, &req, &lay, err, sizeof err);
+    if (bad) {
+        bd_sim_warn(sim, "rfe: the belt's tension at rest could not be found (%s); the "
+                         "elements' alignment has no stiffness from the tension",
+                    err[0] ? err : "no path");
+        for (int e = 0; e < n; e++)
+            T[e] = 0.0;
+    } else {
+        const double L = sim->model->path.length;
+        for (int e = 0; e < n; e++) {
+            double mid = sim->model->s_node0[e] + 0.5 * sim->model->l0;
+            int k = (int)(mid / L * lay.n);
+            T[e] = lay.tension[k < 0 ? 0 : k >= lay.n ? lay.n - 1 : k];
+        }
+        bd_layout_free(&lay);
+    }
+    bd_path_free(&given);
+}
+
 /* the tension's aligning stiffness of each element (forces.c): l0 times
- * the belt's tension as laid at its centre, the mean of its two SDEs'
- * (none where the belt was laid slack) */
+ * the belt's tension at rest at its centre, the mean of its two SDEs'
+ * (none where the belt hangs slack) */
 static void align_constants(bd_sim *sim, bd_rfe_model *RM)
 {
     const int n = sim->model->n;
     const double l0 = sim->model->l0, zeta = sim->model->def->belt.damping_ratio;
     const double J = sim->model->belt_mpl * l0 * RM->gyration2;
+    double *T = bd_xcalloc((size_t)n, sizeof *T);
+    reference_tension(sim, T);
     RM->k_align = bd_xcalloc((size_t)n, sizeof *RM->k_align);
     RM->c_align = bd_xcalloc((size_t)n, sizeof *RM->c_align);
     RM->k_align_max = 0.0;
     for (int i = 0; i < n; i++) {
-        double T = 0.5 * (sim->tension[i] + sim->tension[bd_node_prev(i, n)]);
-        double k = T > 0.0 ? l0 * T : 0.0;
+        double Ti = 0.5 * (T[i] + T[bd_node_prev(i, n)]);
+        double k = Ti > 0.0 ? l0 * Ti : 0.0;
         RM->k_align[i] = k;
         RM->c_align[i] = 2.0 * zeta * sqrt(k * J);
         if (k > RM->k_align_max)
             RM->k_align_max = k;
     }
+    free(T);
 }
 
 int bd_rfe_build(bd_sim *sim, bd_diag *diag)

@@ -29,7 +29,7 @@
  * mode has no stiffness at all, and on a running belt it filled with
  * energy until tensions swung by ±2 kN (head_drive.yaml; with EI = 20 N·m²
  * the run matched the lumped belt's). It is taken as a spring of its own,
- *   V = ½·k_ψ,i·ψ_i²,  k_ψ,i = l0·T_i  (T_i the tension as laid there),
+ *   V = ½·k_ψ,i·ψ_i²,  k_ψ,i = l0·T_i  (T_i the tension at rest there, build.c),
  * so that the forces stay conservative; its forces on the centres follow
  * from ∂θ_e/∂x as the shear's do: SDE e's Q less ½(H_e + H_e+1), with
  * H = k_ψ·ψ + c_ψ·ψ̇ and the torque −H on the element. For small angles γ·l0 is

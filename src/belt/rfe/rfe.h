@@ -30,7 +30,7 @@ typedef struct bd_rfe_model {
     double gyration2;         /* m², J = mass·gyration2 = mass·(l0² + h²)/12 */
     double *k_align;          /* [n] N·m/rad: the tension's pull at element i's
                                  joints turning it into the line of the belt,
-                                 l0·T of the belt as laid there (forces.c) */
+                                 l0·T of the belt at rest there (build.c) */
     double *c_align;          /* [n] N·m·s/rad, its dashpot */
     double k_align_max;       /* N·m/rad, the largest (stable step) */
 } bd_rfe_model;
