@@ -16,7 +16,7 @@
 
 /* default target element length: chord of a 30° arc of the smallest pulley
  * (seed 001 §4.3.1, §6.1) */
-double bd_lumped_default_element_length(const bd_model_def *def)
+static double default_element_length(const bd_model_def *def)
 {
     double r = INFINITY;
     for (int i = 0; i < def->pulley_count; i++)
@@ -182,7 +182,7 @@ int bd_lumped_build_sized(bd_sim *sim, bd_diag *diag, size_t state_size, size_t 
     bd_lumped *L = bd_xcalloc(1, state_size);
     sim->belt_data = L;
     double target = def->belt.element_length > 0.0 ? def->belt.element_length
-                                                   : bd_lumped_default_element_length(def);
+                                                   : default_element_length(def);
     bd_layout lay;
     char err[512];
     bd_layout_request req = {&given, target};
@@ -223,7 +223,7 @@ int bd_lumped_build_sized(bd_sim *sim, bd_diag *diag, size_t state_size, size_t 
                       "circumference of pulley '%s' (radius %.3g m) and cannot follow it; "
                       "use less than %.3g m (the default is %.3g m, 30° of it)",
                       sim->model->l0, def->pulleys[worst].name, R, BD_PI * R,
-                      bd_lumped_default_element_length(def));
+                      default_element_length(def));
         bd_layout_free(&lay);
         return 1;
     }
@@ -232,7 +232,7 @@ int bd_lumped_build_sized(bd_sim *sim, bd_diag *diag, size_t state_size, size_t 
                     "radius %.3g m): the wrap's pressure and friction are carried by few "
                     "nodes; belt.element_length %.3g m gives 30°",
                     span / BD_DEG, def->pulleys[worst].name, sim->model->l0, R,
-                    bd_lumped_default_element_length(def));
+                    default_element_length(def));
 
     bd_node_arrays_alloc(sim);
     size_t n = (size_t)sim->model->n;
@@ -353,7 +353,7 @@ double bd_lumped_stable_step(const bd_sim *sim, bd_time_step_limit *limit)
 /* bytes per node at the build's peak: the node arrays, the lumped arrays,
  * seg_hint and s_node0, with the layout's s and tension still held (the
  * layout's weight grid, 8 doubles a node, is freed before) */
-double bd_lumped_node_bytes(void)
+static double node_bytes(void)
 {
     return (double)(bd_node_arrays_bytes() + (size_t)COUNT(BELT_DOUBLES) * sizeof(double)
                     + sizeof(int) + 3 * sizeof(double));
@@ -370,7 +370,7 @@ double bd_lumped_node_bytes(void)
 void bd_lumped_estimate(const bd_model_def *def, const bd_path *path, bd_belt_estimate *out)
 {
     double l = def->belt.element_length > 0.0 ? def->belt.element_length
-                                              : bd_lumped_default_element_length(def);
+                                              : default_element_length(def);
     out->element_length = l;
     out->nodes = fmax(8.0, floor(path->length / l + 0.5));
     out->idlers = 0.0;
@@ -378,7 +378,7 @@ void bd_lumped_estimate(const bd_model_def *def, const bd_path *path, bd_belt_es
         double spacing;
         out->idlers += bd_idler_count(def, path, k, &spacing);
     }
-    out->node_bytes = bd_lumped_node_bytes();
+    out->node_bytes = node_bytes();
     out->idler_bytes = (double)(sizeof(bd_idler_model) + sizeof(bd_idler));
     double k = def->belt.axial_stiffness / l, m = def->belt.mass_per_length * l;
     bd_time_step_limit limit;

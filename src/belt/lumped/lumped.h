@@ -127,9 +127,6 @@ int bd_lumped_build(bd_sim *sim, bd_diag *diag);
  * keeps bd_lumped and bd_lumped_model as its first members */
 int bd_lumped_build_sized(bd_sim *sim, bd_diag *diag, size_t state_size, size_t model_size);
 void bd_lumped_clone_sized(bd_sim *dst, const bd_sim *src, size_t state_size);
-/* the default element length: chord of a 30° arc of the smallest pulley */
-double bd_lumped_default_element_length(const bd_model_def *def);
-double bd_lumped_node_bytes(void);
 void bd_lumped_free(bd_sim *sim);
 void bd_lumped_free_model(bd_model *model);
 void bd_lumped_clone(bd_sim *dst, const bd_sim *src);

@@ -18,6 +18,7 @@ static const size_t RFE_DOUBLES[] = {
     offsetof(bd_rfe, omega), offsetof(bd_rfe, ct),  offsetof(bd_rfe, st),
     offsetof(bd_rfe, tq),  offsetof(bd_rfe, tqn),   offsetof(bd_rfe, q),   offsetof(bd_rfe, qd),
     offsetof(bd_rfe, mb),  offsetof(bd_rfe, mbd),   offsetof(bd_rfe, thdot),
+    offsetof(bd_rfe, px),  offsetof(bd_rfe, py),
     offsetof(bd_rfe, h),   offsetof(bd_rfe, hd),    offsetof(bd_rfe, pw),  offsetof(bd_rfe, ek)};
 #define COUNT(a) ((int)(sizeof a / sizeof a[0]))
 

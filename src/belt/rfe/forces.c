@@ -68,7 +68,12 @@ static void sde(bd_sim *sim, int e, int j)
     double gam = angle_of(bx * uy - by * ux, bx * ux + by * uy);
     double bend = angle_of(R->ct[i] * R->st[j] - R->st[i] * R->ct[j],
                            R->ct[i] * R->ct[j] + R->st[i] * R->st[j]);
-    double thdot = (-uy * (sim->vx[j] - sim->vx[i]) + ux * (sim->vy[j] - sim->vy[i])) / L->len[e];
+    /* perp(u)/|x_j − x_i| = ∂θ_u/∂x_j, for the turn rate here and the
+     * forces on both elements (body) */
+    double inv = 1.0 / L->len[e], px = -uy * inv, py = ux * inv;
+    double thdot = px * (sim->vx[j] - sim->vx[i]) + py * (sim->vy[j] - sim->vy[i]);
+    R->px[e] = px;
+    R->py[e] = py;
     double gdot = thdot - 0.5 * (R->omega[i] + R->omega[j]);
     double qd = RM->c_shear * gdot, mbd = RM->c_bend * (R->omega[j] - R->omega[i]);
     R->thdot[e] = thdot;
@@ -98,10 +103,7 @@ static void align(bd_sim *sim, int i, int b)
 static void body(bd_sim *sim, int i, int b, int a)
 {
     bd_rfe *R = bd_rfe_of(sim);
-    const bd_lumped *L = &R->lumped;
-    double ia = 1.0 / L->len[i], ib = 1.0 / L->len[b];
-    double pax = -L->uy[i] * ia, pay = L->ux[i] * ia;   /* perp(u)/|x_j − x_i| */
-    double pbx = -L->uy[b] * ib, pby = L->ux[b] * ib;
+    double pax = R->px[i], pay = R->py[i], pbx = R->px[b], pby = R->py[b];
     double qa = R->q[i] - 0.5 * (R->h[i] + R->h[a]), qb = R->q[b] - 0.5 * (R->h[b] + R->h[i]);
     double qda = R->qd[i] - 0.5 * (R->hd[i] + R->hd[a]);
     double qdb = R->qd[b] - 0.5 * (R->hd[b] + R->hd[i]);

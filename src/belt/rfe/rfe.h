@@ -48,6 +48,7 @@ typedef struct bd_rfe {
     double *q, *qd;           /* [n] N·m, SDE e's shear force k·γ + c·dγ/dt, its dashpot part */
     double *mb, *mbd;         /* [n] N·m, SDE e's bending moment, its dashpot part */
     double *thdot;            /* [n] rad/s, the turn rate of the line from centre e to e + 1 */
+    double *px, *py;          /* [n] 1/m, that line's perp(u)/|x_e+1 − x_e| = ∂θ_u/∂x_e+1 */
     double *h, *hd;           /* [n] N·m, element i's aligning moment, its dashpot part */
     /* integrate: element i's rotation, power of its non-conservative
      * torque (W) and twice its kinetic energy (J) */
