@@ -112,6 +112,7 @@ typedef struct bd_drive_def {
     double creep_speed;       /* m/s during the delay */
     double max_torque;        /* N·m at the pulley; INFINITY = unlimited */
     double inertia;           /* kg·m² of motor+gearbox at the pulley shaft */
+    double bandwidth;         /* Hz, the speed loop's (speed control) */
     bd_table torque;          /* (s, N·m) for torque control */
     bd_motor_def motor;       /* for motor control */
     bd_stop_mode stop_mode;   /* BD_STOP_NONE = never stops */

@@ -690,6 +690,7 @@ static const field drive_fields[] = {
     SUBMAP("start", 0, &start_fs),
     POS("max_torque", bd_drive_def, max_torque, 0),
     NONNEG("inertia", bd_drive_def, inertia, 0),
+    POS("bandwidth", bd_drive_def, bandwidth, 0),
     TABLE("torque", bd_drive_def, torque, 0, -INFINITY),
     MAP("motor", bd_drive_def, motor, 0, &motor_fs),
     SUBMAP("stop", 0, &stop_fs),

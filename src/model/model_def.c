@@ -132,6 +132,7 @@ bd_drive_def bd_drive_default(void)
     d.start_delay = 0.0;
     d.creep_speed = 0.0;
     d.max_torque = INFINITY;
+    d.bandwidth = 2.0;
     d.stop_mode = BD_STOP_NONE;
     /* transmission defaults for its optional keys (see load.c) */
     d.transmission.v_belt = 0;

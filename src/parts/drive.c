@@ -6,18 +6,22 @@
  * tuned for J, the inertia of everything the drives move (belt, material,
  * pulleys, idlers reflected to this pulley, shared among the speed drives);
  * the integral stops winding up while the torque is at max_torque.
- * Its bandwidth ω_c is 2 Hz, lowered so that the proportional gain
- * K_p = 2ω_c·J does not exceed the wave impedance the belt presents at
- * the pulley, R²·(Z_in + Z_out) with Z = √(EA·m′) (the characteristic
- * impedance of the belt's longitudinal wave equation m′·ü = EA·u″, force
- * per unit of speed at the end of a long rod: K. F. Graff, Wave Motion in
- * Elastic Solids, ch. 2; seed 001 §6.4, figs. 6.10–6.11, checks the wave
- * speed √(EA/m′) on the discrete belt): above that the loop is
- * stiffer than the belt and turns every speed ripple of the mesh (node
- * passage over the pulley, idler impacts) into torque, where a drive tuned
- * to the belt's impedance absorbs a wave arriving at the pulley instead of
- * reflecting it (issue 10 item 3: K_p 16× the impedance made 11 kN swings
- * out of 0.04 rad/s of chordal ripple).
+ * Its bandwidth ω_c is the drive's `bandwidth`, 2 Hz unless given: the
+ * drive follows its start curve, as the spec's `speed` control says and
+ * as seeds 000 and 001 drive their pulleys (a prescribed drum speed).
+ * A loop that stiff reflects the belt's waves at the drum: the belt's low
+ * modes then ring with the damping the belt declares (docs/physics.md §10,
+ * "Low modes ring"). A drive tuned to the belt's wave impedance,
+ * K_p = R²·(Z_in + Z_out), Z = √(EA·m′), would absorb them, but its
+ * bandwidth on a long conveyor is about the inverse of the wave's round
+ * trip (0.13 rad/s on the cement plant, which then reached 1.35 of 2.0 m/s
+ * at the end of a 10 s ramp and understated the start's peak tension by
+ * 19 %, docs/starting.md); a user who wants that drive gives the lower
+ * `bandwidth`. (Issue 10 item 3 capped K_p at that impedance when the
+ * belt ran over the drum as chords whose speed ripple the loop turned into
+ * 11 kN swings; the wrap elements now follow the shell and the ripple is
+ * gone: on a loaded 500 m 30 s s-curve start the raw peak drive force is
+ * 4.5 % above its 0.2 s mean.)
  * The proportional term is implicit: the torque applied is
  *   T = T(ω) − K_p·Δt·α,
  * the speed at the end of the step in place of the speed at its start (the
@@ -83,15 +87,8 @@ void bd_drive_prepare(bd_sim *sim, bd_drive *dr, const bd_pulley_body *p,
 {
     const bd_drive_def *d = dr->def;
     dr->ctrl_inertia = reflected_inertia;
-    /* 2 Hz, or the bandwidth at which K_p = 2ω_c·J equals the belt's
-     * impedance at the pulley, R²·2·√(EA·m′) (the bare belt: the load only
-     * raises it) */
     double R = p->m->radius;
-    double Z = sqrt(sim->model->EA * sim->model->belt_mpl);
-    double w = 2.0 * BD_PI * 2.0;
-    double w_impedance = R * R * 2.0 * Z / (2.0 * reflected_inertia);
-    if (w > w_impedance)
-        w = w_impedance;
+    double w = 2.0 * BD_PI * d->bandwidth;
     /* the integral term stays explicit: a spring ω_c²·J on the pulley and
      * the belt wrapped on it, stable for Δt·ω_c·√(J/I_local) < 2 (the
      * central-difference limit ω·Δt < 2 for that spring on I_local,

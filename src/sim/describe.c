@@ -2,6 +2,7 @@
 #include "sim/engine.h"
 #include "sim/timestep.h"
 #include "belt/rfe/rfe.h"
+#include "parts/parts.h"
 #include "base/constants.h"
 
 #include <math.h>
@@ -10,6 +11,29 @@
 /* how each span runs (the pulleys' centres are on their own lines): a
  * layout made from a `profile` is checked here before it is run
  * (model-format.md) */
+/* each speed loop: its bandwidth, the inertia it is tuned for and its
+ * proportional gain against the belt's wave impedance at the drum
+ * (docs/physics.md §6): above it the drum reflects the belt's waves, at it
+ * the drum absorbs them, and the bandwidth that does is said */
+static void describe_speed_loops(FILE *f, const bd_sim *sim)
+{
+    for (int i = 0; i < sim->model->pulley_count; i++) {
+        const bd_pulley_body *p = &sim->pulleys[i];
+        bd_part *part = bd_pulley_drive_part(sim, p);
+        const bd_drive *dr = part ? bd_part_drive(part) : NULL;
+        if (!dr || dr->def->control != BD_CONTROL_SPEED)
+            continue;
+        double R = p->m->radius, J = dr->ctrl_inertia;
+        double Kp = 2.0 * dr->ctrl_bandwidth * J;
+        double Zb = R * R * 2.0 * sqrt(sim->model->EA * sim->model->belt_mpl);
+        fprintf(f, "speed loop %s: %.3g Hz on %.4g kg m2, K_p %.4g N m s, %.3g x the belt's wave "
+                   "impedance at the drum (%.4g N m s; at drive.bandwidth: %.3g Hz it would absorb the "
+                   "belt's waves, not reflect them)\n",
+                p->m->def->name, dr->ctrl_bandwidth / (2.0 * BD_PI), J, Kp, Kp / Zb, Zb,
+                Zb / (4.0 * BD_PI * J));
+    }
+}
+
 static void describe_spans(FILE *f, const bd_sim *sim)
 {
     const bd_path *path = &sim->model->path;
@@ -92,6 +116,7 @@ void bd_sim_describe(const bd_sim *sim, FILE *f)
                 sp->length, p->m->inertia, p->m->def->x, p->m->def->y, p->m->def->radius,
                 p->m->def->has_drive ? ", drive" : "", p->m->def->has_takeup ? ", takeup" : "");
     }
+    describe_speed_loops(f, sim);
     describe_spans(f, sim);
     if (def->idler_set_count > 0)
         fprintf(f, "idlers:\n");

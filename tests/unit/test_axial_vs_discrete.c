@@ -13,8 +13,12 @@
  * the discrete belt ran over each pulley as a polygon of chords, whose
  * speed ripple at the node-passing frequency the speed controller answered
  * with torque spikes of ±40 %; its elements now follow the shell
- * (wrap_elements.c) and the raw peak is 9 % above the averaged one (2987
- * against 2743 N·m: the idlers' node passing and the belt's waves).
+ * (wrap_elements.c). The raw peak is 25 % above the averaged one (3633
+ * against 2919 N·m; axial 1 %, moving-node 8 %): the speed loop follows
+ * the start curve at 2 Hz, and the drum answers the discrete belt's 5 and
+ * 11 Hz speed ripple (the nodes' passage, ±450 N·m at steady running on a
+ * 600 N·m mean) with torque. Loop capped at the belt's impedance it was
+ * 9 % (2978 against 2727 N·m), but lagged the curve (docs/physics.md §6).
  * The drive inertia (200 kg·m² at the pulley: motor and gearbox) is a
  * typical one. Speed is not a test: bench/bench_axial_10km.c times both. */
 #include <math.h>

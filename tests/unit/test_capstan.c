@@ -102,11 +102,12 @@ static void slipping(const char *belt, double tol)
            bd_sim_formulation(sim), sum_in / n, sum_out / n, ratio, want,
            100.0 * (ratio / want - 1.0), a.omega_rad_s, b.omega_rad_s);
     CHECK_REL(ratio, want, tol);
-    /* A really slips (surface 1 m/s) and B holds the belt: its surface
-     * moves at less than 1% of A's (its speed loop is still winding up
-     * the holding torque) */
+    /* A really slips (surface 1 m/s) and B holds the belt: issue 10's
+     * 0.01 rad/s (measured 0.0003 discrete, 0.0036 rfe, 0 axial and
+     * moving-node; B's 2 Hz loop has wound up the holding torque by now,
+     * which the loop capped at the belt's impedance had not: 0.021 rad/s) */
     CHECK_REL(a.omega_rad_s * 0.2, 1.0, 0.02);
-    CHECK(fabs(b.omega_rad_s * 0.2) < 0.01);
+    CHECK(fabs(b.omega_rad_s) < 0.01);
     bd_sim_free(sim);
     bd_model_def_free(&def);
 }

@@ -36,7 +36,15 @@
  *    tension-dependent parts (0.00108·F for the wrap, 0.0006·|F_T| for a
  *    bearing) by up to ~12 N of the ~895 N. The energy balance of each run
  *    at its end (cli.md's measure, the energy at t = 0 the potential after
- *    stabilizing) within 1e-4: the resistances are booked as dissipated. */
+ *    stabilizing) within 1e-4: the resistances are booked as dissipated.
+ *    The drive's speed loop is given `bandwidth: 0.21` Hz, where its
+ *    proportional gain 2ω_c·J equals the belt's wave impedance at the
+ *    drum, R²·2·√(EA·m′) (J = 2661 kg·m²): such a drive absorbs the start's
+ *    waves and the takeup's swing, so the running is steady by 10 s. The
+ *    default 2 Hz loop reflects them, and the takeup's 3 s swing (±1 kN
+ *    on a 240 N running force at 5 s, ±300 N at 14 s, damped mostly by the
+ *    feed) would be in the window: what is tested is the steady force,
+ *    not how soon the drive settles it. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -197,7 +205,9 @@ static void dynamic_part(const char *text, const char *formulation, double extra
 {
     char belt[128];
     snprintf(belt, sizeof belt, "axial_stiffness: 1.0e7\n  formulation: %s", formulation);
-    char *a = bd_test_replaced(text, "axial_stiffness: 1.0e7", belt);
+    char *quiet = bd_test_replaced(text, "inertia: 20}", "inertia: 20, bandwidth: 0.21}");
+    char *a = quiet ? bd_test_replaced(quiet, "axial_stiffness: 1.0e7", belt) : NULL;
+    free(quiet);
     /* the model as written has no simulation block: one at its end */
     char *ind2 = a ? malloc(strlen(a) + 64) : NULL;
     if (ind2)

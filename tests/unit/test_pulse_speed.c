@@ -22,7 +22,14 @@
  * the node masses, which are the belt of the cell in space (m'₀ per m of
  * path), not the unstretched belt in it: the front runs at √λ·c₀, short
  * of λ·c₀ by ε/2 = 0.5 % at this 1 % strain (docs/physics.md §14); the
- * transport, (down − up)/2, comes out 12.21 m/s for the belt's 11.96. */
+ * transport, (down − up)/2, comes out 12.21 m/s for the belt's 11.96.
+ *
+ * A's speed loop has `bandwidth: 0.077` Hz, where its proportional gain
+ * 2ω_c·J (J = 2570 kg·m²) equals the belt's wave impedance at the drum,
+ * R²·2·√(EA·m′) = 2500 N·m·s: the drum absorbs the start's waves, so by
+ * 30 s they are gone (nothing else damps them: no idlers, and the belt's
+ * dashpots hardly touch modes this low, docs/physics.md §10). At the
+ * default 2 Hz the drum reflects them and the belt still rings at 30 s. */
 #include <math.h>
 #include <stdio.h>
 
@@ -43,7 +50,8 @@ static const char *model =
     "    wrap: ccw\n"
     "    mass: 200\n"
     "    friction: {static: 0.9, dynamic: 0.8}\n"
-    "    drive: {control: speed, speed: 12, start: {curve: s-curve, time: 8}}\n"
+    "    drive: {control: speed, speed: 12, start: {curve: s-curve, time: 8},\n"
+    "            bandwidth: 0.077}\n"
     "  - name: B\n"
     "    x: 200\n"
     "    y: 0\n"
