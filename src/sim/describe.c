@@ -8,9 +8,6 @@
 #include <math.h>
 #include <stdio.h>
 
-/* how each span runs (the pulleys' centres are on their own lines): a
- * layout made from a `profile` is checked here before it is run
- * (model-format.md) */
 /* each speed loop: its bandwidth, the inertia it is tuned for and its
  * proportional gain against the belt's wave impedance at the drum
  * (docs/physics.md §6): above it the drum reflects the belt's waves, at it
@@ -25,15 +22,19 @@ static void describe_speed_loops(FILE *f, const bd_sim *sim)
             continue;
         double R = p->m->radius, J = dr->ctrl_inertia;
         double Kp = 2.0 * dr->ctrl_bandwidth * J;
+        /* the bare belt's impedance on both strands (a load only raises it) */
         double Zb = R * R * 2.0 * sqrt(sim->model->EA * sim->model->belt_mpl);
-        fprintf(f, "speed loop %s: %.3g Hz on %.4g kg m2, K_p %.4g N m s, %.3g x the belt's wave "
-                   "impedance at the drum (%.4g N m s; at drive.bandwidth: %.3g Hz it would absorb the "
-                   "belt's waves, not reflect them)\n",
+        fprintf(f, "speed loop %s: %.3g Hz on %.4g kg m2, K_p %.4g N m s, %.3g x the belt's "
+                   "wave impedance at the drum (%.4g N m s; at drive.bandwidth: %.4g Hz it "
+                   "would absorb the belt's waves, not reflect them)\n",
                 p->m->def->name, dr->ctrl_bandwidth / (2.0 * BD_PI), J, Kp, Kp / Zb, Zb,
                 Zb / (4.0 * BD_PI * J));
     }
 }
 
+/* how each span runs (the pulleys' centres are on their own lines): a
+ * layout made from a `profile` is checked here before it is run
+ * (model-format.md) */
 static void describe_spans(FILE *f, const bd_sim *sim)
 {
     const bd_path *path = &sim->model->path;
