@@ -8,11 +8,16 @@
  * the integral stops winding up while the torque is at max_torque.
  * Its bandwidth ω_c is the drive's `bandwidth`, 2 Hz unless given: the
  * drive follows its start curve, as the spec's `speed` control says and
- * as seeds 000 and 001 drive their pulleys (a prescribed drum speed).
+ * as seed 000 §4 starts its conveyor (the drum on the starting speed
+ * curves, eqs 52–55; seed 001 eq 4.66 applies a torque instead).
  * A loop that stiff reflects the belt's waves at the drum: the belt's low
  * modes then ring with the damping the belt declares (docs/physics.md §10,
  * "Low modes ring"). A drive tuned to the belt's wave impedance,
- * K_p = R²·(Z_in + Z_out), Z = √(EA·m′), would absorb them, but its
+ * K_p = R²·(Z_in + Z_out), Z = √(EA·m′) (the characteristic impedance of
+ * the belt's longitudinal wave equation m′·ü = EA·u″, force per unit of
+ * speed at the end of a long rod: K. F. Graff, Wave Motion in Elastic
+ * Solids, ch. 2; seed 001 §6.4 checks the wave speed √(EA/m′) on the
+ * discrete belt), would absorb them, but its
  * bandwidth on a long conveyor is about the inverse of the wave's round
  * trip (0.13 rad/s on the cement plant, which then reached 1.35 of 2.0 m/s
  * at the end of a 10 s ramp and understated the start's peak tension by

@@ -22,7 +22,10 @@ static void describe_speed_loops(FILE *f, const bd_sim *sim)
             continue;
         double R = p->m->radius, J = dr->ctrl_inertia;
         double Kp = 2.0 * dr->ctrl_bandwidth * J;
-        /* the bare belt's impedance on both strands (a load only raises it) */
+        /* the bare belt's impedance on both strands, R²·2·√(EA·m′) (the
+         * characteristic impedance of m′·ü = EA·u″, Graff, Wave Motion in
+         * Elastic Solids, ch. 2; a load only raises it), and the bandwidth
+         * at which K_p = 2ω_c·J equals it (drive.c) */
         double Zb = R * R * 2.0 * sqrt(sim->model->EA * sim->model->belt_mpl);
         fprintf(f, "speed loop %s: %.3g Hz on %.4g kg m2, K_p %.4g N m s, %.3g x the belt's "
                    "wave impedance at the drum (%.4g N m s; at drive.bandwidth: %.4g Hz it "

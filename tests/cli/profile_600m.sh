@@ -99,7 +99,7 @@ if lo.get("occurred"):
         "first lift at %.3f s, when T in the curve passes T_lift (%.3f s)"
         % (lo["first_time_s"], above[0] if above else float("nan")), "")
     T_max = max(v for _, v in probe(start))
-    wide = (T_max / (20 * 9.81) - R) * math.tan(d / 2) + 1.5
+    wide = R * (T_max / T_lift - 1) * math.tan(d / 2) + 1.5
     say(c0 - wide <= lo["from_s_m"] and lo["to_s_m"] <= c1 + wide,
         "lifted stations s = %.1f … %.1f m within the curve %.1f … %.1f m ± %.1f m (string law at %.1f kN)"
         % (lo["from_s_m"], lo["to_s_m"], c0, c1, wide, T_max / 1e3), "")

@@ -52,7 +52,9 @@ static double deflection(bd_sim *sim, int first)
     const double dt = sim->model->dt, y0 = sim->y[mid];
     const double EI = sim->model->EI, m1 = sim->model->belt_mpl;
     const double L = (FREE + 1) * sim->model->l0;
-    /* the first mode of the clamped beam, 22.37·√(EI/(m′L⁴)), damped critically */
+    /* the first mode of the clamped–clamped beam, (β₁L)²·√(EI/(m′L⁴)) with
+     * β₁L = 4.730 (cos βL·cosh βL = 1; R. D. Blevins, Formulas for Natural
+     * Frequency and Mode Shape, table 8-1), damped critically */
     const double keep = 1.0 - 2.0 * 22.37 * sqrt(EI / (m1 * L * L * L * L)) * dt;
     double fastest = 1.0;
     long step;
