@@ -215,6 +215,19 @@ int bd_sim_idler(const bd_sim *sim, int i, bd_idler_state *out);
 /* idler set k as laid: how many idlers, at what actual spacing (m) */
 int bd_sim_idler_set(const bd_sim *sim, int k, int *count, double *spacing_m);
 
+/* the model's own resistance law in steady running (sim/running_law.c):
+ * the drive force that keeps the belt at v, from what the model declares,
+ * F(v) = idlers·sgn(v) + lift + feed_mass·v·|v| + bearings·v */
+typedef struct bd_running_law {
+    double idlers;     /* N, rr·N summed over every idler, belt and load */
+    double lift;       /* N, the load raised from its feed to its discharge */
+    double feed_mass;  /* kg/m, the load brought to belt speed at the feed */
+    double bearings;   /* N·s/m, Σ b/R² of the pulleys the belt turns */
+} bd_running_law;
+void bd_running_law_build(const bd_sim *sim, bd_running_law *law);
+/* N at v m/s; *scale (may be NULL): the terms summed in magnitude */
+double bd_running_law_force(const bd_running_law *law, double v, double *scale);
+
 typedef struct bd_probe_state {
     double tension_N, speed_mps;   /* the belt at the probe now */
     double belt_x_m, belt_y_m;     /* where the belt is there now */

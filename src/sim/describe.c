@@ -35,6 +35,27 @@ static void describe_speed_loops(FILE *f, const bd_sim *sim)
     }
 }
 
+/* the steady running force the model's own resistance law gives at the
+ * drives' speed (running_law.c): the figure a run's steady drive force
+ * should come to, and the torture test holds it to */
+static void describe_running_law(FILE *f, const bd_sim *sim)
+{
+    double v = bd_drives_reference_speed(sim->model);
+    if (!(v > 0.0))
+        return;
+    const bd_model_def *def = sim->model->def;
+    bd_running_law law;
+    bd_running_law_build(sim, &law);
+    double F = bd_running_law_force(&law, v, NULL);
+    fprintf(f, "steady running force at %.4g m/s by the model's own law: %.4g N (idler rolling "
+               "resistance %.4g N, lift of the load %.4g N, its acceleration at the feed %.4g N, "
+               "pulley bearing_damping %.4g N%s)\n",
+            v, F, law.idlers, law.lift, law.feed_mass * v * v, law.bearings * v,
+            def->design.present && def->design.secondary == BD_SECONDARY_INDIVIDUAL
+                ? "; design.secondary's resistances come on top"
+                : "");
+}
+
 /* how each span runs (the pulleys' centres are on their own lines): a
  * layout made from a `profile` is checked here before it is run
  * (model-format.md) */
@@ -121,6 +142,7 @@ void bd_sim_describe(const bd_sim *sim, FILE *f)
                 p->m->def->has_drive ? ", drive" : "", p->m->def->has_takeup ? ", takeup" : "");
     }
     describe_speed_loops(f, sim);
+    describe_running_law(f, sim);
     describe_spans(f, sim);
     if (def->idler_set_count > 0)
         fprintf(f, "idlers:\n");

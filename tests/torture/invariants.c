@@ -14,94 +14,12 @@ static double now(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-/* which spans carry load: the feed span from the feed point on, then
- * every span up to the one arriving at the discharge pulley */
-static double loaded_from(const bd_model_def *def, int span)
+/* the model's own resistance law (sim/running_law.c) at belt speed v */
+static double law_force(const bd_sim *sim, double v, double *scale)
 {
-    const bd_material_def *mat = &def->material;
-    if (!mat->present || mat->mass_per_length <= 0.0)
-        return -1.0;
-    int n = def->pulley_count;
-    for (int j = mat->feed_span, k = 0; k < n; k++, j = (j + 1) % n) {
-        if (j == span)
-            return j == mat->feed_span ? mat->feed_at : 0.0;
-        if ((j + 1) % n == mat->discharge)
-            break;
-    }
-    return -1.0;
-}
-
-double bd_torture_law_force(const bd_sim *sim, const bd_model_def *def, double v, double *scale)
-{
-    double g = def->gravity, mB = def->belt.mass_per_length;
-    double sum_abs = 0.0;
-    double mL = def->material.present ? def->material.mass_per_length : 0.0;
-    double F = 0.0;
-    /* idler rolling resistance: each idler carries the weight (normal to
-     * its span) between the midpoints to its neighbours, a pulley's tangent
-     * point being the neighbour of the first and the last; the idlers stand
-     * where the layout rule puts them (model-format: evenly, the spacing
-     * closest to the one given), whether or not the belt resolves them */
-    for (int k = 0; k < def->idler_set_count; k++) {
-        const bd_idler_set_def *set = &def->idler_sets[k];
-        double p0[2], p1[2];
-        bd_sim_span_ends(sim, set->span, p0, p1);
-        double Ls = hypot(p1[0] - p0[0], p1[1] - p0[1]);
-        double u[2] = {(p1[0] - p0[0]) / Ls, (p1[1] - p0[1]) / Ls};
-        int count = 0;
-        double spacing = 0.0;
-        bd_sim_idler_set(sim, k, &count, &spacing);
-        double from = loaded_from(def, set->span);
-        double feed_t = from >= 0.0 ? from * Ls : INFINITY;
-        /* idler i at i·spacing (i = 1 .. count), the span's ends at 0, Ls */
-        for (int i = 1; i <= count; i++) {
-            double next = i == count ? Ls : (i + 1) * spacing;
-            double a = 0.5 * ((i - 1) * spacing + i * spacing), b = 0.5 * (i * spacing + next);
-            double loaded = b > feed_t ? b - (a > feed_t ? a : feed_t) : 0.0;
-            double N = g * fabs(u[0]) * (mB * (b - a) + mL * loaded);
-            F += set->rolling_resistance * N;
-            sum_abs += set->rolling_resistance * N;
-        }
-        /* an idler `curve` (torture --curves) adds nothing: it is an arc
-         * through two points of the span, meeting the straight span at two
-         * corners that turn the belt back by half its sweep each, so the
-         * tension pulls its ends along one line and the idlers carry the
-         * weight alone, Σ N = m'·g·cos δ·length, however the load is
-         * shared among them (T/R on the arc, T·Δ at the corners, the belt
-         * lifting off some; vertical balance of the belt over the curve).
-         * The linear law rr·ΣN is then this span's as if straight. */
-    }
-    /* the load: lifted from the feed point to the end of the loaded region,
-     * and brought to belt speed where it lands */
-    if (mL > 0.0) {
-        int n = def->pulley_count, j = def->material.feed_span;
-        double p0[2], p1[2], y_feed, y_end = 0.0;
-        bd_sim_span_ends(sim, j, p0, p1);
-        y_feed = p0[1] + def->material.feed_at * (p1[1] - p0[1]);
-        for (int k = 0; k < n; k++, j = (j + 1) % n) {
-            bd_sim_span_ends(sim, j, p0, p1);
-            y_end = p1[1];
-            if ((j + 1) % n == def->material.discharge)
-                break;
-        }
-        F += mL * g * (y_end - y_feed);
-        sum_abs += fabs(mL * g * (y_end - y_feed));
-        if (def->material.feeding) {
-            F += mL * v * v;
-            sum_abs += mL * v * v;
-        }
-    }
-    /* bearings of the pulleys the belt turns: b·ω = R·ΔT */
-    for (int i = 0; i < def->pulley_count; i++) {
-        const bd_pulley_def *p = &def->pulleys[i];
-        if (!p->has_drive) {
-            F += p->bearing_damping * v / (p->radius * p->radius);
-            sum_abs += p->bearing_damping * v / (p->radius * p->radius);
-        }
-    }
-    if (scale)
-        *scale = sum_abs;
-    return F;
+    bd_running_law law;
+    bd_running_law_build(sim, &law);
+    return bd_running_law_force(&law, v, scale);
 }
 
 /* the belt speed at which the motors' Kloss curves deliver the law's force
@@ -129,7 +47,7 @@ static double motor_speed(const bd_sim *sim, const bd_model_def *def)
         double s = 0.5 * (lo + hi);
         v = (1.0 - s) * w_sync / m->gear_ratio * d->radius;
         double T = m->gear_ratio * 2.0 * Tb * s * sb / (s * s + sb * sb);
-        double need = (bd_torture_law_force(sim, def, v, NULL) / drives) * d->radius
+        double need = (law_force(sim, v, NULL) / drives) * d->radius
                     + d->bearing_damping * v / d->radius;
         if (T < need)
             lo = s;
@@ -240,7 +158,7 @@ void bd_torture_run(const char *yaml, const char *label, const bd_torture_option
             res->speed = v;
             res->averaged_s = (double)(ns - from) * dt;
             double law_scale = 0.0;
-            bd_torture_law_force(sim, &def, v, &law_scale);
+            law_force(sim, v, &law_scale);
             /* three checks in a row within the bounds (their spread, largest
              * less smallest): two could meet by chance on a slow swing */
             double ftol = opt->steady_force * fmax(law_scale, 1.0);
@@ -309,7 +227,7 @@ void bd_torture_run(const char *yaml, const char *label, const bd_torture_option
     res->completed = 1;
     res->ran_s = bd_sim_time(sim);
     res->speed_target = opt->target_speed > 0.0 ? opt->target_speed : motor_speed(sim, &def);
-    res->force_law = bd_torture_law_force(sim, &def, res->speed, &res->force_scale);
+    res->force_law = law_force(sim, res->speed, &res->force_scale);
     goto done;
 failed:
     snprintf(res->message, sizeof res->message, "%s", err);

@@ -38,14 +38,5 @@ typedef struct bd_torture_options {
 void bd_torture_run(const char *yaml, const char *label, const bd_torture_options *opt,
                     bd_torture_result *res);
 
-/* the steady running force of the model's own resistance law at belt
- * speed v, N: idler rolling resistance × the weight the idlers carry,
- * the lift of the load, the load's acceleration at the feed, the bearing
- * damping of the pulleys that do not drive (model-format.md: `idlers`
- * rolling_resistance, `material`, `bearing_damping`; the same split as
- * DIN 22101's main, slope and loading-point resistances); *scale (may be NULL) gets
- * those terms summed in magnitude, the measure of the force error when
- * they cancel (a loaded decline) */
-double bd_torture_law_force(const bd_sim *sim, const bd_model_def *def, double v, double *scale);
 
 #endif
