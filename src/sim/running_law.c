@@ -1,9 +1,9 @@
 /* The model's own resistance law in steady running: the force the drives
  * must deliver to keep the belt at speed v, from what the model declares
- * and nothing the run computes. The torture test holds every run's steady
- * drive force to it (issue 10), and the speed loops feed it forward
- * (parts/drive.c) so that a drive tuned to absorb the belt's waves still
- * follows its start curve. */
+ * and nothing the run computes (the same split as DIN 22101's main, slope
+ * and loading-point resistances, with the model's own idler law in place
+ * of f). `beltdyn check` prints it (describe.c); the torture test holds
+ * every run's steady drive force to it (issue 10). */
 #include "sim/engine.h"
 
 #include <math.h>
