@@ -8,22 +8,19 @@
 
 #include <math.h>
 
-/* which spans carry load: the feed span from the feed point on, then
- * every span up to the one arriving at the discharge pulley; the
- * fraction of the span where the load starts, or −1 */
-static double loaded_from(const bd_model_def *def, int span)
+/* m of [x0, x0 + w] (path coordinates) inside the loaded region from
+ * s_feed, `length` long (model/path.c bd_path_loaded_region), the loop
+ * being L: the interval measured from the region's start, and once more a
+ * loop further on for a region that wraps past s = 0 */
+static double loaded_part(double x0, double w, double s_feed, double length, double L)
 {
-    const bd_material_def *mat = &def->material;
-    if (!mat->present || mat->mass_per_length <= 0.0)
-        return -1.0;
-    int n = def->pulley_count;
-    for (int j = mat->feed_span, k = 0; k < n; k++, j = (j + 1) % n) {
-        if (j == span)
-            return j == mat->feed_span ? mat->feed_at : 0.0;
-        if ((j + 1) % n == mat->discharge)
-            break;
+    double u = fmod(x0 - s_feed + 2.0 * L, L), part = 0.0;
+    for (double start = 0.0; start <= L; start += L) {
+        double lo = fmax(u, start), hi = fmin(u + w, start + length);
+        if (hi > lo)
+            part += hi - lo;
     }
-    return -1.0;
+    return part;
 }
 
 void bd_running_law_build(const bd_sim *sim, bd_running_law *law)
@@ -38,23 +35,29 @@ void bd_running_law_build(const bd_sim *sim, bd_running_law *law)
      * idlers stand where the layout rule puts them (model-format: evenly,
      * the spacing closest to the one given), whether or not the belt
      * resolves them */
+    const bd_path *path = &sim->model->path;
+    const double L = path->length;
+    double s_feed = 0.0, loaded = 0.0;
+    if (mL > 0.0)
+        bd_path_loaded_region(path, &def->material, &s_feed, &loaded);
     for (int k = 0; k < def->idler_set_count; k++) {
         const bd_idler_set_def *set = &def->idler_sets[k];
+        const bd_path_segment *sp = bd_path_span(path, set->span);
         double p0[2], p1[2];
         bd_sim_span_ends(sim, set->span, p0, p1);
         double Ls = hypot(p1[0] - p0[0], p1[1] - p0[1]);
-        double cos_slope = fabs(p1[0] - p0[0]) / Ls;
+        double cos_slope = fabs(p1[0] - p0[0]) / Ls, to_s = sp->length / Ls;
         int count = 0;
         double spacing = 0.0;
         bd_sim_idler_set(sim, k, &count, &spacing);
-        double from = loaded_from(def, set->span);
-        double feed_t = from >= 0.0 ? from * Ls : INFINITY;
         /* idler i at i·spacing (i = 1 .. count), the span's ends at 0, Ls */
         for (int i = 1; i <= count; i++) {
             double next = i == count ? Ls : (i + 1) * spacing;
             double a = 0.5 * ((i - 1) * spacing + i * spacing), b = 0.5 * (i * spacing + next);
-            double loaded = b > feed_t ? b - (a > feed_t ? a : feed_t) : 0.0;
-            law->idlers += set->rolling_resistance * g * cos_slope * (mB * (b - a) + mL * loaded);
+            double on = mL > 0.0 ? loaded_part(sp->s0 + a * to_s, (b - a) * to_s, s_feed,
+                                               loaded, L) / to_s
+                                 : 0.0;
+            law->idlers += set->rolling_resistance * g * cos_slope * (mB * (b - a) + mL * on);
         }
         /* an idler `curve` adds nothing: it is an arc through two points of
          * the span, meeting the straight span at two corners that turn the
@@ -68,17 +71,10 @@ void bd_running_law_build(const bd_sim *sim, bd_running_law *law)
     /* the load: lifted from the feed point to the end of the loaded
      * region, and brought to belt speed where it lands */
     if (mL > 0.0) {
-        int n = def->pulley_count, j = def->material.feed_span;
-        double p0[2], p1[2], y_end = 0.0;
-        bd_sim_span_ends(sim, j, p0, p1);
-        double y_feed = p0[1] + def->material.feed_at * (p1[1] - p0[1]);
-        for (int k = 0; k < n; k++, j = (j + 1) % n) {
-            bd_sim_span_ends(sim, j, p0, p1);
-            y_end = p1[1];
-            if ((j + 1) % n == def->material.discharge)
-                break;
-        }
-        law->lift = mL * g * (y_end - y_feed);
+        double pf[2], pd[2], t[2];
+        bd_path_point(path, s_feed, pf, t);
+        bd_path_point(path, s_feed + loaded, pd, t);
+        law->lift = mL * g * (pd[1] - pf[1]);
         if (def->material.feeding)
             law->feed_mass = mL;
     }

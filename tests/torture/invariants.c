@@ -14,17 +14,9 @@ static double now(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-/* the model's own resistance law (sim/running_law.c) at belt speed v */
-static double law_force(const bd_sim *sim, double v, double *scale)
-{
-    bd_running_law law;
-    bd_running_law_build(sim, &law);
-    return bd_running_law_force(&law, v, scale);
-}
-
 /* the belt speed at which the motors' Kloss curves deliver the law's force
  * (every drive a motor with the same data, sharing the force equally) */
-static double motor_speed(const bd_sim *sim, const bd_model_def *def)
+static double motor_speed(const bd_running_law *law, const bd_model_def *def)
 {
     int drives = 0;
     const bd_pulley_def *d = NULL;
@@ -47,7 +39,7 @@ static double motor_speed(const bd_sim *sim, const bd_model_def *def)
         double s = 0.5 * (lo + hi);
         v = (1.0 - s) * w_sync / m->gear_ratio * d->radius;
         double T = m->gear_ratio * 2.0 * Tb * s * sb / (s * s + sb * sb);
-        double need = (law_force(sim, v, NULL) / drives) * d->radius
+        double need = (bd_running_law_force(law, v, NULL) / drives) * d->radius
                     + d->bearing_damping * v / d->radius;
         if (T < need)
             lo = s;
@@ -78,6 +70,10 @@ void bd_torture_run(const char *yaml, const char *label, const bd_torture_option
     bd_diag_free(&diag);
     res->loaded = 1;
     res->nodes = bd_sim_node_count(sim);
+    /* the model's own resistance law (sim/running_law.c), which the
+     * steady drive force is held to */
+    bd_running_law law;
+    bd_running_law_build(sim, &law);
     char err[600];
     if (def.simulation.stabilize) {
         bd_run_options ro = {0};
@@ -158,7 +154,7 @@ void bd_torture_run(const char *yaml, const char *label, const bd_torture_option
             res->speed = v;
             res->averaged_s = (double)(ns - from) * dt;
             double law_scale = 0.0;
-            law_force(sim, v, &law_scale);
+            bd_running_law_force(&law, v, &law_scale);
             /* three checks in a row within the bounds (their spread, largest
              * less smallest): two could meet by chance on a slow swing */
             double ftol = opt->steady_force * fmax(law_scale, 1.0);
@@ -226,8 +222,8 @@ void bd_torture_run(const char *yaml, const char *label, const bd_torture_option
     res->dissipation_drop = drop_worst / flow;
     res->completed = 1;
     res->ran_s = bd_sim_time(sim);
-    res->speed_target = opt->target_speed > 0.0 ? opt->target_speed : motor_speed(sim, &def);
-    res->force_law = law_force(sim, res->speed, &res->force_scale);
+    res->speed_target = opt->target_speed > 0.0 ? opt->target_speed : motor_speed(&law, &def);
+    res->force_law = bd_running_law_force(&law, res->speed, &res->force_scale);
     goto done;
 failed:
     snprintf(res->message, sizeof res->message, "%s", err);
