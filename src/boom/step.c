@@ -1,0 +1,222 @@
+/* One step of the boom: forces, then symplectic Euler (velocities, then
+ * positions, explicit: the stable step is found in build.c), then the
+ * spatial nodes move to where the contacts are (boom/layout.c).
+ *
+ * Structural damping is Rayleigh's pair: beta on the strain rates
+ * (boom/beam.c) and alpha on the mass, applied to the velocity relative to
+ * the rigid boom (the profile's motion): the sections' elastic motion is
+ * damped, their commanded motion is not dragged. Its work splits into a
+ * dissipation alpha m |v - v_rigid|^2 >= 0 and an exchange with the
+ * commanded motion counted as input. */
+#include "boom/boom_internal.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+void boom_kinematics(bd_boom *b, double t)
+{
+    bd_boom_stroke_eval(&b->def.stroke, t, &b->stroke_ref, &b->stroke_v, &b->stroke_a);
+    const double h = 1e-6;
+    b->theta = bd_table_eval(&b->def.luffing_angle, t);
+    b->theta_dot = (bd_table_eval(&b->def.luffing_angle, t + h)
+                    - bd_table_eval(&b->def.luffing_angle, t > h ? t - h : 0.0))
+                 / (t > h ? 2.0 * h : h + t);
+}
+
+static int section_of(const bd_boom *b, int i)
+{
+    int k = 0;
+    while (k + 1 < b->ns && i >= b->sec[k + 1].first)
+        k++;
+    return k;
+}
+
+void boom_forces(bd_boom *b, double *elastic, double *diss_power, double *in_power)
+{
+    int N = b->N;
+    memset(b->fx, 0, (size_t)N * sizeof *b->fx);
+    memset(b->fy, 0, (size_t)N * sizeof *b->fy);
+    memset(b->mz, 0, (size_t)N * sizeof *b->mz);
+    for (int i = 0; i < N; i++)
+        b->fy[i] -= b->m[i] * b->g;
+    double U = 0.0, D = 0.0, P = 0.0, u, d, p;
+    boom_beam_forces(b, &u, &d);
+    U += u;
+    D += d;
+    if (b->alpha > 0.0) {
+        for (int k = 0; k < b->ns; k++) {
+            const boom_section *S = &b->sec[k];
+            for (int i = S->first; i < S->first + S->n; i++) {
+                double rx, ry, rvx, rvy;
+                boom_rigid_point(b, k, b->s[i], &rx, &ry, &rvx, &rvy);
+                double ex = b->vx[i] - rvx, ey = b->vy[i] - rvy, ew = b->w[i] - b->theta_dot;
+                double am = b->alpha * b->m[i], aj = b->alpha * b->J[i];
+                b->fx[i] -= am * ex;
+                b->fy[i] -= am * ey;
+                b->mz[i] -= aj * ew;
+                D += am * (ex * ex + ey * ey) + aj * ew * ew;
+                P -= am * (ex * rvx + ey * rvy) + aj * ew * b->theta_dot;
+            }
+        }
+    }
+    boom_pads(b, &u, &d);
+    U += u;
+    D += d;
+    boom_actuators(b, &u, &d, &p);
+    U += u;
+    D += d;
+    P += p;
+    *elastic = U;
+    *diss_power = D;
+    *in_power = P;
+}
+
+void boom_tip(const bd_boom *b, double *x, double *y, double *vx, double *vy)
+{
+    int i = b->N - 1;
+    *x = b->x[i];
+    *y = b->y[i];
+    *vx = b->vx[i];
+    *vy = b->vy[i];
+}
+
+void boom_tip_rigid(const bd_boom *b, double *x, double *y)
+{
+    double vx, vy;
+    boom_rigid_point(b, b->ns - 1, b->sec[b->ns - 1].L, x, y, &vx, &vy);
+}
+
+static double kinetic(const bd_boom *b)
+{
+    double K = 0.0;
+    for (int i = 0; i < b->N; i++)
+        K += b->m[i] * (b->vx[i] * b->vx[i] + b->vy[i] * b->vy[i]) + b->J[i] * b->w[i] * b->w[i];
+    return 0.5 * K;
+}
+
+static double gravity_energy(const bd_boom *b)
+{
+    double G = 0.0;
+    for (int i = 0; i < b->N; i++)
+        G += b->m[i] * b->g * b->y[i];
+    return G;
+}
+
+/* NaN, an element stretched or crushed past any steel's, a pad pushed
+ * through: where and why into err; 1 = out of bounds */
+static int out_of_bounds(const bd_boom *b, char *err, size_t errlen)
+{
+    for (int i = 0; i < b->N; i++) {
+        int k = section_of(b, i);
+        if (!isfinite(b->x[i]) || !isfinite(b->y[i]) || !isfinite(b->vx[i])
+            || !isfinite(b->vy[i]) || !isfinite(b->phi[i])) {
+            snprintf(err, errlen, "at t = %.4f s the state of section %d at s = %.2f m is not "
+                     "finite: the run diverged (time step %.3g s)", b->t, k + 1, b->s[i], b->dt);
+            return 1;
+        }
+        if (i + 1 < b->sec[k].first + b->sec[k].n) {
+            double l = hypot(b->x[i + 1] - b->x[i], b->y[i + 1] - b->y[i]);
+            double l0 = b->s[i + 1] - b->s[i];
+            if (l < 0.5 * l0 || l > 1.5 * l0) {
+                snprintf(err, errlen, "at t = %.4f s section %d between s = %.2f and %.2f m is "
+                         "%s to %.0f %% of its length: the run diverged (time step %.3g s)",
+                         b->t, k + 1, b->s[i], b->s[i + 1], l < l0 ? "crushed" : "stretched",
+                         100.0 * l / l0, b->dt);
+                return 1;
+            }
+        }
+    }
+    for (int j = 0; j < b->nc; j++) {
+        const boom_contact *c = &b->c[j];
+        double xa, ya, pa, vxa, vya, wa, xb, yb, pb, vxb, vyb, wb;
+        boom_eval(b, &c->A, &xa, &ya, &pa, &vxa, &vya, &wa);
+        boom_eval(b, &c->B, &xb, &yb, &pb, &vxb, &vyb, &wb);
+        double d = -(xa - xb) * sin(pb) + (ya - yb) * cos(pb);
+        if (fabs(d) > b->def.gap + 0.25 * c->h) {
+            snprintf(err, errlen, "at t = %.4f s section %d's %s pads are %.0f mm across the "
+                     "axis of section %d (clearance %.0f mm): the pads let go or the run "
+                     "diverged (time step %.3g s)", b->t, c->inner_sec + 1,
+                     j % 2 == 0 ? "bottom" : "outer-contact", 1e3 * fabs(d), c->outer_sec + 1,
+                     1e3 * b->def.gap, b->dt);
+            return 1;
+        }
+    }
+    return 0;
+}
+
+void boom_evaluate(bd_boom *b, int settle)
+{
+    double U, D, P;
+    boom_kinematics(b, b->t);
+    boom_forces(b, &U, &D, &P);
+    int pin = b->sec[0].first;
+    if (!b->def.luffing_cylinder.present) {
+        /* the moment that holds section 1 at the angle: J theta'' - sum
+         * of the others (theta'' = 0 on a linear table segment) */
+        b->luff_force = -b->mz[pin];
+        P += b->luff_force * b->theta_dot;
+    }
+    b->pend_diss = D;
+    b->pend_in = P;
+    /* the energy of this state: positions now, the velocity the mean of
+     * the half steps around it (the second half added in boom_advance) */
+    b->e_pot = gravity_energy(b) + U;
+    b->pend_kin = kinetic(b);
+    (void)settle;
+}
+
+int boom_advance(bd_boom *b, int settle, char *err, size_t errlen)
+{
+    double dt = b->dt;
+    int pin = b->sec[0].first;
+    int held_angle = !b->def.luffing_cylinder.present;
+    for (int i = 0; i < b->N; i++) {
+        b->vx[i] += dt * b->fx[i] / b->m[i];
+        b->vy[i] += dt * b->fy[i] / b->m[i];
+        b->w[i] += dt * b->mz[i] / b->J[i];
+    }
+    b->vx[pin] = b->vy[pin] = 0.0;
+    if (held_angle)
+        b->w[pin] = b->theta_dot;
+    double K_after = kinetic(b);
+    if (!settle) {
+        b->e_kin = 0.5 * (b->pend_kin + K_after);
+        if (b->t == 0.0)
+            b->e_0 = b->e_kin + b->e_pot;
+        if (b->e_kin > b->e_norm)
+            b->e_norm = b->e_kin;
+        double bal = fabs(b->e_kin + b->e_pot + b->e_diss - b->e_in - b->e_0);
+        double ref = fmax(fmax(fabs(b->e_0), b->e_in), fmax(b->e_norm, 1.0));
+        if (bal / ref > b->balance_rel)
+            b->balance_rel = bal / ref;
+    } else if (K_after < b->pend_kin) {
+        /* kinetic damping: at a peak of kinetic energy the state is near
+         * the equilibrium of the mode that dominates; stop there */
+        for (int i = 0; i < b->N; i++)
+            b->vx[i] = b->vy[i] = b->w[i] = 0.0;
+    }
+    for (int i = 0; i < b->N; i++) {
+        b->x[i] += dt * b->vx[i];
+        b->y[i] += dt * b->vy[i];
+        b->phi[i] += dt * b->w[i];
+    }
+    if (held_angle) {
+        boom_kinematics(b, settle ? b->t : b->t + dt);
+        b->phi[pin] = b->theta;
+    }
+    boom_remap(b);
+    b->steps++;
+    if (!settle) {
+        b->t += dt;
+        b->e_diss += b->pend_diss * dt;
+        b->e_in += b->pend_in * dt;
+    }
+    return out_of_bounds(b, err, errlen);
+}
+
+int boom_step(bd_boom *b, int settle, char *err, size_t errlen)
+{
+    boom_evaluate(b, settle);
+    return boom_advance(b, settle, err, errlen);
+}
