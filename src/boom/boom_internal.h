@@ -137,6 +137,8 @@ double boom_inv_mass(const bd_boom *b, const boom_where *at);
 /* move the inner sections' outer contact nodes to where their outer
  * neighbours' tops are, and every node of theirs through the material */
 void boom_remap(bd_boom *b);
+/* section k's key node to material coordinate key_s, its nodes remapped */
+void boom_move_key(bd_boom *b, int k, double key_s);
 
 /* ---- boom/beam.c ---- */
 /* internal and damping forces of every element into f; the elastic

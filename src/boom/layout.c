@@ -236,8 +236,8 @@ void boom_project(const bd_boom *b, int k, double px, double py, boom_where *at)
 
 /* move section k's nodes to the material coordinates of its key node
  * key_s: each takes the state interpolated at its new s from the section
- * as it stood */
-static void remap_section(bd_boom *b, int k, double key_s)
+ * as it stood (masses not updated: boom_masses) */
+void boom_move_key(bd_boom *b, int k, double key_s)
 {
     boom_section *S = &b->sec[k];
     int i0 = S->first, n = S->n;
@@ -282,7 +282,7 @@ void boom_remap(bd_boom *b)
         double lo = 1e-3 * S->L, hi = S->L - lo;
         key_s = key_s < lo ? lo : (key_s > hi ? hi : key_s);
         if (key_s != S->key_s)
-            remap_section(b, k, key_s);
+            boom_move_key(b, k, key_s);
     }
     boom_masses(b);
 }
