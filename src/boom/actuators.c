@@ -85,6 +85,20 @@ void boom_actuators_init(bd_boom *b)
         double lever = fabs((px - b->def.pivot[0]) * uy - (py - b->def.pivot[1]) * ux) / l;
         double Mrod = lever > 0.0 ? I / (lever * lever) : I;
         b->rod_c = 2.0 * tc->damping_ratio * sqrt(b->def.luffing_cylinder.stiffness * Mrod);
+        /* the dashpot acts on one node, through the attachment's offset on
+         * its rotation: keep it within what the explicit step can carry
+         * (c dt / m_local <= 1); the boom's luffing mode is damped by the
+         * structural damping as well */
+        int i = b->attach_node;
+        double off = b->def.luffing_cylinder.attach[1];
+        double m_local = 1.0 / (1.0 / b->m[i] + off * off / b->J[i]);
+        b->rod_c = fmin(b->rod_c, m_local / b->dt);
+    }
+    {
+        int i2 = b->sec[1].first;
+        /* the same bound at section 2's bottom node; its lightest layout
+         * (shortest elements) is a quarter of the mass at worst */
+        b->cyl_c = fmin(b->cyl_c, 0.25 * b->m[i2] / b->dt);
     }
 }
 

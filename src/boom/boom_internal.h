@@ -134,6 +134,8 @@ void boom_eval(const bd_boom *b, const boom_where *at, double *x, double *y, dou
 void boom_apply(bd_boom *b, const boom_where *at, double fx, double fy, double mz);
 /* 1/effective translational mass at a located point */
 double boom_inv_mass(const bd_boom *b, const boom_where *at);
+/* 1/effective rotary inertia there (the angle is linear along an element) */
+double boom_inv_inertia(const bd_boom *b, const boom_where *at);
 /* move the inner sections' outer contact nodes to where their outer
  * neighbours' tops are, and every node of theirs through the material */
 void boom_remap(bd_boom *b);

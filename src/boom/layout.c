@@ -188,6 +188,12 @@ double boom_inv_mass(const bd_boom *b, const boom_where *at)
     return h00 * h00 / b->m[at->a] + h01 * h01 / b->m[at->a + 1];
 }
 
+double boom_inv_inertia(const bd_boom *b, const boom_where *at)
+{
+    double xi = at->xi;
+    return (1.0 - xi) * (1.0 - xi) / b->J[at->a] + xi * xi / b->J[at->a + 1];
+}
+
 /* nearest point of section k to p, walking elements from *at then two
  * Gauss-Newton steps on the Hermite curve */
 static void project_on(const field_view *f, const boom_section *S, double px, double py,

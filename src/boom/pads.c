@@ -19,9 +19,10 @@
  *
  * Friction along the axis: mu rises linearly to mu_static at the switch
  * speed (the regularized stick), then falls to mu_dynamic
- * (mu = mu_d + (mu_s - mu_d) exp(-(|v| - v_s)/v_s)). The stick ramp is a
- * stiff dashpot, integrated implicitly on the two points' effective mass
- * so it stays stable at any normal force. */
+ * (mu = mu_d + (mu_s - mu_d) exp(-(|v| - v_s)/v_s)), at each pad's face.
+ * The stick ramp is a stiff dashpot, integrated implicitly on the face's
+ * effective mass (the two points' masses and, through the face's offset
+ * h/2, their rotary inertias) so it stays stable at any normal force. */
 #include "boom/boom_internal.h"
 
 #include <math.h>
@@ -92,24 +93,32 @@ static void one_contact(bd_boom *b, boom_contact *c, double *elastic, double *di
         }
     }
     double Ntot = Npad[0] + Npad[1];
-    /* friction on A along the outer axis; B takes the opposite */
+    /* friction along the outer axis at each pad's face, +-h/2 off the
+     * axis, where the sections' rotations add to the sliding: the face of
+     * pad p slides at vs - p (h/2)(wA - wB), and its force F_p t there
+     * gives A the moment -p (h/2) F_p; B takes the opposite of both */
     double vs = (vxa - vxb) * tx + (vya - vyb) * ty;
-    double Ff = 0.0;
-    if (Ntot > 0.0) {
-        if (fabs(vs) <= pd->switch_speed) {
-            double cf = pd->mu_static * Ntot / pd->switch_speed;
-            double meff = 1.0 / (ima + imb);
-            Ff = -cf * vs / (1.0 + cf * b->dt / meff);
+    double hh = 0.5 * c->h;
+    double ija = boom_inv_inertia(b, &c->A), ijb = boom_inv_inertia(b, &c->B);
+    double meff = 1.0 / (ima + imb + hh * hh * (ija + ijb));
+    double Ff = 0.0, Mf = 0.0;
+    for (int p = 0; p < 2; p++) {
+        if (!(Npad[p] > 0.0))
+            continue;
+        double sgn = p == 0 ? 1.0 : -1.0;
+        double vf = vs - sgn * hh * dw;
+        double Fp;
+        if (fabs(vf) <= pd->switch_speed) {
+            /* the stick ramp, implicit on the face's effective mass */
+            double cf = pd->mu_static * Npad[p] / pd->switch_speed;
+            Fp = -cf * vf / (1.0 + cf * b->dt / meff);
         } else {
-            Ff = -(vs > 0.0 ? 1.0 : -1.0) * mu_of(pd, vs) * Ntot;
+            Fp = -(vf > 0.0 ? 1.0 : -1.0) * mu_of(pd, vf) * Npad[p];
         }
-        *diss += -Ff * vs;
+        *diss += -Fp * vf;
+        Ff += Fp;
+        Mf -= sgn * hh * Fp;
     }
-    /* each pad's share of the friction acts at its face, +-h/2 off the
-     * axis: a moment (h/2 n) x (F t) = -(h/2) F per unit upper share */
-    double Mf = 0.0;
-    if (Ntot > 0.0)
-        Mf = -0.5 * c->h * Ff * (Npad[0] - Npad[1]) / Ntot;
     double fxa = F * nx + Ff * tx, fya = F * ny + Ff * ty;
     boom_apply(b, &c->A, fxa, fya, M + Mf);
     boom_apply(b, &c->B, -fxa, -fya, -(M + Mf));

@@ -190,11 +190,6 @@ int boom_advance(bd_boom *b, int settle, char *err, size_t errlen)
         double ref = fmax(fmax(fabs(b->e_0), b->e_in), fmax(b->e_norm, 1.0));
         if (bal / ref > b->balance_rel)
             b->balance_rel = bal / ref;
-    } else if (K_after < b->pend_kin) {
-        /* kinetic damping: at a peak of kinetic energy the state is near
-         * the equilibrium of the mode that dominates; stop there */
-        for (int i = 0; i < b->N; i++)
-            b->vx[i] = b->vy[i] = b->w[i] = 0.0;
     }
     for (int i = 0; i < b->N; i++) {
         b->x[i] += dt * b->vx[i];
