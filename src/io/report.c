@@ -1556,6 +1556,10 @@ int bd_report_write(const char *dir, char *err, size_t errlen)
         rc = BD_REPORT_EOUTPUT;
         goto done;
     }
+    if (strcmp(bd_json_str(r->summary, "kind"), "boom") == 0) {
+        rc = bd_boom_report_write(r, err, errlen);
+        goto done;
+    }
     if ((rc = plot_layout(r, err, errlen))) goto done;
     if ((rc = plot_tension_surface(r, err, errlen))) goto done;
     if ((rc = plot_envelope(r, err, errlen))) goto done;

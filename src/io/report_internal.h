@@ -136,4 +136,8 @@ void bd_rep_run_cards(bd_rep *r, bd_strbuf *b);
 int bd_rep_write_html(bd_rep *r, const char *what, void (*cards)(bd_rep *, bd_strbuf *),
                       char *err, size_t errlen);
 
+/* the report of a boom run (summary.json "kind": "boom", boom_report.c),
+ * r's summary read and DIR/plots made; 0, or a BD_REPORT_E* code */
+int bd_boom_report_write(bd_rep *r, char *err, size_t errlen);
+
 #endif
