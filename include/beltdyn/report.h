@@ -24,7 +24,11 @@ extern "C" {
  * a one-line message in err (which may be NULL).
  * A start-study directory (study.csv and study.json from `beltdyn study`,
  * no summary.json) gets the start-curve comparison instead:
- * DIR/plots/study_{tension,peaks}.{png,svg} and DIR/report.html. */
+ * DIR/plots/study_{tension,peaks}.{png,svg} and DIR/report.html.
+ * A boom run's directory (summary.json "kind": "boom", history.csv and
+ * beams.csv, each required) gets the boom's report:
+ * DIR/plots/{boom_tip,boom_cylinders,boom_pads,boom_moment,boom_shape,
+ * energy}.{png,svg} and DIR/report.html (docs/report.md). */
 int bd_report_write(const char *dir, char *err, size_t errlen);
 
 /* the pass/fail table of a finished run (DIR/summary.json "checks") on f,

@@ -8,6 +8,7 @@
 #include "io/html.h"
 #include "io/layout_plot.h"
 #include "io/cases_report.h"
+#include "io/report_internal.h"
 #include "io/study_report.h"
 #include "io/plot.h"
 #include "laws/belt_pulley_law.h"
@@ -22,25 +23,14 @@
 #include <sys/stat.h>
 #include <sys/types.h>
 
-#define PATH_LEN 4096
-#define LABEL_LEN 512
 #define MAX_GROUP BD_PLOT_MAX_SERIES
-#define FIG_W 1200
-#define FIG_H 700
 /* a summary.json from before design.safety_factor: its default for starts
  * and stops, which a run's peak is judged by */
 #define SAFETY_FACTOR_DEFAULT 4.8
-#define MAX_LABELS 128
 
-/* ---- small helpers ---- */
+/* ---- small helpers (report_internal.h) ---- */
 
-
-static void set_err(char *err, size_t errlen, const char *fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 3, 4)))
-#endif
-    ;
-static void set_err(char *err, size_t errlen, const char *fmt, ...)
+void bd_rep_err(char *err, size_t errlen, const char *fmt, ...)
 {
     if (!err || errlen == 0) return;
     va_list ap;
@@ -49,7 +39,7 @@ static void set_err(char *err, size_t errlen, const char *fmt, ...)
     va_end(ap);
 }
 
-static int file_exists(const char *path)
+int bd_rep_file_exists(const char *path)
 {
     struct stat st;
     return stat(path, &st) == 0 && S_ISREG(st.st_mode);
@@ -61,9 +51,7 @@ static int ends_with(const char *s, const char *suffix)
     return a > b && strcmp(s + a - b, suffix) == 0;
 }
 
-/* a number for people: about 4 significant digits, no exponent in the
- * usual range, thin spaces between thousands */
-static void fmt_num(char *buf, size_t len, double v)
+void bd_rep_fmt_num(char *buf, size_t len, double v)
 {
     if (!isfinite(v)) {
         snprintf(buf, len, "%s", isnan(v) ? "NaN" : v > 0 ? "inf" : "-inf");
@@ -104,19 +92,11 @@ static void fmt_num(char *buf, size_t len, double v)
     *o = '\0';
 }
 
-/* a unit that keeps the numbers short: divide by scale, show unit */
-typedef struct unit {
-    double scale;
-    char name[16];
-} unit;
-
-/* N, N·m and J get a k, M or G prefix above 10^4, 10^7, 10^10; other
- * units stay as they are */
-static unit pick_unit(double maxabs, const char *base)
+bd_rep_unit bd_rep_pick_unit(double maxabs, const char *base)
 {
     static const char *const prefixed[3] = {"N", "N·m", "J"};
     static const char *const pre[4] = {"", "k", "M", "G"};
-    unit u;
+    bd_rep_unit u;
     int k = 0, scalable = 0;
     for (int i = 0; i < 3; i++)
         if (strcmp(base, prefixed[i]) == 0) scalable = 1;
@@ -138,8 +118,7 @@ static double maxabs_of(const double *v, size_t n)
     return m;
 }
 
-/* a scaled copy of v (owned by the caller) */
-static double *scaled(const double *v, size_t n, double scale)
+double *bd_rep_scaled(const double *v, size_t n, double scale)
 {
     double *o = malloc((n ? n : 1) * sizeof *o);
     if (!o) return NULL;
@@ -147,40 +126,9 @@ static double *scaled(const double *v, size_t n, double scale)
     return o;
 }
 
-/* ---- what the report knows ---- */
+/* ---- what the report knows (bd_rep, report_internal.h) ---- */
 
-typedef struct point {
-    int known;
-    double value, t, s;
-} point;
-
-typedef struct report {
-    const char *dir;
-    char plots[PATH_LEN];
-    char model[200];
-    char title[LABEL_LEN];
-    cJSON *summary;
-    /* from summary.json, NaN when absent */
-    double rated_N, safety_factor, t_min_sag_N;
-    int sf_default;
-    /* peak and lowest tension: from summary.json, else from tension.csv */
-    point tmax, tmin;
-    /* plots made, in order */
-    int nplots;
-    struct {
-        char name[32];
-        char caption[LABEL_LEN];
-    } plot[10];
-    /* temporary allocations freed at the end */
-    void *owned[256];
-    int nowned;
-    /* texts of the plots being drawn */
-    char labels[MAX_LABELS][LABEL_LEN];
-    int nlabels;
-} report;
-
-/* keep p to be freed at the end (NULL when p is NULL or the list is full) */
-static double *own(report *r, double *p)
+double *bd_rep_own(bd_rep *r, double *p)
 {
     if (p && r->nowned < (int)(sizeof r->owned / sizeof r->owned[0])) {
         r->owned[r->nowned++] = p;
@@ -190,21 +138,19 @@ static double *own(report *r, double *p)
     return NULL;
 }
 
-/* a label buffer that lives as long as the report (for plot texts) */
-static char *lbl(report *r)
+char *bd_rep_label(bd_rep *r)
 {
-    if (r->nlabels >= MAX_LABELS) r->nlabels = MAX_LABELS - 1;  /* reuse the last */
+    if (r->nlabels >= BD_REP_MAX_LABELS) r->nlabels = BD_REP_MAX_LABELS - 1;  /* reuse the last */
     return r->labels[r->nlabels++];
 }
 
-
-static int write_plot(report *r, const bd_plot_figure *f, const char *name, const char *caption,
+int bd_rep_write_plot(bd_rep *r, const bd_plot_figure *f, const char *name, const char *caption,
                       char *err, size_t errlen)
 {
-    char png[PATH_LEN], svg[PATH_LEN];
+    char png[BD_REP_PATH_LEN], svg[BD_REP_PATH_LEN];
     if (snprintf(png, sizeof png, "%s/%s.png", r->plots, name) >= (int)sizeof png ||
         snprintf(svg, sizeof svg, "%s/%s.svg", r->plots, name) >= (int)sizeof svg) {
-        set_err(err, errlen, "%s: path too long", r->plots);
+        bd_rep_err(err, errlen, "%s: path too long", r->plots);
         return BD_REPORT_EOUTPUT;
     }
     if (bd_plot_write(f, png, svg, err, errlen)) return BD_REPORT_EOUTPUT;
@@ -216,7 +162,7 @@ static int write_plot(report *r, const bd_plot_figure *f, const char *name, cons
     return 0;
 }
 
-static void set_title(report *r, char *buf, size_t len, const char *what)
+void bd_rep_set_title(bd_rep *r, char *buf, size_t len, const char *what)
 {
     snprintf(buf, len, "%s — %s", r->model, what);
 }
@@ -298,10 +244,10 @@ static float *raster_field(const double *t, const double *s, const double *T, si
     return img;
 }
 
-static int plot_tension_surface(report *r, char *err, size_t errlen)
+static int plot_tension_surface(bd_rep *r, char *err, size_t errlen)
 {
-    char path[PATH_LEN];
-    if (bd_path_join(path, sizeof path, r->dir, "tension.csv") || !file_exists(path)) return 0;
+    char path[BD_REP_PATH_LEN];
+    if (bd_path_join(path, sizeof path, r->dir, "tension.csv") || !bd_rep_file_exists(path)) return 0;
     static const char *const want[3] = {"t_s", "s_m", "tension_N"};
     bd_csv csv;
     if (bd_csv_read(path, want, 3, &csv, err, errlen)) return BD_REPORT_EINPUT;
@@ -309,7 +255,7 @@ static int plot_tension_surface(report *r, char *err, size_t errlen)
     size_t n = csv.nrows;
     const double *t = csv.col[0], *s = csv.col[1], *T = csv.col[2];
     double smin = INFINITY, smax = -INFINITY, tmin = INFINITY, tmax = -INFINITY;
-    point hi = {0, -INFINITY, 0, 0}, lo = {0, INFINITY, 0, 0};
+    bd_rep_point hi = {0, -INFINITY, 0, 0}, lo = {0, INFINITY, 0, 0};
     size_t nblocks = 0, first_block = 0;
     for (size_t i = 0; i < n; i++) {
         if (i == 0 || t[i] != t[i - 1]) nblocks++;
@@ -319,22 +265,22 @@ static int plot_tension_surface(report *r, char *err, size_t errlen)
         if (s[i] > smax) smax = s[i];
         if (t[i] < tmin) tmin = t[i];
         if (t[i] > tmax) tmax = t[i];
-        if (T[i] > hi.value) hi = (point){1, T[i], t[i], s[i]};
-        if (T[i] < lo.value) lo = (point){1, T[i], t[i], s[i]};
+        if (T[i] > hi.value) hi = (bd_rep_point){1, T[i], t[i], s[i]};
+        if (T[i] < lo.value) lo = (bd_rep_point){1, T[i], t[i], s[i]};
     }
     if (!hi.known || !(smax > smin)) goto done;  /* nothing to draw */
     if (!r->tmax.known) r->tmax = hi;
     if (!r->tmin.known) r->tmin = lo;
 
-    unit u = pick_unit(fmax(fabs(hi.value), fabs(lo.value)), "N");
-    char *cbar = lbl(r), *title = lbl(r), *sub = lbl(r), *mlabel = lbl(r), *nlabel = lbl(r);
-    snprintf(cbar, LABEL_LEN, "Belt tension T [%s]", u.name);
-    set_title(r, title, LABEL_LEN, "belt tension along the belt over time");
-    snprintf(sub, LABEL_LEN,
+    bd_rep_unit u = bd_rep_pick_unit(fmax(fabs(hi.value), fabs(lo.value)), "N");
+    char *cbar = bd_rep_label(r), *title = bd_rep_label(r), *sub = bd_rep_label(r), *mlabel = bd_rep_label(r), *nlabel = bd_rep_label(r);
+    snprintf(cbar, BD_REP_LABEL_LEN, "Belt tension T [%s]", u.name);
+    bd_rep_set_title(r, title, BD_REP_LABEL_LEN, "belt tension along the belt over time");
+    snprintf(sub, BD_REP_LABEL_LEN,
              "%zu points along the belt × %zu times; colour: the largest tension within each pixel",
              first_block, nblocks);
     bd_plot_figure f;
-    bd_plot_figure_init(&f, title, FIG_W, FIG_H + 100);
+    bd_plot_figure_init(&f, title, BD_REP_FIG_W, BD_REP_FIG_H + 100);
     f.subtitle = sub;
     bd_plot_axes *a = &f.panel[0];
     a->xlabel = "Position along the belt s [m]";
@@ -352,10 +298,10 @@ static int plot_tension_surface(report *r, char *err, size_t errlen)
     bd_layout_mark_s_axis(r->summary, a);
     /* markers first: they take part in the layout (legend rows none) */
     char v1[64], v2[64];
-    fmt_num(v1, sizeof v1, hi.value / u.scale);
-    snprintf(mlabel, LABEL_LEN, "max %s %s at s = %.1f m, t = %.2f s", v1, u.name, hi.s, hi.t);
-    fmt_num(v2, sizeof v2, lo.value / u.scale);
-    snprintf(nlabel, LABEL_LEN, "min %s %s at s = %.1f m, t = %.2f s", v2, u.name, lo.s, lo.t);
+    bd_rep_fmt_num(v1, sizeof v1, hi.value / u.scale);
+    snprintf(mlabel, BD_REP_LABEL_LEN, "max %s %s at s = %.1f m, t = %.2f s", v1, u.name, hi.s, hi.t);
+    bd_rep_fmt_num(v2, sizeof v2, lo.value / u.scale);
+    snprintf(nlabel, BD_REP_LABEL_LEN, "min %s %s at s = %.1f m, t = %.2f s", v2, u.name, lo.s, lo.t);
     bd_plot_add_marker(a, hi.s, hi.t, mlabel);
     bd_plot_add_marker(a, lo.s, lo.t, nlabel);
     int w, h;
@@ -364,7 +310,7 @@ static int plot_tension_surface(report *r, char *err, size_t errlen)
     if (h < 16) h = 16;
     float *img = raster_field(t, s, T, n, smin, smax, tmin, map.y1, w, h);
     if (!img) {
-        set_err(err, errlen, "%s: out of memory", path);
+        bd_rep_err(err, errlen, "%s: out of memory", path);
         rc = BD_REPORT_EOUTPUT;
         goto done;
     }
@@ -373,7 +319,7 @@ static int plot_tension_surface(report *r, char *err, size_t errlen)
     map.v = img;
     map.w = w;
     map.h = h;
-    rc = write_plot(r, &f, "tension_surface",
+    rc = bd_rep_write_plot(r, &f, "tension_surface",
                     "Belt tension over position s along the belt and time t; the rings mark the "
                     "highest and the lowest tension.",
                     err, errlen);
@@ -385,20 +331,20 @@ done:
 
 /* ---- the conveyor's layout (summary.json "layout") ---- */
 
-static int plot_layout(report *r, char *err, size_t errlen)
+static int plot_layout(bd_rep *r, char *err, size_t errlen)
 {
-    char *title = lbl(r);
-    set_title(r, title, LABEL_LEN, "layout");
+    char *title = bd_rep_label(r);
+    bd_rep_set_title(r, title, BD_REP_LABEL_LEN, "layout");
     bd_plot_figure f;
-    bd_plot_figure_init(&f, title, FIG_W, FIG_H - 120);
+    bd_plot_figure_init(&f, title, BD_REP_FIG_W, BD_REP_FIG_H - 120);
     bd_layout_drawing d;
     int got = bd_layout_figure(r->summary, &f, &d);
     if (got < 0) {
-        set_err(err, errlen, "out of memory");
+        bd_rep_err(err, errlen, "out of memory");
         return BD_REPORT_EOUTPUT;
     }
     if (got == 0) return 0;   /* a run from before summary.json had a layout */
-    int rc = write_plot(r, &f, "layout",
+    int rc = bd_rep_write_plot(r, &f, "layout",
                         "The conveyor as built: the belt path, the pulleys by name (drives red, "
                         "takeups blue), the loaded stretch, and where the belt lifted off its "
                         "idlers if it did.",
@@ -409,10 +355,10 @@ static int plot_layout(report *r, char *err, size_t errlen)
 
 /* ---- envelope: max/min tension along s ---- */
 
-static int plot_envelope(report *r, char *err, size_t errlen)
+static int plot_envelope(bd_rep *r, char *err, size_t errlen)
 {
-    char path[PATH_LEN];
-    if (bd_path_join(path, sizeof path, r->dir, "envelope.csv") || !file_exists(path)) return 0;
+    char path[BD_REP_PATH_LEN];
+    if (bd_path_join(path, sizeof path, r->dir, "envelope.csv") || !bd_rep_file_exists(path)) return 0;
     static const char *const want[3] = {"s_m", "tension_max_N", "tension_min_N"};
     bd_csv csv;
     if (bd_csv_read(path, want, 3, &csv, err, errlen)) return BD_REPORT_EINPUT;
@@ -421,20 +367,20 @@ static int plot_envelope(report *r, char *err, size_t errlen)
     if (n == 0) goto done;
     double m = fmax(maxabs_of(csv.col[1], n), maxabs_of(csv.col[2], n));
     if (isfinite(r->rated_N)) m = fmax(m, r->rated_N / r->safety_factor);
-    unit u = pick_unit(m, "N");
+    bd_rep_unit u = bd_rep_pick_unit(m, "N");
     double *x = csv.col[0];
-    double *hi = own(r, scaled(csv.col[1], n, u.scale));
-    double *lo = own(r, scaled(csv.col[2], n, u.scale));
+    double *hi = bd_rep_own(r, bd_rep_scaled(csv.col[1], n, u.scale));
+    double *lo = bd_rep_own(r, bd_rep_scaled(csv.col[2], n, u.scale));
     if (!hi || !lo) {
-        set_err(err, errlen, "out of memory");
+        bd_rep_err(err, errlen, "out of memory");
         rc = BD_REPORT_EOUTPUT;
         goto done;
     }
-    char *title = lbl(r), *ylabel = lbl(r), *allow = lbl(r), *sag = lbl(r), *mlabel = lbl(r);
-    set_title(r, title, LABEL_LEN, "tension envelope along the belt");
-    snprintf(ylabel, LABEL_LEN, "Belt tension T [%s]", u.name);
+    char *title = bd_rep_label(r), *ylabel = bd_rep_label(r), *allow = bd_rep_label(r), *sag = bd_rep_label(r), *mlabel = bd_rep_label(r);
+    bd_rep_set_title(r, title, BD_REP_LABEL_LEN, "tension envelope along the belt");
+    snprintf(ylabel, BD_REP_LABEL_LEN, "Belt tension T [%s]", u.name);
     bd_plot_figure f;
-    bd_plot_figure_init(&f, title, FIG_W, FIG_H);
+    bd_plot_figure_init(&f, title, BD_REP_FIG_W, BD_REP_FIG_H);
     f.subtitle = "highest and lowest tension reached at each position during the run";
     bd_plot_axes *a = &f.panel[0];
     a->xlabel = "Position along the belt s [m]";
@@ -450,16 +396,16 @@ static int plot_envelope(report *r, char *err, size_t errlen)
     char v[64], v2[64];
     if (isfinite(r->rated_N)) {
         double allow_N = r->rated_N / r->safety_factor;
-        fmt_num(v, sizeof v, allow_N / u.scale);
-        fmt_num(v2, sizeof v2, r->rated_N / u.scale);
-        snprintf(allow, LABEL_LEN, "allowable in starts and stops %s %s = rated %s %s / "
+        bd_rep_fmt_num(v, sizeof v, allow_N / u.scale);
+        bd_rep_fmt_num(v2, sizeof v2, r->rated_N / u.scale);
+        snprintf(allow, BD_REP_LABEL_LEN, "allowable in starts and stops %s %s = rated %s %s / "
                  "safety factor %.3g%s", v, u.name, v2, u.name, r->safety_factor,
                  r->sf_default ? " (default)" : "");
         bd_plot_add_hline(a, allow_N / u.scale, allow, (bd_rgb){0.80, 0.0, 0.0}, 1);
     }
     if (isfinite(r->t_min_sag_N)) {
-        fmt_num(v, sizeof v, r->t_min_sag_N / u.scale);
-        snprintf(sag, LABEL_LEN, "minimum tension for the sag limit %s %s", v, u.name);
+        bd_rep_fmt_num(v, sizeof v, r->t_min_sag_N / u.scale);
+        snprintf(sag, BD_REP_LABEL_LEN, "minimum tension for the sag limit %s %s", v, u.name);
         bd_plot_add_hline(a, r->t_min_sag_N / u.scale, sag, (bd_rgb){0.0, 0.55, 0.30}, 1);
     }
     /* mark the peak */
@@ -467,19 +413,19 @@ static int plot_envelope(report *r, char *err, size_t errlen)
     for (size_t i = 1; i < n; i++)
         if (hi[i] > hi[im] || !isfinite(hi[im])) im = i;
     if (isfinite(hi[im])) {
-        fmt_num(v, sizeof v, hi[im]);
-        snprintf(mlabel, LABEL_LEN, "peak %s %s at s = %.1f m", v, u.name, x[im]);
+        bd_rep_fmt_num(v, sizeof v, hi[im]);
+        snprintf(mlabel, BD_REP_LABEL_LEN, "peak %s %s at s = %.1f m", v, u.name, x[im]);
         bd_plot_add_marker(a, x[im], hi[im], mlabel);
     }
     {
-        char *cap = lbl(r);
-        snprintf(cap, LABEL_LEN,
+        char *cap = bd_rep_label(r);
+        snprintf(cap, BD_REP_LABEL_LEN,
                  "Highest and lowest belt tension at each position over the run.%s%s",
                  isfinite(r->rated_N) ? " Dashed red: allowable tension (rated / safety factor)."
                                       : " No rated tension in summary.json: no allowable line.",
                  isfinite(r->t_min_sag_N) ? " Dashed green: minimum tension for the sag limit."
                                           : "");
-        rc = write_plot(r, &f, "envelope", cap, err, errlen);
+        rc = bd_rep_write_plot(r, &f, "envelope", cap, err, errlen);
     }
 done:
     bd_csv_free(&csv);
@@ -518,30 +464,30 @@ static void find_group(const bd_csv *h, const char *suffix_a, const char *suffix
     }
 }
 
-/* one panel of NAME columns, scaled to a readable unit */
-static int fill_panel(report *r, bd_plot_axes *a, const bd_csv *h, const group *g, int which,
-                      const char *quantity, const char *base_unit, char *ylabel, size_t ylen,
-                      int with_range, unit *uout)
+int bd_rep_columns_panel(bd_rep *r, bd_plot_axes *a, const bd_csv *h, const int *cols,
+                         const char *const *names, int n, const char *quantity,
+                         const char *base_unit, char *ylabel, size_t ylen, int with_range,
+                         bd_rep_unit *uout)
 {
     const double *t = h->col[0];
     double m = 0.0;
     int any = 0;
-    for (int i = 0; i < g->n; i++)
-        if (g->col[i][which] >= 0) {
-            m = fmax(m, maxabs_of(h->col[g->col[i][which]], h->nrows));
+    for (int i = 0; i < n; i++)
+        if (cols[i] >= 0) {
+            m = fmax(m, maxabs_of(h->col[cols[i]], h->nrows));
             any = 1;
         }
     if (!any) return 0;
-    unit u = pick_unit(m, base_unit);
+    bd_rep_unit u = bd_rep_pick_unit(m, base_unit);
     if (uout) *uout = u;
     snprintf(ylabel, ylen, "%s [%s]", quantity, u.name);
     a->ylabel = ylabel;
-    for (int i = 0, k = 0; i < g->n; i++) {
-        int c = g->col[i][which];
+    for (int i = 0, k = 0; i < n; i++) {
+        int c = cols[i];
         if (c < 0) continue;
-        double *y = own(r, scaled(h->col[c], h->nrows, u.scale));
+        double *y = bd_rep_own(r, bd_rep_scaled(h->col[c], h->nrows, u.scale));
         if (!y) return -1;
-        char *label = lbl(r);
+        char *label = bd_rep_label(r);
         if (with_range) {
             /* the name and the range of values */
             double lo = INFINITY, hi = -INFINITY;
@@ -551,15 +497,70 @@ static int fill_panel(report *r, bd_plot_axes *a, const bd_csv *h, const group *
                     hi = fmax(hi, y[q]);
                 }
             char a1[64], a2[64];
-            fmt_num(a1, sizeof a1, lo);
-            fmt_num(a2, sizeof a2, hi);
-            snprintf(label, LABEL_LEN, "%s (%s … %s %s)", g->name[i], a1, a2, u.name);
+            bd_rep_fmt_num(a1, sizeof a1, lo);
+            bd_rep_fmt_num(a2, sizeof a2, hi);
+            snprintf(label, BD_REP_LABEL_LEN, "%s (%s … %s %s)", names[i], a1, a2, u.name);
         } else {
-            snprintf(label, LABEL_LEN, "%s", g->name[i]);
+            snprintf(label, BD_REP_LABEL_LEN, "%s", names[i]);
         }
         bd_plot_add_series(a, t, y, h->nrows, label, bd_plot_palette(k++));
     }
     return 1;
+}
+
+/* one panel of NAME columns, scaled to a readable unit */
+static int fill_panel(bd_rep *r, bd_plot_axes *a, const bd_csv *h, const group *g, int which,
+                      const char *quantity, const char *base_unit, char *ylabel, size_t ylen,
+                      int with_range, bd_rep_unit *uout)
+{
+    int cols[MAX_GROUP];
+    const char *names[MAX_GROUP];
+    for (int i = 0; i < g->n; i++) {
+        cols[i] = g->col[i][which];
+        names[i] = g->name[i];
+    }
+    return bd_rep_columns_panel(r, a, h, cols, names, g->n, quantity, base_unit, ylabel, ylen,
+                                with_range, uout);
+}
+
+int bd_rep_find_extreme(const bd_plot_axes *a, int magnitude, double from, int *series,
+                        size_t *sample)
+{
+    double best = -INFINITY;
+    *series = -1;
+    *sample = 0;
+    for (int i = 0; i < a->nseries; i++) {
+        const bd_plot_series *s = &a->series[i];
+        for (size_t k = 0; k < s->n; k++) {
+            double v = magnitude ? fabs(s->y[k]) : s->y[k];
+            if (isfinite(v) && isfinite(s->x[k]) && s->x[k] >= from - 1e-9 && v > best) {
+                best = v;
+                *series = i;
+                *sample = k;
+            }
+        }
+    }
+    return *series >= 0;
+}
+
+void bd_rep_mark_sample(bd_rep *r, bd_plot_axes *a, int bs, size_t bi, const char *what,
+                        const char *unit_name, int magnitude, double exact)
+{
+    const bd_plot_series *s = &a->series[bs];
+    char num[64], *label = bd_rep_label(r);
+    double value = s->y[bi];
+    const char *at = "at";
+    if (isfinite(exact)) {
+        value = magnitude ? copysign(exact, s->y[bi]) : exact;
+        at = "near";   /* the step's own peak, by the sample that shows it */
+    }
+    bd_rep_fmt_num(num, sizeof num, value);
+    if (a->nseries > 1)
+        snprintf(label, BD_REP_LABEL_LEN, "%s %s %s %s t = %.3g s (%.40s)", what, num, unit_name, at,
+                 s->x[bi], s->label ? s->label : "");
+    else
+        snprintf(label, BD_REP_LABEL_LEN, "%s %s %s %s t = %.3g s", what, num, unit_name, at, s->x[bi]);
+    bd_plot_add_marker(a, s->x[bi], s->y[bi], label);
 }
 
 /* mark the largest value (or largest magnitude) over a panel's series.
@@ -567,51 +568,27 @@ static int fill_panel(report *r, bd_plot_axes *a, const bd_csv *h, const group *
  * the series' peak from every step (in.SERIES.key, in base units, scale
  * the panel's unit), the label gives that value, the one the cards show,
  * so that card and plot agree (issue 15) */
-static void mark_extreme(report *r, bd_plot_axes *a, const char *what, const char *unit_name,
+static void mark_extreme(bd_rep *r, bd_plot_axes *a, const char *what, const char *unit_name,
                          int magnitude, const char *in, const char *key, double scale)
 {
-    int bs = -1;
-    size_t bi = 0;
-    double best = -INFINITY;
+    int bs;
+    size_t bi;
     /* a run whose records start late (a stop case, records_from_s): its
      * summary's extremes are from then on, and so is the marked sample */
     double from = bd_json_num(r->summary, "records_from_s");
     if (!isfinite(from)) from = -INFINITY;
-    for (int i = 0; i < a->nseries; i++) {
-        const bd_plot_series *s = &a->series[i];
-        for (size_t k = 0; k < s->n; k++) {
-            double v = magnitude ? fabs(s->y[k]) : s->y[k];
-            if (isfinite(v) && isfinite(s->x[k]) && s->x[k] >= from - 1e-9 && v > best) {
-                best = v;
-                bs = i;
-                bi = k;
-            }
-        }
-    }
-    if (bs < 0) return;
+    if (!bd_rep_find_extreme(a, magnitude, from, &bs, &bi)) return;
     const bd_plot_series *s = &a->series[bs];
-    char num[64], *label = lbl(r);
-    double value = s->y[bi];
-    const char *at = "at";
-    if (in && s->label) {
+    double exact = NAN;
+    if (in && s->label && scale > 0.0) {
         const cJSON *g = cJSON_GetObjectItemCaseSensitive(r->summary, in);
-        double exact = bd_json_num(cJSON_GetObjectItemCaseSensitive(g, s->label), key);
-        if (isfinite(exact) && scale > 0.0) {
-            value = magnitude ? copysign(exact / scale, s->y[bi]) : exact / scale;
-            at = "near";   /* the step's own peak, by the sample that shows it */
-        }
+        exact = bd_json_num(cJSON_GetObjectItemCaseSensitive(g, s->label), key) / scale;
     }
-    fmt_num(num, sizeof num, value);
-    if (a->nseries > 1)
-        snprintf(label, LABEL_LEN, "%s %s %s %s t = %.3g s (%.40s)", what, num, unit_name, at,
-                 s->x[bi], s->label ? s->label : "");
-    else
-        snprintf(label, LABEL_LEN, "%s %s %s %s t = %.3g s", what, num, unit_name, at, s->x[bi]);
-    bd_plot_add_marker(a, s->x[bi], s->y[bi], label);
+    bd_rep_mark_sample(r, a, bs, bi, what, unit_name, magnitude, exact);
 }
 
 /* a drive's radius from summary.json, NaN when it is not there */
-static double drive_radius(const report *r, const char *name)
+static double drive_radius(const bd_rep *r, const char *name)
 {
     const cJSON *p = cJSON_GetObjectItemCaseSensitive(r->summary, "pulleys");
     return bd_json_num(cJSON_GetObjectItemCaseSensitive(p, name), "radius_m");
@@ -619,16 +596,16 @@ static double drive_radius(const report *r, const char *name)
 
 /* the drives' surface speed ω·R in m/s (1), or 0 when a radius is
  * unknown (an older summary.json: the caller plots ω), −1 out of memory */
-static int drive_speed_panel(report *r, bd_plot_axes *a, const bd_csv *h, const group *g,
+static int drive_speed_panel(bd_rep *r, bd_plot_axes *a, const bd_csv *h, const group *g,
                              char *ylabel)
 {
     for (int i = 0; i < g->n; i++)
         if (g->col[i][0] >= 0 && !(drive_radius(r, g->name[i]) > 0.0)) return 0;
-    snprintf(ylabel, LABEL_LEN, "Belt speed at the drive ω·R [m/s]");
+    snprintf(ylabel, BD_REP_LABEL_LEN, "Belt speed at the drive ω·R [m/s]");
     a->ylabel = ylabel;
     for (int i = 0, k = 0; i < g->n; i++) {
         if (g->col[i][0] < 0) continue;
-        double *y = own(r, scaled(h->col[g->col[i][0]], h->nrows, 1.0 / drive_radius(r, g->name[i])));
+        double *y = bd_rep_own(r, bd_rep_scaled(h->col[g->col[i][0]], h->nrows, 1.0 / drive_radius(r, g->name[i])));
         if (!y) return -1;
         bd_plot_add_series(a, h->col[0], y, h->nrows, g->name[i], bd_plot_palette(k++));
     }
@@ -637,15 +614,15 @@ static int drive_speed_panel(report *r, bd_plot_axes *a, const bd_csv *h, const 
 
 /* the power each drive delivers to its pulley, M·ω in kW (negative:
  * braking), for the drives with both columns; 0, or −1 out of memory */
-static int drive_power_panel(report *r, bd_plot_axes *a, const bd_csv *h, const group *g,
+static int drive_power_panel(bd_rep *r, bd_plot_axes *a, const bd_csv *h, const group *g,
                              char *ylabel)
 {
-    snprintf(ylabel, LABEL_LEN, "Drive power M·ω [kW]");
+    snprintf(ylabel, BD_REP_LABEL_LEN, "Drive power M·ω [kW]");
     a->ylabel = ylabel;
     for (int i = 0, k = 0; i < g->n; i++) {
         int cw = g->col[i][0], cm = g->col[i][1];
         if (cw < 0 || cm < 0) continue;
-        double *y = own(r, malloc((h->nrows ? h->nrows : 1) * sizeof *y));
+        double *y = bd_rep_own(r, malloc((h->nrows ? h->nrows : 1) * sizeof *y));
         if (!y) return -1;
         for (size_t q = 0; q < h->nrows; q++)
             y[q] = h->col[cw][q] * h->col[cm][q] / 1000.0;
@@ -655,7 +632,7 @@ static int drive_power_panel(report *r, bd_plot_axes *a, const bd_csv *h, const 
 }
 
 /* a pulley's entry in summary.json's layout (io/layout.c), or NULL */
-static const cJSON *layout_pulley(const report *r, const char *name)
+static const cJSON *layout_pulley(const bd_rep *r, const char *name)
 {
     const cJSON *lay = cJSON_GetObjectItemCaseSensitive(r->summary, "layout"), *p;
     cJSON_ArrayForEach(p, cJSON_GetObjectItemCaseSensitive(lay, "pulleys")) {
@@ -667,7 +644,7 @@ static const cJSON *layout_pulley(const report *r, const char *name)
 
 /* a drive's torque rating at the pulley: its motor's rated torque, else its
  * max_torque; NaN when it has neither. *what says which. */
-static double drive_rating(const report *r, const char *name, const char **what)
+static double drive_rating(const bd_rep *r, const char *name, const char **what)
 {
     const cJSON *p = layout_pulley(r, name);
     double T = bd_json_num(p, "rated_torque_Nm");
@@ -681,7 +658,7 @@ static double drive_rating(const report *r, const char *name, const char **what)
 
 /* the drives' torque as % of their rating (1) when every drive has one, 0
  * when one has none (the caller plots N·m), −1 out of memory */
-static int drive_torque_percent_panel(report *r, bd_plot_axes *a, const bd_csv *h, const group *g,
+static int drive_torque_percent_panel(bd_rep *r, bd_plot_axes *a, const bd_csv *h, const group *g,
                                       char *ylabel, double *scale)
 {
     int n = 0;
@@ -692,29 +669,29 @@ static int drive_torque_percent_panel(report *r, bd_plot_axes *a, const bd_csv *
         n++;
     }
     if (n == 0) return 0;
-    snprintf(ylabel, LABEL_LEN, "Drive torque M [%% of rating]");
+    snprintf(ylabel, BD_REP_LABEL_LEN, "Drive torque M [%% of rating]");
     a->ylabel = ylabel;
     *scale = NAN;
     for (int i = 0, k = 0; i < g->n; i++) {
         if (g->col[i][1] < 0) continue;
         const char *what;
         double rating = drive_rating(r, g->name[i], &what);
-        double *y = own(r, scaled(h->col[g->col[i][1]], h->nrows, rating / 100.0));
-        char *label = lbl(r), num[64];
+        double *y = bd_rep_own(r, bd_rep_scaled(h->col[g->col[i][1]], h->nrows, rating / 100.0));
+        char *label = bd_rep_label(r), num[64];
         if (!y) return -1;
-        fmt_num(num, sizeof num, rating);
+        bd_rep_fmt_num(num, sizeof num, rating);
         /* one 100 % line: one drive's rating on it; several drives carry
          * theirs in their legend entries (the series label of a single
          * drive stays its name: mark_extreme finds its summary peak by it) */
         if (n == 1) {
-            char *line = lbl(r);
-            snprintf(label, LABEL_LEN, "%s", g->name[i]);
-            snprintf(line, LABEL_LEN, "100 %% = %s N·m (%s)", num, what);
+            char *line = bd_rep_label(r);
+            snprintf(label, BD_REP_LABEL_LEN, "%s", g->name[i]);
+            snprintf(line, BD_REP_LABEL_LEN, "100 %% = %s N·m (%s)", num, what);
             bd_plot_add_hline(a, 100.0, line, (bd_rgb){0.80, 0.0, 0.0}, 1);
             /* its summary peak converts with its rating */
             *scale = rating / 100.0;
         } else {
-            snprintf(label, LABEL_LEN, "%s (100 %% = %s N·m, %s)", g->name[i], num, what);
+            snprintf(label, BD_REP_LABEL_LEN, "%s (100 %% = %s N·m, %s)", g->name[i], num, what);
         }
         bd_plot_add_series(a, h->col[0], y, h->nrows, label, bd_plot_palette(k++));
     }
@@ -725,11 +702,11 @@ static int drive_torque_percent_panel(report *r, bd_plot_axes *a, const bd_csv *
 /* the friction each drive pulley uses, ln(T₁/T₂)/(μ·φ) in % (Euler–
  * Eytelwein: the belt slips at 100 %), from parts.csv and the layout's
  * wrap and static friction; 0 when there is no parts.csv, −1 out of memory */
-static int drive_friction_panel(report *r, bd_plot_axes *a, const group *g, const bd_csv *parts,
+static int drive_friction_panel(bd_rep *r, bd_plot_axes *a, const group *g, const bd_csv *parts,
                                 char *ylabel)
 {
     if (!parts) return 0;
-    snprintf(ylabel, LABEL_LEN, "Friction used ln(T₁/T₂)/(μ·φ) [%%]");
+    snprintf(ylabel, BD_REP_LABEL_LEN, "Friction used ln(T₁/T₂)/(μ·φ) [%%]");
     a->ylabel = ylabel;
     for (int i = 0, k = 0; i < g->n; i++) {
         char c1[96], c2[96];
@@ -740,7 +717,7 @@ static int drive_friction_panel(report *r, bd_plot_axes *a, const group *g, cons
         double mu = bd_json_num(p, "friction_static"), phi = bd_json_num(p, "wrap_deg");
         if (a1 < 0 || a2 < 0 || !(mu > 0.0) || !(phi > 0.0)) continue;
         double cap = mu * phi * BD_PI / 180.0;
-        double *y = own(r, malloc((parts->nrows ? parts->nrows : 1) * sizeof *y));
+        double *y = bd_rep_own(r, malloc((parts->nrows ? parts->nrows : 1) * sizeof *y));
         if (!y) return -1;
         /* as the drive monitor computes the check's value */
         for (size_t q = 0; q < parts->nrows; q++)
@@ -756,10 +733,10 @@ static int drive_friction_panel(report *r, bd_plot_axes *a, const group *g, cons
 }
 
 /* parts.csv (io/outputs.c) when the run wrote one: 1 read, 0 absent */
-static int read_parts(report *r, bd_csv *parts, char *err, size_t errlen)
+static int read_parts(bd_rep *r, bd_csv *parts, char *err, size_t errlen)
 {
-    char path[PATH_LEN];
-    if (bd_path_join(path, sizeof path, r->dir, "parts.csv") || !file_exists(path)) return 0;
+    char path[BD_REP_PATH_LEN];
+    if (bd_path_join(path, sizeof path, r->dir, "parts.csv") || !bd_rep_file_exists(path)) return 0;
     if (bd_csv_read(path, NULL, 0, parts, err, errlen)) return -1;
     if (parts->ncols < 1 || parts->nrows == 0) {
         bd_csv_free(parts);
@@ -768,17 +745,89 @@ static int read_parts(report *r, bd_csv *parts, char *err, size_t errlen)
     return 1;
 }
 
-static int plot_history(report *r, char *err, size_t errlen)
+int bd_rep_plot_energy(bd_rep *r, const bd_csv *h, const char *input_name, char *err,
+                       size_t errlen)
 {
-    char path[PATH_LEN];
-    if (bd_path_join(path, sizeof path, r->dir, "history.csv") || !file_exists(path)) return 0;
+    int ck = bd_csv_find(h, "kinetic_J"), cp = bd_csv_find(h, "potential_J"),
+        cd = bd_csv_find(h, "dissipated_J"), ci = bd_csv_find(h, "input_J");
+    if (ck >= 0 && cp >= 0 && cd >= 0 && ci >= 0 && h->nrows > 0) {
+        size_t n = h->nrows;
+        const double *t = h->col[0];
+        char *title = bd_rep_label(r), *ylabel = bd_rep_label(r);
+        const double *K = h->col[ck], *P = h->col[cp], *D = h->col[cd], *I = h->col[ci];
+        double E0 = K[0] + P[0] + D[0] - I[0];
+        double ref = fmax(fabs(E0), 1.0);
+        for (size_t i = 0; i < n; i++) {
+            if (isfinite(I[i])) ref = fmax(ref, fabs(I[i]));
+            if (isfinite(K[i])) ref = fmax(ref, fabs(K[i]));
+        }
+        double *dv[5], m = 0.0;
+        for (int q = 0; q < 5; q++) {
+            dv[q] = bd_rep_own(r, malloc(n * sizeof(double)));
+            if (!dv[q]) goto oom;
+        }
+        double *rel = bd_rep_own(r, malloc(n * sizeof(double)));
+        if (!rel) goto oom;
+        for (size_t i = 0; i < n; i++) {
+            dv[0][i] = K[i] - K[0];
+            dv[1][i] = P[i] - P[0];
+            dv[2][i] = D[i] - D[0];
+            dv[3][i] = I[i] - I[0];
+            dv[4][i] = K[i] + P[i] + D[i] - I[i] - E0;
+            rel[i] = 100.0 * dv[4][i] / ref;
+            for (int q = 0; q < 5; q++)
+                if (isfinite(dv[q][i])) m = fmax(m, fabs(dv[q][i]));
+        }
+        bd_rep_unit ue = bd_rep_pick_unit(m, "J");
+        for (int q = 0; q < 5; q++)
+            for (size_t i = 0; i < n; i++) dv[q][i] /= ue.scale;
+        const char *names[5] = {"kinetic", "potential (gravity, elastic)", "dissipated",
+                                input_name, "balance: kinetic + potential + dissipated − input"};
+        bd_plot_figure f;
+        bd_rep_set_title(r, title, BD_REP_LABEL_LEN, "energy balance");
+        bd_plot_figure_init(&f, title, BD_REP_FIG_W, BD_REP_FIG_H + 100);
+        f.subtitle = "energies as changes from t = 0; the balance should stay at zero";
+        f.npanels = 2;
+        f.share_x = 1;
+        snprintf(ylabel, BD_REP_LABEL_LEN, "Energy change ΔE [%s]", ue.name);
+        f.panel[0].ylabel = ylabel;
+        f.panel[0].include_zero = 1;
+        for (int q = 0; q < 5; q++) {
+            bd_rgb c = q == 4 ? (bd_rgb){0.0, 0.0, 0.0} : bd_plot_palette(q);
+            int k = bd_plot_add_series(&f.panel[0], t, dv[q], n, names[q], c);
+            if (q == 4) f.panel[0].series[k].dashed = 1;
+        }
+        f.panel[1].ylabel = "Balance error [%]";
+        f.panel[1].xlabel = "Time t [s]";
+        f.panel[1].include_zero = 1;
+        char *relab = bd_rep_label(r);
+        char rv[64];
+        bd_rep_fmt_num(rv, sizeof rv, ref / ue.scale);
+        snprintf(relab, BD_REP_LABEL_LEN, "balance error relative to %s %s (largest of |E0|, input, kinetic)",
+                 rv, ue.name);
+        bd_plot_add_series(&f.panel[1], t, rel, n, relab, (bd_rgb){0.8, 0.0, 0.0});
+        return bd_rep_write_plot(r, &f, "energy",
+                                 "Kinetic, potential, dissipated and input energy as changes "
+                                 "from the start, and the energy balance error.",
+                                 err, errlen);
+    }
+    return 0;
+oom:
+    bd_rep_err(err, errlen, "out of memory");
+    return BD_REPORT_EOUTPUT;
+}
+
+static int plot_history(bd_rep *r, char *err, size_t errlen)
+{
+    char path[BD_REP_PATH_LEN];
+    if (bd_path_join(path, sizeof path, r->dir, "history.csv") || !bd_rep_file_exists(path)) return 0;
     bd_csv h;
     if (bd_csv_read(path, NULL, 0, &h, err, errlen)) return BD_REPORT_EINPUT;
     int rc = 0, have_parts = 0;
     bd_csv parts;
     memset(&parts, 0, sizeof parts);
     if (h.ncols < 1 || strcmp(h.names[0], "t_s") != 0) {
-        set_err(err, errlen, "%s:1: the first column is not t_s", path);
+        bd_rep_err(err, errlen, "%s:1: the first column is not t_s", path);
         rc = BD_REPORT_EINPUT;
         goto done;
     }
@@ -788,30 +837,29 @@ static int plot_history(report *r, char *err, size_t errlen)
         rc = BD_REPORT_EINPUT;
         goto done;
     }
-    const double *t = h.col[0];
-    char *title[4], *yl[6];
-    for (int i = 0; i < 4; i++) title[i] = lbl(r);
-    for (int i = 0; i < 6; i++) yl[i] = lbl(r);
+    char *title[3], *yl[6];
+    for (int i = 0; i < 3; i++) title[i] = bd_rep_label(r);
+    for (int i = 0; i < 6; i++) yl[i] = bd_rep_label(r);
     group g;
-    unit u[5];
+    bd_rep_unit u[5];
     memset(u, 0, sizeof u);
 
     /* probes: tension and speed */
     find_group(&h, ".tension_N", ".speed_mps", &g);
     if (g.n > 0) {
         bd_plot_figure f;
-        set_title(r, title[0], LABEL_LEN, "belt tension and speed at the probes");
-        bd_plot_figure_init(&f, title[0], FIG_W, FIG_H + 100);
+        bd_rep_set_title(r, title[0], BD_REP_LABEL_LEN, "belt tension and speed at the probes");
+        bd_plot_figure_init(&f, title[0], BD_REP_FIG_W, BD_REP_FIG_H + 100);
         f.npanels = 2;
         f.share_x = 1;
         f.panel[1].xlabel = "Time t [s]";
-        if (fill_panel(r, &f.panel[0], &h, &g, 0, "Belt tension T", "N", yl[0], LABEL_LEN, 0, &u[0]) < 0 ||
-            fill_panel(r, &f.panel[1], &h, &g, 1, "Belt speed v", "m/s", yl[1], LABEL_LEN, 0, &u[1]) < 0)
+        if (fill_panel(r, &f.panel[0], &h, &g, 0, "Belt tension T", "N", yl[0], BD_REP_LABEL_LEN, 0, &u[0]) < 0 ||
+            fill_panel(r, &f.panel[1], &h, &g, 1, "Belt speed v", "m/s", yl[1], BD_REP_LABEL_LEN, 0, &u[1]) < 0)
             goto oom;
         f.panel[0].include_zero = 1;
         mark_extreme(r, &f.panel[0], "peak", u[0].name, 0, "probes", "tension_max_N", u[0].scale);
         if (f.panel[1].nseries == 0) f.npanels = 1, f.panel[0].xlabel = "Time t [s]";
-        if ((rc = write_plot(r, &f, "probes",
+        if ((rc = bd_rep_write_plot(r, &f, "probes",
                              "Belt tension and speed against time at the probes of the model.", err,
                              errlen)))
             goto done;
@@ -821,8 +869,8 @@ static int plot_history(report *r, char *err, size_t errlen)
     find_group(&h, ".omega_rad_s", ".torque_Nm", &g);
     if (g.n > 0) {
         bd_plot_figure f;
-        set_title(r, title[1], LABEL_LEN, "drive pulleys");
-        bd_plot_figure_init(&f, title[1], FIG_W, FIG_H + 100);
+        bd_rep_set_title(r, title[1], BD_REP_LABEL_LEN, "drive pulleys");
+        bd_plot_figure_init(&f, title[1], BD_REP_FIG_W, BD_REP_FIG_H + 100);
         f.npanels = 4;
         f.share_x = 1;
         double pct_scale = NAN;
@@ -831,11 +879,11 @@ static int plot_history(report *r, char *err, size_t errlen)
                 : drive_torque_percent_panel(r, &f.panel[1], &h, &g, yl[3], &pct_scale);
         if (speed_ok < 0 || pct < 0 ||
             (!speed_ok && fill_panel(r, &f.panel[0], &h, &g, 0, "Pulley speed ω", "rad/s", yl[2],
-                                     LABEL_LEN, 0, &u[2]) < 0) ||
+                                     BD_REP_LABEL_LEN, 0, &u[2]) < 0) ||
             (!pct && fill_panel(r, &f.panel[1], &h, &g, 1, "Drive torque M", "N·m", yl[3],
-                                LABEL_LEN, 0, &u[3]) < 0) ||
-            drive_power_panel(r, &f.panel[2], &h, &g, lbl(r)) < 0 ||
-            drive_friction_panel(r, &f.panel[3], &g, have_parts ? &parts : NULL, lbl(r)) < 0)
+                                BD_REP_LABEL_LEN, 0, &u[3]) < 0) ||
+            drive_power_panel(r, &f.panel[2], &h, &g, bd_rep_label(r)) < 0 ||
+            drive_friction_panel(r, &f.panel[3], &g, have_parts ? &parts : NULL, bd_rep_label(r)) < 0)
             goto oom;
         if (pct)
             mark_extreme(r, &f.panel[1], "peak", "%", 1, isfinite(pct_scale) ? "pulleys" : NULL,
@@ -850,11 +898,11 @@ static int plot_history(report *r, char *err, size_t errlen)
         for (int k = 0; k < 4; k++)
             if (f.panel[k].nseries > 0) f.panel[np++] = f.panel[k];
         f.npanels = np > 0 ? np : 1;
-        f.height = FIG_H + 100 + 200 * (f.npanels - 2 > 0 ? f.npanels - 2 : 0);
+        f.height = BD_REP_FIG_H + 100 + 200 * (f.npanels - 2 > 0 ? f.npanels - 2 : 0);
         f.panel[f.npanels - 1].xlabel = "Time t [s]";
         f.panel[f.npanels - 1].include_zero = 1;
-        char *cap = lbl(r);
-        snprintf(cap, LABEL_LEN, "%s%s%s",
+        char *cap = bd_rep_label(r);
+        snprintf(cap, BD_REP_LABEL_LEN, "%s%s%s",
                  speed_ok ? "Belt speed at the drive pulleys (ω·R), their torque"
                           : "Angular speed of the drive pulleys, their torque",
                  pct ? " as a share of its rating (the motor's rated torque, else max_torque; "
@@ -863,7 +911,7 @@ static int plot_history(report *r, char *err, size_t errlen)
                                   "against time: ln(T₁/T₂) over μ·φ (μ the static friction, φ the "
                                   "wrap, as the layout table gives them), the belt slips at 100 %."
                                 : " and the power they deliver (M·ω) against time.");
-        if ((rc = write_plot(r, &f, "drives", cap, err, errlen)))
+        if ((rc = bd_rep_write_plot(r, &f, "drives", cap, err, errlen)))
             goto done;
     }
 
@@ -871,12 +919,12 @@ static int plot_history(report *r, char *err, size_t errlen)
     find_group(&h, ".travel_m", NULL, &g);
     if (g.n > 0) {
         bd_plot_figure f;
-        set_title(r, title[2], LABEL_LEN, "takeups");
-        bd_plot_figure_init(&f, title[2], FIG_W, FIG_H);
+        bd_rep_set_title(r, title[2], BD_REP_LABEL_LEN, "takeups");
+        bd_plot_figure_init(&f, title[2], BD_REP_FIG_W, BD_REP_FIG_H);
         f.subtitle = "carriage travel along its axis from the initial position, and the belt's "
                      "pull on it";
         f.share_x = 1;
-        if (fill_panel(r, &f.panel[0], &h, &g, 0, "Takeup travel x", "m", yl[4], LABEL_LEN, 1, &u[4]) < 0)
+        if (fill_panel(r, &f.panel[0], &h, &g, 0, "Takeup travel x", "m", yl[4], BD_REP_LABEL_LEN, 1, &u[4]) < 0)
             goto oom;
         mark_extreme(r, &f.panel[0], "largest", u[4].name, 1, NULL, NULL, 0.0);
         f.panel[0].include_zero = 1;
@@ -884,14 +932,14 @@ static int plot_history(report *r, char *err, size_t errlen)
         if (have_parts) find_group(&parts, ".pull_N", NULL, &gp);
         if (have_parts && gp.n > 0) {
             if (fill_panel(r, &f.panel[1], &parts, &gp, 0, "Belt pull on the takeup F", "N",
-                           yl[5], LABEL_LEN, 1, &u[1]) < 0)
+                           yl[5], BD_REP_LABEL_LEN, 1, &u[1]) < 0)
                 goto oom;
             mark_extreme(r, &f.panel[1], "largest", u[1].name, 1, NULL, NULL, 0.0);
             f.npanels = 2;
-            f.height = FIG_H + 100;
+            f.height = BD_REP_FIG_H + 100;
         }
         f.panel[f.npanels - 1].xlabel = "Time t [s]";
-        if ((rc = write_plot(r, &f, "takeups",
+        if ((rc = bd_rep_write_plot(r, &f, "takeups",
                              f.npanels == 2 ? "Takeup carriage travel and the belt's pull on the "
                                               "carriage along its axis against time (legend: "
                                               "lowest … highest)."
@@ -901,72 +949,11 @@ static int plot_history(report *r, char *err, size_t errlen)
     }
 
     /* energy: changes from t = 0 and the balance error */
-    int ck = bd_csv_find(&h, "kinetic_J"), cp = bd_csv_find(&h, "potential_J"),
-        cd = bd_csv_find(&h, "dissipated_J"), ci = bd_csv_find(&h, "input_J");
-    if (ck >= 0 && cp >= 0 && cd >= 0 && ci >= 0) {
-        size_t n = h.nrows;
-        const double *K = h.col[ck], *P = h.col[cp], *D = h.col[cd], *I = h.col[ci];
-        double E0 = K[0] + P[0] + D[0] - I[0];
-        double ref = fmax(fabs(E0), 1.0);
-        for (size_t i = 0; i < n; i++) {
-            if (isfinite(I[i])) ref = fmax(ref, fabs(I[i]));
-            if (isfinite(K[i])) ref = fmax(ref, fabs(K[i]));
-        }
-        double *dv[5], m = 0.0;
-        for (int q = 0; q < 5; q++) {
-            dv[q] = own(r, malloc(n * sizeof(double)));
-            if (!dv[q]) goto oom;
-        }
-        double *rel = own(r, malloc(n * sizeof(double)));
-        if (!rel) goto oom;
-        for (size_t i = 0; i < n; i++) {
-            dv[0][i] = K[i] - K[0];
-            dv[1][i] = P[i] - P[0];
-            dv[2][i] = D[i] - D[0];
-            dv[3][i] = I[i] - I[0];
-            dv[4][i] = K[i] + P[i] + D[i] - I[i] - E0;
-            rel[i] = 100.0 * dv[4][i] / ref;
-            for (int q = 0; q < 5; q++)
-                if (isfinite(dv[q][i])) m = fmax(m, fabs(dv[q][i]));
-        }
-        unit ue = pick_unit(m, "J");
-        for (int q = 0; q < 5; q++)
-            for (size_t i = 0; i < n; i++) dv[q][i] /= ue.scale;
-        static const char *names[5] = {"kinetic", "potential (gravity, elastic)",
-                                       "dissipated", "input (drive work)",
-                                       "balance: kinetic + potential + dissipated − input"};
-        bd_plot_figure f;
-        set_title(r, title[3], LABEL_LEN, "energy balance");
-        bd_plot_figure_init(&f, title[3], FIG_W, FIG_H + 100);
-        f.subtitle = "energies as changes from t = 0; the balance should stay at zero";
-        f.npanels = 2;
-        f.share_x = 1;
-        snprintf(yl[5], LABEL_LEN, "Energy change ΔE [%s]", ue.name);
-        f.panel[0].ylabel = yl[5];
-        f.panel[0].include_zero = 1;
-        for (int q = 0; q < 5; q++) {
-            bd_rgb c = q == 4 ? (bd_rgb){0.0, 0.0, 0.0} : bd_plot_palette(q);
-            int k = bd_plot_add_series(&f.panel[0], t, dv[q], n, names[q], c);
-            if (q == 4) f.panel[0].series[k].dashed = 1;
-        }
-        f.panel[1].ylabel = "Balance error [%]";
-        f.panel[1].xlabel = "Time t [s]";
-        f.panel[1].include_zero = 1;
-        char *relab = lbl(r);
-        char rv[64];
-        fmt_num(rv, sizeof rv, ref / ue.scale);
-        snprintf(relab, LABEL_LEN, "balance error relative to %s %s (largest of |E0|, input, kinetic)",
-                 rv, ue.name);
-        bd_plot_add_series(&f.panel[1], t, rel, n, relab, (bd_rgb){0.8, 0.0, 0.0});
-        if ((rc = write_plot(r, &f, "energy",
-                             "Kinetic, potential, dissipated and input energy as changes from the "
-                             "start, and the energy balance error.",
-                             err, errlen)))
-            goto done;
-    }
+    if ((rc = bd_rep_plot_energy(r, &h, "input (drive work)", err, errlen)))
+        goto done;
     goto done;
 oom:
-    set_err(err, errlen, "out of memory");
+    bd_rep_err(err, errlen, "out of memory");
     rc = BD_REPORT_EOUTPUT;
 done:
     bd_csv_free(&h);
@@ -1023,7 +1010,7 @@ static void html_value(bd_strbuf *b, const cJSON *v)
 {
     char num[64];
     if (cJSON_IsNumber(v)) {
-        fmt_num(num, sizeof num, v->valuedouble);
+        bd_rep_fmt_num(num, sizeof num, v->valuedouble);
         bd_sb_puts(b, num);
     } else if (cJSON_IsString(v)) {
         bd_sb_html(b, v->valuestring);
@@ -1161,8 +1148,7 @@ static void html_object(bd_strbuf *b, const cJSON *obj, const char *const *skip,
 }
 
 
-/* headline card */
-static void card(bd_strbuf *b, const char *cls, const char *key, const char *value, const char *detail)
+void bd_rep_card(bd_strbuf *b, const char *cls, const char *key, const char *value, const char *detail)
 {
     bd_sb_printf(b, "<div class=\"card%s%s\"><div class=k>", cls ? " " : "", cls ? cls : "");
     bd_sb_html(b, key);
@@ -1176,7 +1162,7 @@ static void card(bd_strbuf *b, const char *cls, const char *key, const char *val
 /* lowest and highest of a history column, or NaN */
 static void history_range(const char *dir, const char *column, double *lo, double *hi)
 {
-    char path[PATH_LEN], err[256];
+    char path[BD_REP_PATH_LEN], err[256];
     const char *want[1] = {column};
     bd_csv c;
     *lo = *hi = NAN;
@@ -1192,13 +1178,13 @@ static void history_range(const char *dir, const char *column, double *lo, doubl
 
 /* the run's warnings and the static design's (summary.json "static"), one
  * count for the card and the list */
-static const cJSON *static_warnings(const report *r)
+static const cJSON *static_warnings(const bd_rep *r)
 {
     const cJSON *stat = cJSON_GetObjectItemCaseSensitive(r->summary, "static");
     return cJSON_GetObjectItemCaseSensitive(stat, "warnings");
 }
 
-static int warning_count(const report *r)
+static int warning_count(const bd_rep *r)
 {
     const cJSON *warn = cJSON_GetObjectItemCaseSensitive(r->summary, "warnings");
     return cJSON_GetArraySize(warn) + cJSON_GetArraySize(static_warnings(r));
@@ -1215,15 +1201,33 @@ static void warning_items(bd_strbuf *b, const cJSON *list, const char *prefix)
     }
 }
 
-static void headline(report *r, bd_strbuf *b)
+void bd_rep_run_cards(bd_rep *r, bd_strbuf *b)
 {
-    char v[128], d[LABEL_LEN], lab[160];
+    char v[64];
+    const cJSON *energy = cJSON_GetObjectItemCaseSensitive(r->summary, "energy");
+    double be = bd_json_num(energy, "balance_error_rel");
+    if (isfinite(be)) {
+        snprintf(v, sizeof v, "%.3g %%", 100.0 * be);
+        bd_rep_card(b, be > 0.01 ? "bad" : "ok", "energy balance error", v,
+             "largest over the run, relative");
+    }
+    int nw = warning_count(r);
+    snprintf(v, sizeof v, "%d", nw);
+    bd_rep_card(b, nw ? "bad" : "ok", "warnings", v,
+                nw ? (static_warnings(r) ? "the run's and the static design's, listed below"
+                                         : "listed below")
+                   : "none");
+}
+
+static void headline(bd_rep *r, bd_strbuf *b)
+{
+    char v[128], d[BD_REP_LABEL_LEN];
     bd_sb_puts(b, "<div class=cards>\n");
     double allow = isfinite(r->rated_N) ? r->rated_N / r->safety_factor : NAN;
     if (r->tmax.known) {
-        unit u = pick_unit(fabs(r->tmax.value), "N");
+        bd_rep_unit u = bd_rep_pick_unit(fabs(r->tmax.value), "N");
         char num[64];
-        fmt_num(num, sizeof num, r->tmax.value / u.scale);
+        bd_rep_fmt_num(num, sizeof num, r->tmax.value / u.scale);
         snprintf(v, sizeof v, "%s %s", num, u.name);
         int n = snprintf(d, sizeof d, "at t = %.3g s, s = %.1f m", r->tmax.t, r->tmax.s);
         if (isfinite(allow) && n > 0 && (size_t)n < sizeof d)
@@ -1231,24 +1235,24 @@ static void headline(report *r, bd_strbuf *b)
                      "stops (rated / %.3g%s)",
                      100.0 * r->tmax.value / allow, r->safety_factor,
                      r->sf_default ? ", default" : "");
-        card(b, isfinite(allow) ? (r->tmax.value > allow ? "bad" : "ok") : NULL,
+        bd_rep_card(b, isfinite(allow) ? (r->tmax.value > allow ? "bad" : "ok") : NULL,
              "peak belt tension", v, d);
     }
     if (r->tmin.known) {
-        unit u = pick_unit(fabs(r->tmin.value), "N");
+        bd_rep_unit u = bd_rep_pick_unit(fabs(r->tmin.value), "N");
         char num[64];
-        fmt_num(num, sizeof num, r->tmin.value / u.scale);
+        bd_rep_fmt_num(num, sizeof num, r->tmin.value / u.scale);
         snprintf(v, sizeof v, "%s %s", num, u.name);
         int n = snprintf(d, sizeof d, "at t = %.3g s, s = %.1f m", r->tmin.t, r->tmin.s);
         int bad = r->tmin.value <= 0.0;
         if (isfinite(r->t_min_sag_N) && n > 0 && (size_t)n < sizeof d) {
             char sg[64];
-            unit us = pick_unit(r->t_min_sag_N, "N");
-            fmt_num(sg, sizeof sg, r->t_min_sag_N / us.scale);
+            bd_rep_unit us = bd_rep_pick_unit(r->t_min_sag_N, "N");
+            bd_rep_fmt_num(sg, sizeof sg, r->t_min_sag_N / us.scale);
             snprintf(d + n, sizeof d - (size_t)n, "; sag limit needs %s %s", sg, us.name);
             if (r->tmin.value < r->t_min_sag_N) bad = 1;
         }
-        card(b, bad ? "bad" : NULL, "lowest belt tension", v, d);
+        bd_rep_card(b, bad ? "bad" : NULL, "lowest belt tension", v, d);
     }
     /* takeups and drives from summary.pulleys, else from history.csv */
     const cJSON *pulleys = cJSON_GetObjectItemCaseSensitive(r->summary, "pulleys");
@@ -1257,33 +1261,33 @@ static void headline(report *r, bd_strbuf *b)
         double lo = bd_json_num(p, "travel_min_m"), hi = bd_json_num(p, "travel_max_m");
         if (isfinite(lo) || isfinite(hi)) {
             char a1[64], a2[64], a3[64];
-            fmt_num(a1, sizeof a1, lo);
-            fmt_num(a2, sizeof a2, hi);
-            fmt_num(a3, sizeof a3, hi - lo);
+            bd_rep_fmt_num(a1, sizeof a1, lo);
+            bd_rep_fmt_num(a2, sizeof a2, hi);
+            bd_rep_fmt_num(a3, sizeof a3, hi - lo);
             snprintf(v, sizeof v, "%s m", a3);
             snprintf(d, sizeof d, "%s: from %s m to %s m", p->string, a1, a2);
-            card(b, NULL, "takeup travel range", v, d);
+            bd_rep_card(b, NULL, "takeup travel range", v, d);
         }
     }
     cJSON_ArrayForEach(p, pulleys) {
         double tq = bd_json_num(p, "torque_max_Nm");
         if (isfinite(tq)) {
-            unit u = pick_unit(fabs(tq), "N·m");
+            bd_rep_unit u = bd_rep_pick_unit(fabs(tq), "N·m");
             char num[64];
-            fmt_num(num, sizeof num, tq / u.scale);
+            bd_rep_fmt_num(num, sizeof num, tq / u.scale);
             snprintf(v, sizeof v, "%s %s", num, u.name);
             double w = bd_json_num(p, "omega_final_rad_s");
             if (isfinite(w)) snprintf(d, sizeof d, "%s; final speed %.4g rad/s", p->string, w);
             else snprintf(d, sizeof d, "%s", p->string);
-            card(b, NULL, "drive peak torque", v, d);
+            bd_rep_card(b, NULL, "drive peak torque", v, d);
         }
     }
     if (!cJSON_IsObject(pulleys) || !pulleys->child) {
         /* no pulley summary: take the ranges from history.csv */
-        char path[PATH_LEN];
+        char path[BD_REP_PATH_LEN];
         bd_csv hd;
         char err[256];
-        if (!bd_path_join(path, sizeof path, r->dir, "history.csv") && file_exists(path) &&
+        if (!bd_path_join(path, sizeof path, r->dir, "history.csv") && bd_rep_file_exists(path) &&
             !bd_csv_read_header(path, &hd, err, sizeof err)) {
             for (int j = 0; j < hd.ncols; j++) {
                 double lo, hi;
@@ -1291,38 +1295,28 @@ static void headline(report *r, bd_strbuf *b)
                 if (ends_with(nm, ".travel_m")) {
                     history_range(r->dir, nm, &lo, &hi);
                     char a1[64], a2[64], a3[64];
-                    fmt_num(a1, sizeof a1, lo);
-                    fmt_num(a2, sizeof a2, hi);
-                    fmt_num(a3, sizeof a3, hi - lo);
+                    bd_rep_fmt_num(a1, sizeof a1, lo);
+                    bd_rep_fmt_num(a2, sizeof a2, hi);
+                    bd_rep_fmt_num(a3, sizeof a3, hi - lo);
                     snprintf(v, sizeof v, "%s m", a3);
                     snprintf(d, sizeof d, "%.*s: from %s m to %s m",
                              (int)(strlen(nm) - strlen(".travel_m")), nm, a1, a2);
-                    card(b, NULL, "takeup travel range", v, d);
+                    bd_rep_card(b, NULL, "takeup travel range", v, d);
                 } else if (ends_with(nm, ".torque_Nm")) {
                     history_range(r->dir, nm, &lo, &hi);
                     double tq = fabs(hi) >= fabs(lo) ? hi : lo;
-                    unit u = pick_unit(fabs(tq), "N·m");
+                    bd_rep_unit u = bd_rep_pick_unit(fabs(tq), "N·m");
                     char num[64];
-                    fmt_num(num, sizeof num, tq / u.scale);
+                    bd_rep_fmt_num(num, sizeof num, tq / u.scale);
                     snprintf(v, sizeof v, "%s %s", num, u.name);
                     snprintf(d, sizeof d, "%.*s", (int)(strlen(nm) - strlen(".torque_Nm")), nm);
-                    card(b, NULL, "drive peak torque", v, d);
+                    bd_rep_card(b, NULL, "drive peak torque", v, d);
                 }
             }
             bd_csv_free(&hd);
         }
     }
-    const cJSON *energy = cJSON_GetObjectItemCaseSensitive(r->summary, "energy");
-    double be = bd_json_num(energy, "balance_error_rel");
-    if (isfinite(be)) {
-        snprintf(v, sizeof v, "%.3g %%", 100.0 * be);
-        card(b, be > 0.01 ? "bad" : "ok", "energy balance error", v,
-             "largest over the run, relative");
-    }
-    int nw = warning_count(r);
-    snprintf(v, sizeof v, "%d", nw);
-    snprintf(lab, sizeof lab, "%s", nw ? "the run's and the static design's, listed below" : "none");
-    card(b, nw ? "bad" : "ok", "warnings", v, lab);
+    bd_rep_run_cards(r, b);
     bd_sb_puts(b, "</div>\n");
 }
 
@@ -1333,7 +1327,8 @@ static const char *rule_sign(const char *limit_is)
          : strcmp(limit_is, "above") == 0 ? ">" : "≤";
 }
 
-static int write_html(report *r, char *err, size_t errlen)
+int bd_rep_write_html(bd_rep *r, const char *what, void (*cards)(bd_rep *, bd_strbuf *),
+                      char *err, size_t errlen)
 {
     bd_strbuf b = {0};
     bd_sb_puts(&b, "<!DOCTYPE html>\n<html lang=en><head><meta charset=utf-8>\n"
@@ -1343,7 +1338,7 @@ static int write_html(report *r, char *err, size_t errlen)
     bd_sb_puts(&b, bd_html_css);
     bd_sb_puts(&b, "</style></head><body><main>\n<h1>");
     bd_sb_html(&b, r->model);
-    bd_sb_puts(&b, "</h1>\n<p class=sub>beltdyn transient run");
+    bd_sb_printf(&b, "</h1>\n<p class=sub>beltdyn %s", what);
     double dur = bd_json_num(r->summary, "duration_s"), len = bd_json_num(r->summary, "belt_length_m");
     if (isfinite(dur)) bd_sb_printf(&b, " · %.4g s simulated", dur);
     if (isfinite(len)) bd_sb_printf(&b, " · belt length %.1f m", len);
@@ -1355,7 +1350,7 @@ static int write_html(report *r, char *err, size_t errlen)
     if (cJSON_IsObject(stat)) bd_sb_puts(&b, "<a href=\"#static\">static design</a>");
     bd_sb_puts(&b, "</nav>\n");
 
-    headline(r, &b);
+    cards(r, &b);
 
     /* the pass/fail table (summary.json "checks", io/checks.c) */
     const cJSON *checks = cJSON_GetObjectItemCaseSensitive(r->summary, "checks");
@@ -1395,13 +1390,13 @@ static int write_html(report *r, char *err, size_t errlen)
     bd_sb_puts(&b, "<h2 id=plots>Plots</h2>\n");
     if (r->nplots == 0) bd_sb_puts(&b, "<p class=none>No data to plot in this run directory.</p>\n");
     for (int i = 0; i < r->nplots; i++) {
-        char png[PATH_LEN];
+        char png[BD_REP_PATH_LEN];
         if (snprintf(png, sizeof png, "%s/%s.png", r->plots, r->plot[i].name) >= (int)sizeof png)
             continue;
         bd_sb_printf(&b, "<figure id=\"%s\"><img alt=\"%s\" src=\"", r->plot[i].name, r->plot[i].name);
         if (bd_sb_embed_png(&b, png)) {
             free(b.p);
-            set_err(err, errlen, "%s: cannot read back", png);
+            bd_rep_err(err, errlen, "%s: cannot read back", png);
             return BD_REPORT_EOUTPUT;
         }
         bd_sb_puts(&b, "\"><figcaption>");
@@ -1424,24 +1419,24 @@ static int write_html(report *r, char *err, size_t errlen)
 
 /* ---- entry ---- */
 
-static int read_summary(report *r, char *err, size_t errlen)
+static int read_summary(bd_rep *r, char *err, size_t errlen)
 {
-    char path[PATH_LEN];
+    char path[BD_REP_PATH_LEN];
     if (bd_path_join(path, sizeof path, r->dir, "summary.json")) {
-        set_err(err, errlen, "%s: path too long", r->dir);
+        bd_rep_err(err, errlen, "%s: path too long", r->dir);
         return BD_REPORT_EINPUT;
     }
     char *text;
     size_t len;
     int rd = bd_read_file(path, &text, &len);
     if (rd == BD_READ_OPEN) {
-        set_err(err, errlen, "%s: %s (not the output directory of beltdyn run?)", path,
+        bd_rep_err(err, errlen, "%s: %s (not the output directory of beltdyn run?)", path,
                 strerror(errno));
         return BD_REPORT_EINPUT;
     }
     if (rd != BD_READ_OK || len == 0) {
         free(text);
-        set_err(err, errlen, "%s: empty or unreadable", path);
+        bd_rep_err(err, errlen, "%s: empty or unreadable", path);
         return BD_REPORT_EINPUT;
     }
     r->summary = cJSON_ParseWithLength(text, len);
@@ -1451,7 +1446,7 @@ static int read_summary(report *r, char *err, size_t errlen)
         int line = 1;
         if (at && at >= text && at <= text + len)
             for (const char *q = text; q < at; q++) line += *q == '\n';
-        set_err(err, errlen, "%s:%d: not a JSON object", path, line);
+        bd_rep_err(err, errlen, "%s:%d: not a JSON object", path, line);
         cJSON_Delete(r->summary);
         r->summary = NULL;
         free(text);
@@ -1485,16 +1480,16 @@ static int read_summary(report *r, char *err, size_t errlen)
     const cJSON *ten = cJSON_GetObjectItemCaseSensitive(r->summary, "tension");
     double v = bd_json_num(ten, "max_N");
     if (isfinite(v))
-        r->tmax = (point){1, v, bd_json_num(ten, "max_time_s"), bd_json_num(ten, "max_s_m")};
+        r->tmax = (bd_rep_point){1, v, bd_json_num(ten, "max_time_s"), bd_json_num(ten, "max_s_m")};
     v = bd_json_num(ten, "min_N");
     if (isfinite(v))
-        r->tmin = (point){1, v, bd_json_num(ten, "min_time_s"), bd_json_num(ten, "min_s_m")};
+        r->tmin = (bd_rep_point){1, v, bd_json_num(ten, "min_time_s"), bd_json_num(ten, "min_s_m")};
     return 0;
 }
 
 int bd_report_print_checks(const char *dir, FILE *f)
 {
-    char path[PATH_LEN];
+    char path[BD_REP_PATH_LEN];
     cJSON *root = bd_path_join(path, sizeof path, dir, "summary.json") ? NULL
                                                                         : bd_json_load(path);
     const cJSON *checks = cJSON_GetObjectItemCaseSensitive(root, "checks"), *c;
@@ -1518,54 +1513,58 @@ int bd_report_print_checks(const char *dir, FILE *f)
 
 int bd_report_write(const char *dir, char *err, size_t errlen)
 {
-    report *r;
+    bd_rep *r;
     struct stat st;
     int rc;
     if (err && errlen) err[0] = '\0';
     if (!dir || !dir[0]) {
-        set_err(err, errlen, "no run directory given");
+        bd_rep_err(err, errlen, "no run directory given");
         return BD_REPORT_EINPUT;
     }
     if (stat(dir, &st) != 0) {
-        set_err(err, errlen, "%s: %s", dir, strerror(errno));
+        bd_rep_err(err, errlen, "%s: %s", dir, strerror(errno));
         return BD_REPORT_EINPUT;
     }
     if (!S_ISDIR(st.st_mode)) {
-        set_err(err, errlen, "%s: not a directory", dir);
+        bd_rep_err(err, errlen, "%s: not a directory", dir);
         return BD_REPORT_EINPUT;
     }
     /* a start study's directory (beltdyn study): its own comparison report */
-    char study_csv[PATH_LEN], summary[PATH_LEN], cases_csv[PATH_LEN];
+    char study_csv[BD_REP_PATH_LEN], summary[BD_REP_PATH_LEN], cases_csv[BD_REP_PATH_LEN];
     /* a load-cases directory (beltdyn cases): the cases compared */
-    if (bd_path_join(cases_csv, sizeof cases_csv, dir, "cases.csv") == 0 && file_exists(cases_csv)
+    if (bd_path_join(cases_csv, sizeof cases_csv, dir, "cases.csv") == 0 && bd_rep_file_exists(cases_csv)
         && (bd_path_join(summary, sizeof summary, dir, "summary.json") != 0
-            || !file_exists(summary)))
+            || !bd_rep_file_exists(summary)))
         return bd_cases_report_write(dir, err, errlen);
-    if (bd_path_join(study_csv, sizeof study_csv, dir, "study.csv") == 0 && file_exists(study_csv) &&
-        (bd_path_join(summary, sizeof summary, dir, "summary.json") != 0 || !file_exists(summary)))
+    if (bd_path_join(study_csv, sizeof study_csv, dir, "study.csv") == 0 && bd_rep_file_exists(study_csv) &&
+        (bd_path_join(summary, sizeof summary, dir, "summary.json") != 0 || !bd_rep_file_exists(summary)))
         return bd_study_report_write(dir, err, errlen);
     r = calloc(1, sizeof *r);
     if (!r) {
-        set_err(err, errlen, "out of memory");
+        bd_rep_err(err, errlen, "out of memory");
         return BD_REPORT_EOUTPUT;
     }
     r->dir = dir;
     if ((rc = read_summary(r, err, errlen))) goto done;
     if (bd_path_join(r->plots, sizeof r->plots, dir, "plots")) {
-        set_err(err, errlen, "%s: path too long", dir);
+        bd_rep_err(err, errlen, "%s: path too long", dir);
         rc = BD_REPORT_EINPUT;
         goto done;
     }
     if (mkdir(r->plots, 0777) != 0 && errno != EEXIST) {
-        set_err(err, errlen, "%s: %s", r->plots, strerror(errno));
+        bd_rep_err(err, errlen, "%s: %s", r->plots, strerror(errno));
         rc = BD_REPORT_EOUTPUT;
+        goto done;
+    }
+    if (strcmp(bd_json_str(r->summary, "kind"), "boom") == 0) {
+        rc = bd_boom_report_write(r, err, errlen);
         goto done;
     }
     if ((rc = plot_layout(r, err, errlen))) goto done;
     if ((rc = plot_tension_surface(r, err, errlen))) goto done;
     if ((rc = plot_envelope(r, err, errlen))) goto done;
     if ((rc = plot_history(r, err, errlen))) goto done;
-    rc = write_html(r, err, errlen);
+    rc = bd_rep_write_html(r, "transient run", headline, err, errlen);
 done:
     for (int i = 0; i < r->nowned; i++) free(r->owned[i]);
     cJSON_Delete(r->summary);
