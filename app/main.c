@@ -5,6 +5,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "beltdyn/boom.h"
 #include "beltdyn/model.h"
 #include "beltdyn/report.h"
 #include "beltdyn/sim.h"
@@ -112,7 +113,11 @@ static int usage(FILE *f)
             "          empty_start, loaded_start, loaded_coast_stop (power failure),\n"
             "          loaded_brake_stop, partial_load_start (the worst partial loading);\n"
             "          the table in DIR/cases.csv and cases.json, each case's report and\n"
-            "          DIR/report.html comparing them (docs/studies.md)\n");
+            "          DIR/report.html comparing them (docs/studies.md)\n"
+            "\n"
+            "A model whose top level has `boom` is a telescopic boom (boom-format.md):\n"
+            "check and run take it (run writes summary.json, history.csv and beams.csv);\n"
+            "static, study and cases take only a conveyor.\n");
     return 2;
 }
 
@@ -120,6 +125,14 @@ static void print_diag(const bd_diag *d)
 {
     for (int i = 0; i < d->count + d->warning_count; i++)
         fprintf(stderr, "%s\n", d->lines[i]);
+}
+
+/* a load's and a build's messages printed; 0, or exit code 2 when bad */
+static int said(bd_diag *diag, int bad)
+{
+    print_diag(diag);
+    bd_diag_free(diag);
+    return bad ? 2 : 0;
 }
 
 /* load and build; 0 ok, else exit code 2 with messages printed */
@@ -130,17 +143,52 @@ static int load_model(const char *path, bd_model_def *def, bd_sim **sim)
     int bad = bd_model_load(path, def, &diag);
     if (!bad && sim)
         bad = bd_sim_create(def, sim, &diag);
-    print_diag(&diag);
-    bd_diag_free(&diag);
     if (bad)
         bd_model_def_free(def);
-    return bad ? 2 : 0;
+    return said(&diag, bad);
+}
+
+/* a boom model (boom-format.md), loaded and built as load_model does */
+static int load_boom(const char *path, bd_boom_def *def, bd_boom **boom)
+{
+    bd_diag diag;
+    bd_diag_init(&diag);
+    int bad = bd_boom_load(path, def, &diag);
+    if (!bad)
+        bad = bd_boom_create(def, boom, &diag);
+    if (bad)
+        bd_boom_def_free(def);
+    return said(&diag, bad);
+}
+
+/* a boom model given where only a conveyor will do: said, exit code 2 */
+static int conveyor_only(const char *cmd, const char *path)
+{
+    if (!bd_model_is_boom(path))
+        return 0;
+    fprintf(stderr, "beltdyn: %s: %s takes a conveyor model, not a boom\n", path, cmd);
+    return 2;
+}
+
+static int check_boom(const char *path)
+{
+    bd_boom_def def;
+    bd_boom *boom = NULL;
+    int rc = load_boom(path, &def, &boom);
+    if (rc == 0) {
+        bd_boom_describe(boom, stdout);
+        bd_boom_free(boom);
+        bd_boom_def_free(&def);
+    }
+    return rc;
 }
 
 static int cmd_check(int argc, char **argv)
 {
     if (argc != 1)
         return usage(stderr);
+    if (bd_model_is_boom(argv[0]))
+        return check_boom(argv[0]);
     bd_model_def def;
     bd_sim *sim = NULL;
     int rc = load_model(argv[0], &def, &sim);
@@ -166,6 +214,8 @@ static int cmd_static(int argc, char **argv)
     }
     if (!path)
         return usage(stderr);
+    if (conveyor_only("static", path))
+        return 2;
     bd_model_def def;
     int rc = load_model(path, &def, NULL);
     if (rc != 0)
@@ -233,56 +283,120 @@ static void print_summary(const bd_sim *sim, const bd_model_def *def, FILE *f)
     fprintf(f, "\n");
 }
 
-static int cmd_run(int argc, char **argv)
+/* the end-of-run summary of a boom on a terminal: its extremes
+ * (boom-format.md, summary.json `boom`) */
+static void print_boom_summary(const bd_boom *boom, const bd_boom_def *def, FILE *f)
 {
-    const char *path = NULL, *dir = "out";
-    int quiet = 0, hdf5 = 0, force = 0;
-    for (int i = 0; i < argc; i++) {
-        if (strcmp(argv[i], "-o") == 0 && i + 1 < argc)
-            dir = argv[++i];
-        else if (strcmp(argv[i], "--quiet") == 0 || strcmp(argv[i], "-q") == 0)
-            quiet = 1;
-        else if (strcmp(argv[i], "--hdf5") == 0)
-            hdf5 = 1;
-        else if (strcmp(argv[i], "--force") == 0)
-            force = 1;
-        else if (!path && argv[i][0] != '-')
-            path = argv[i];
-        else
-            return usage(stderr);
-    }
-    if (!path)
-        return usage(stderr);
-    bd_model_def def;
-    bd_sim *sim = NULL;
-    int rc = load_model(path, &def, &sim);
-    if (rc != 0)
-        return rc;
-    /* cli.md: never into a directory that holds something else */
+    bd_boom_result r;
+    bd_boom_get_result(boom, &r);
+    fprintf(f, "tip: x up to %.3f m, y up to %.3f m; its deflection from the rigid boom's "
+            "tip up to %.1f mm\n", r.tip_x_max_m, r.tip_y_max_m, r.tip_deflection_max_m * 1e3);
+    fprintf(f, "peak telescopic cylinder force %.2f kN\n",
+            r.telescopic_cylinder_force_max_N / 1e3);
+    if (def->luffing_cylinder.present)
+        fprintf(f, "peak luffing cylinder force %.2f kN\n", r.luffing_force_max_N / 1e3);
+    else
+        fprintf(f, "peak pivot moment %.2f kN·m\n", r.luffing_force_max_N / 1e3);
+    fprintf(f, "peak pad normal force %.2f kN\n", r.pad_normal_force_max_N / 1e3);
+}
+
+typedef struct run_args {
+    const char *path, *dir;
+    int quiet, hdf5, force;
+} run_args;
+
+/* what every run does before it starts (cli.md): the output directory,
+ * never one that holds something else; Ctrl-C; the progress line and the
+ * warnings. 0, or exit code 2 with the message printed */
+static int run_start(const run_args *a, bd_run_options *opt)
+{
     char err[1024] = "";
-    if (bd_run_dir_prepare(dir, force, err, sizeof err) != BD_RUN_OK) {
+    if (bd_run_dir_prepare(a->dir, a->force, err, sizeof err) != BD_RUN_OK) {
         fprintf(stderr, "beltdyn: %s\n", err);
-        bd_sim_free(sim);
-        bd_model_def_free(&def);
         return 2;
     }
     struct sigaction sa;
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = on_sigint;
     sigaction(SIGINT, &sa, NULL);
-    bd_run_options opt = {0};
-    opt.out_dir = dir;
-    opt.progress = !quiet && isatty(STDERR_FILENO) ? show_progress : NULL;
-    opt.interrupted = &interrupted;
-    opt.hdf5 = hdf5;
-    opt.message = show_warning;
-    rc = bd_sim_run(sim, &opt, err, sizeof err);
+    memset(opt, 0, sizeof *opt);
+    opt->out_dir = a->dir;
+    opt->progress = !a->quiet && isatty(STDERR_FILENO) ? show_progress : NULL;
+    opt->interrupted = &interrupted;
+    opt->hdf5 = a->hdf5;
+    opt->message = show_warning;
+    return 0;
+}
+
+/* a run's end: its error said; 1 when a terminal wants the summary */
+static int run_end(int rc, const char *err, const run_args *a)
+{
     if (rc != BD_RUN_OK)
         fprintf(stderr, "beltdyn: %s%s\n", rc == BD_RUN_FAILED ? "error: " : "", err);
-    if ((rc == BD_RUN_OK || rc == BD_RUN_FAILED || rc == BD_RUN_INTERRUPTED) && !quiet
-        && isatty(STDOUT_FILENO)) {
-        print_summary(sim, &def, stdout);
-        bd_report_print_checks(dir, stdout);
+    return (rc == BD_RUN_OK || rc == BD_RUN_FAILED || rc == BD_RUN_INTERRUPTED) && !a->quiet
+           && isatty(STDOUT_FILENO);
+}
+
+static int run_boom(const run_args *a)
+{
+    if (a->hdf5) {
+        fprintf(stderr, "beltdyn: %s: --hdf5 writes a conveyor's tension field; a boom has "
+                "none\n", a->path);
+        return 2;
+    }
+    bd_boom_def def;
+    bd_boom *boom = NULL;
+    int rc = load_boom(a->path, &def, &boom);
+    if (rc != 0)
+        return rc;
+    bd_run_options opt;
+    rc = run_start(a, &opt);
+    if (rc == 0) {
+        char err[1024] = "";
+        rc = bd_boom_run(boom, &opt, err, sizeof err);
+        if (run_end(rc, err, a))
+            print_boom_summary(boom, &def, stdout);
+    }
+    bd_boom_free(boom);
+    bd_boom_def_free(&def);
+    return rc;
+}
+
+static int cmd_run(int argc, char **argv)
+{
+    run_args a = {.dir = "out"};
+    for (int i = 0; i < argc; i++) {
+        if (strcmp(argv[i], "-o") == 0 && i + 1 < argc)
+            a.dir = argv[++i];
+        else if (strcmp(argv[i], "--quiet") == 0 || strcmp(argv[i], "-q") == 0)
+            a.quiet = 1;
+        else if (strcmp(argv[i], "--hdf5") == 0)
+            a.hdf5 = 1;
+        else if (strcmp(argv[i], "--force") == 0)
+            a.force = 1;
+        else if (!a.path && argv[i][0] != '-')
+            a.path = argv[i];
+        else
+            return usage(stderr);
+    }
+    if (!a.path)
+        return usage(stderr);
+    if (bd_model_is_boom(a.path))
+        return run_boom(&a);
+    bd_model_def def;
+    bd_sim *sim = NULL;
+    int rc = load_model(a.path, &def, &sim);
+    if (rc != 0)
+        return rc;
+    bd_run_options opt;
+    rc = run_start(&a, &opt);
+    if (rc == 0) {
+        char err[1024] = "";
+        rc = bd_sim_run(sim, &opt, err, sizeof err);
+        if (run_end(rc, err, &a)) {
+            print_summary(sim, &def, stdout);
+            bd_report_print_checks(a.dir, stdout);
+        }
     }
     bd_sim_free(sim);
     bd_model_def_free(&def);
@@ -470,6 +584,8 @@ static int cmd_study(int argc, char **argv, int cases)
     }
     if (!o.model_path)
         return usage(stderr);
+    if (conveyor_only(cases ? "cases" : "study", o.model_path))
+        return 2;
     if (cases && start_options) {
         fprintf(stderr, "beltdyn: cases runs the five standard load cases with the model's "
                 "own start: --curves, --times and --delays belong to study\n");

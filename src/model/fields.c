@@ -338,6 +338,7 @@ void bd_fields_parse_map(bd_fields_ctx *c, yaml_node_t *node, bd_mark at, const 
     yaml_node_t *found[MAX_FIELDS] = {0};
     bd_mark keys[MAX_FIELDS];
     char sub[PATH_LEN];
+    int before = c->errors;
     assert(fs->n <= MAX_FIELDS);
     if (!node || node->type != YAML_MAPPING_NODE) {
         bd_fields_type_error(c, node, path, "a mapping");
@@ -373,8 +374,10 @@ void bd_fields_parse_map(bd_fields_ctx *c, yaml_node_t *node, bd_mark at, const 
         bd_fields_join(sub, path, f->key);
         parse_field(c, f, found[i], keys[i], sub, base);
     }
-    if (fs->post)
+    if (fs->post) {
+        c->map_errors = c->errors - before;
         fs->post(c, fs, found, at, path, base);
+    }
 }
 
 yaml_node_t *bd_fields_got(const bd_fieldset *fs, yaml_node_t *const *found, const char *key)
@@ -406,21 +409,6 @@ void bd_fields_check_friction(bd_fields_ctx *c, const bd_fieldset *fs, yaml_node
 
 /* ---- whole files ---- */
 
-int bd_fields_read_file(const char *path, char **text, size_t *len, bd_diag *diag)
-{
-    int rc = bd_read_file(path, text, len);
-    if (rc == BD_READ_OK)
-        return 0;
-    const char *why = strerror(errno);
-    if (rc == BD_READ_OPEN)
-        bd_diag_error(diag, path, (bd_mark){0, 0}, "cannot open model file: %s", why);
-    else if (rc == BD_READ_NOMEM)
-        bd_diag_error(diag, path, (bd_mark){0, 0}, "out of memory reading the model file");
-    else
-        bd_diag_error(diag, path, (bd_mark){0, 0}, "cannot read model file: %s", why);
-    return 1;
-}
-
 static void yaml_error(bd_fields_ctx *c, const yaml_parser_t *parser)
 {
     bd_mark at;
@@ -434,8 +422,9 @@ static void yaml_error(bd_fields_ctx *c, const yaml_parser_t *parser)
                       parser->problem ? parser->problem : "out of memory");
 }
 
-void bd_fields_load_document(bd_fields_ctx *c, const char *text, size_t len,
-                             const bd_fieldset *root_fs, void *out, const char *empty_msg)
+/* parse text as one document whose root mapping is walked against root */
+static void load_document(bd_fields_ctx *c, const char *text, size_t len,
+                          const bd_fields_loader *l, void *out)
 {
     yaml_parser_t parser;
     yaml_document_t doc;
@@ -450,9 +439,9 @@ void bd_fields_load_document(bd_fields_ctx *c, const char *text, size_t len,
     } else {
         yaml_node_t *root = yaml_document_get_root_node(&doc);
         if (!root)
-            bd_fields_err(c, (bd_mark){1, 1}, "", "%s", empty_msg);
+            bd_fields_err(c, (bd_mark){1, 1}, "", "%s", l->empty_msg);
         else
-            bd_fields_parse_map(c, root, bd_fields_mark_of(root), "", root_fs, out);
+            bd_fields_parse_map(c, root, bd_fields_mark_of(root), "", l->root, out);
         yaml_document_delete(&doc);
         /* a model is one document: look for a second one or trailing junk */
         if (root && !yaml_parser_load(&parser, &doc)) {
@@ -467,6 +456,49 @@ void bd_fields_load_document(bd_fields_ctx *c, const char *text, size_t len,
     }
     yaml_parser_delete(&parser);
     c->doc = NULL;
+}
+
+/* out at its defaults, its source the file */
+static void start(const bd_fields_loader *l, const char *file, void *out)
+{
+    l->init(out);
+    snprintf((char *)out + l->source_off, l->source_size, "%s", file);
+}
+
+int bd_fields_load_text(bd_fields_ctx *c, const bd_fields_loader *l, const char *text,
+                        size_t len, const char *path, void *out)
+{
+    c->file = path ? path : "<string>";
+    start(l, c->file, out);
+    load_document(c, text, len, l, out);
+    if (c->errors) {
+        l->free(out);
+        start(l, c->file, out);
+        return 1;
+    }
+    return 0;
+}
+
+int bd_fields_load_file(bd_fields_ctx *c, const bd_fields_loader *l, const char *path,
+                        void *out)
+{
+    char *text;
+    size_t len;
+    start(l, path, out);
+    int rc = bd_read_file(path, &text, &len);
+    if (rc != BD_READ_OK) {
+        const char *why = strerror(errno);
+        if (rc == BD_READ_OPEN)
+            bd_diag_error(c->diag, path, (bd_mark){0, 0}, "cannot open model file: %s", why);
+        else if (rc == BD_READ_NOMEM)
+            bd_diag_error(c->diag, path, (bd_mark){0, 0}, "out of memory reading the model file");
+        else
+            bd_diag_error(c->diag, path, (bd_mark){0, 0}, "cannot read model file: %s", why);
+        return 1;
+    }
+    rc = bd_fields_load_text(c, l, text, len, path, out);
+    free(text);
+    return rc;
 }
 
 void bd_fields_default_name(const char *source, char *name, size_t size)

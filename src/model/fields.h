@@ -29,10 +29,12 @@ typedef struct bd_fields_ctx {
     yaml_document_t *doc;
     const char *file;
     bd_diag *diag;
-    bd_model_def *m;     /* the conveyor being loaded (K_SPAN names its pulleys); NULL for a boom */
-    bd_boom_def *boom;   /* the boom being loaded, for checks across its keys; NULL for a conveyor */
+    bd_model_def *m;     /* the conveyor being loaded (K_SPAN names its pulleys), or NULL */
+    bd_boom_def *boom;   /* the boom being loaded (checks across its keys), or NULL */
     int errors;
     int index;           /* index of the list entry being parsed */
+    int map_errors;      /* in a post: the errors its mapping's keys and values gave, so
+                            that checks across them are made only on what read well */
 } bd_fields_ctx;
 
 struct bd_field;
@@ -233,13 +235,26 @@ void bd_fields_check_friction(bd_fields_ctx *c, const bd_fieldset *fs, yaml_node
 
 /* ---- whole files ---- */
 
-/* the model file's text into *text (free it); 0, or 1 with the reason in diag */
-int bd_fields_read_file(const char *path, char **text, size_t *len, bd_diag *diag);
-/* parse text as exactly one YAML document whose root mapping is walked
- * against root_fs into out; YAML errors, an empty document (empty_msg) and
- * a second document are reported. c->file and c->diag set by the caller. */
-void bd_fields_load_document(bd_fields_ctx *c, const char *text, size_t len,
-                             const bd_fieldset *root_fs, void *out, const char *empty_msg);
+/* what a loader fills: its top-level table and its description's set-up */
+typedef struct bd_fields_loader {
+    const bd_fieldset *root;     /* the top-level mapping */
+    const char *empty_msg;       /* said of an empty document */
+    void (*init)(void *out);     /* every field at its default */
+    void (*free)(void *out);     /* what out holds freed, out at its defaults */
+    size_t source_off;           /* char source[source_size] in out: the file, for messages */
+    size_t source_size;
+} bd_fields_loader;
+
+/* text as exactly one YAML document into out (initialized first): YAML
+ * errors, an empty document and a second one reported too. 0, or 1 with
+ * every problem in c->diag and out freed but for its source. The caller
+ * sets c->diag and c->m or c->boom; path NULL reads as "<string>". */
+int bd_fields_load_text(bd_fields_ctx *c, const bd_fields_loader *l, const char *text,
+                        size_t len, const char *path, void *out);
+/* the model file at path, as bd_fields_load_text (a file that cannot be
+ * read is said in c->diag) */
+int bd_fields_load_file(bd_fields_ctx *c, const bd_fields_loader *l, const char *path,
+                        void *out);
 /* the model's default name: source's base name without its extension */
 void bd_fields_default_name(const char *source, char *name, size_t size);
 

@@ -846,36 +846,29 @@ FIELDSET(model_fs, model_fields, model_post);
 
 /* ---- entry points ---- */
 
+static void model_init(void *m)
+{
+    bd_model_def_init(m);
+}
+
+static void model_free(void *m)
+{
+    bd_model_def_free(m);
+}
+
+static const bd_fields_loader model_loader = {
+    &model_fs, "empty model: expected a mapping with belt and pulleys", model_init, model_free,
+    offsetof(bd_model_def, source), sizeof(((bd_model_def *)0)->source)};
+
 int bd_model_load_string(const char *text, size_t len, const char *path, bd_model_def *out,
                          bd_diag *diag)
 {
-    bd_fields_ctx c;
-    memset(&c, 0, sizeof c);
-    bd_model_def_init(out);
-    snprintf(out->source, sizeof out->source, "%s", path ? path : "<string>");
-    c.file = path ? path : "<string>";
-    c.diag = diag;
-    c.m = out;
-    bd_fields_load_document(&c, text, len, &model_fs, out,
-                            "empty model: expected a mapping with belt and pulleys");
-    if (c.errors) {
-        bd_model_def_free(out);
-        snprintf(out->source, sizeof out->source, "%s", c.file);
-        return 1;
-    }
-    return 0;
+    bd_fields_ctx c = {.diag = diag, .m = out};
+    return bd_fields_load_text(&c, &model_loader, text, len, path, out);
 }
 
 int bd_model_load(const char *path, bd_model_def *out, bd_diag *diag)
 {
-    char *text;
-    size_t len;
-    int rc;
-    bd_model_def_init(out);
-    snprintf(out->source, sizeof out->source, "%s", path);
-    if (bd_fields_read_file(path, &text, &len, diag))
-        return 1;
-    rc = bd_model_load_string(text, len, path, out, diag);
-    free(text);
-    return rc;
+    bd_fields_ctx c = {.diag = diag, .m = out};
+    return bd_fields_load_file(&c, &model_loader, path, out);
 }
