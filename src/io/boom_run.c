@@ -14,6 +14,7 @@
 
 #include "base/clock.h"
 #include "base/json_util.h"
+#include "io/outputs.h"
 
 enum { F_HISTORY = 0, F_BEAMS, F_SUMMARY, F_COUNT };
 static const char *const file_names[F_COUNT] = {"history.csv", "beams.csv", "summary.json"};
@@ -215,6 +216,8 @@ int bd_boom_run(bd_boom *b, const bd_run_options *opt, char *err, size_t errlen)
     boom_out o;
     memset(&o, 0, sizeof o);
     err[0] = '\0';
+    if (dir && bd_outputs_make_dir(dir, err, errlen))
+        return BD_RUN_FAILED;
     if (dir && (out_open(&o, dir, F_HISTORY, err, errlen) || out_open(&o, dir, F_BEAMS, err,
                                                                          errlen))) {
         for (int k = 0; k < F_COUNT; k++)

@@ -26,7 +26,7 @@
 #include "sensors/sensors.h"
 #include "sim/timestep.h"
 
-static int make_dir(const char *dir, char *err, size_t errlen)
+int bd_outputs_make_dir(const char *dir, char *err, size_t errlen)
 {
     char buf[1024];
     snprintf(buf, sizeof buf, "%s", dir);
@@ -109,7 +109,7 @@ int bd_outputs_open(bd_outputs *o, const bd_sim *sim, const char *dir, int hdf5,
                  dir, (int)sizeof o->dir - 1);
         return 1;
     }
-    if (make_dir(dir, err, errlen))
+    if (bd_outputs_make_dir(dir, err, errlen))
         return 1;
     /* the envelope's bins, before any file is opened */
     o->bins = sim->model->n;

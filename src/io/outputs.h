@@ -36,6 +36,8 @@ typedef struct bd_outputs {
     char err[2048];
 } bd_outputs;
 
+/* the run directory and its parents, made if missing; 0 ok */
+int bd_outputs_make_dir(const char *dir, char *err, size_t errlen);
 /* hdf5: also write DIR/tension.h5 (hdf5_out.c) */
 int bd_outputs_open(bd_outputs *o, const bd_sim *sim, const char *dir, int hdf5, char *err,
                     size_t errlen);
