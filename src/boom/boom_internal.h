@@ -58,7 +58,6 @@ typedef struct bd_boom {
     int ns;                   /* sections */
     boom_section sec[BD_BOOM_MAX_SECTIONS];
     int N;                    /* nodes */
-    int E;                    /* elements (N - ns) */
     double g;
     double tip_mass;
     double attach_s;          /* section 1's luffing attachment, m (if any) */
@@ -90,6 +89,7 @@ typedef struct bd_boom {
     long steps;
     double stroke_ref, stroke_v, stroke_a;   /* profile now */
     double theta, theta_dot;                 /* luffing now */
+    double cos_theta, sin_theta;             /* of theta (every node reads them) */
 
     /* actuators, last evaluation */
     double cyl_force;          /* N, telescopic cylinder (push positive) */
@@ -167,7 +167,7 @@ void boom_forces(bd_boom *b, double *elastic, double *diss_power, double *in_pow
 int boom_step(bd_boom *b, int settle, char *err, size_t errlen);
 /* the two halves of a step: every force and energy at the state now
  * (what an output row shows), then the advance by dt */
-void boom_evaluate(bd_boom *b, int settle);
+void boom_evaluate(bd_boom *b);
 int boom_advance(bd_boom *b, int settle, char *err, size_t errlen);
 /* rope statics: the telescopic cylinder's force at rest at t = 0, N */
 double boom_static_cylinder_force(const bd_boom *b);

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "base/constants.h"
+#include "model/fields.h"
 
 /* state arrays: x y phi vx vy w s m J fx fy mz eN eMa eMb eV and the
  * seven remap scratch arrays */
@@ -17,17 +18,10 @@ static int copy_table(bd_table *dst, const bd_table *src)
     memset(dst, 0, sizeof *dst);
     if (src->n == 0)
         return 0;
-    dst->t = malloc((size_t)src->n * sizeof *dst->t);
-    dst->v = malloc((size_t)src->n * sizeof *dst->v);
-    if (!dst->t || !dst->v) {
-        free(dst->t);
-        free(dst->v);
-        dst->t = dst->v = NULL;
+    if (bd_fields_table_alloc(dst, src->n))
         return 1;
-    }
     memcpy(dst->t, src->t, (size_t)src->n * sizeof *dst->t);
     memcpy(dst->v, src->v, (size_t)src->n * sizeof *dst->v);
-    dst->n = src->n;
     return 0;
 }
 
@@ -147,7 +141,9 @@ static double parts_omega2(const bd_boom *b)
 /* the first bending frequency of the boom at its initial stroke, as a
  * cantilever stepped where the sections end (the outermost present at
  * each point carries the bending; the overlaps' extra stiffness is left
- * out) with the tip mass and 0.24 of the beams' mass at the tip: an
+ * out), its tip stiffness 1 / int (L - x)^2 / EI dx, with the tip mass and
+ * 0.24 of the beams' mass at the tip (Rayleigh's 33/140 for a uniform
+ * cantilever, Blevins, Formulas for natural frequency, table 6-2): an
  * estimate, to place the mass-proportional damping (rad/s) */
 static double first_bending(const bd_boom *b)
 {
@@ -219,7 +215,6 @@ int bd_boom_create(const bd_boom_def *def, bd_boom **out, bd_diag *diag)
         first += S->n;
     }
     b->N = first;
-    b->E = b->N - b->ns;
     b->attach_node = b->sec[0].key == BOOM_KEY_ATTACH ? b->sec[0].first + p
                                                      : b->sec[0].first + b->sec[0].n - 1;
     if (b->sec[0].key != BOOM_KEY_ATTACH)
@@ -256,7 +251,7 @@ int bd_boom_create(const bd_boom_def *def, bd_boom **out, bd_diag *diag)
     bd_boom_stroke_eval(&d->stroke, bd_boom_stroke_end(&d->stroke), &strokes[1], &a_, &a_);
     b->omega_max = 0.0;
     for (int q = 0; q < 2; q++) {
-        b->theta = bd_table_eval(&d->luffing_angle, 0.0);
+        boom_kinematics(b, 0.0);
         b->theta_dot = 0.0;
         b->stroke_ref = strokes[q];
         b->stroke_v = 0.0;
@@ -289,6 +284,21 @@ int bd_boom_create(const bd_boom_def *def, bd_boom **out, bd_diag *diag)
                           "%.3g s (highest frequency %.0f Hz); use auto or at most that",
                           d->simulation.time_step, dt_stable, b->omega_max / BD_TWO_PI);
         b->dt = d->simulation.time_step;
+    }
+    if (d->luffing_cylinder.present) {
+        /* a rod nearly through the pivot holds the boom only with a huge
+         * force and a soft angle: say so where the rod is defined */
+        double c = cos(b->theta), sn = sin(b->theta);
+        const double *at = d->luffing_cylinder.attach, *base = d->luffing_cylinder.base;
+        double px = d->pivot[0] + at[0] * c - at[1] * sn, py = d->pivot[1] + at[0] * sn + at[1] * c;
+        double ux = px - base[0], uy = py - base[1], l = hypot(ux, uy);
+        double lever = fabs((px - d->pivot[0]) * uy - (py - d->pivot[1]) * ux) / l;
+        if (lever < 0.05 * at[0])
+            bd_diag_warning(diag, d->source, d->luffing_cylinder.mark,
+                            "boom.luffing_cylinder: its line passes %.3f m from the pivot "
+                            "(%.1f %% of the attachment's distance): it needs %.0f N for every N·m "
+                            "the boom's weight puts about the pivot",
+                            lever, 100.0 * lever / at[0], 1.0 / lever);
     }
     if (diag->count > 0) {
         bd_boom_free(b);

@@ -34,18 +34,35 @@ static field_view live_view(const bd_boom *b)
     return f;
 }
 
+/* the element from node a: its material length l0 and the nodes' slopes
+ * r' = lambda (cos phi, sin phi), lambda its stretch */
+typedef struct elem_slopes {
+    double l0, ta_x, ta_y, tb_x, tb_y;
+} elem_slopes;
+
+static elem_slopes slopes_of(const field_view *f, int a)
+{
+    int c = a + 1;
+    elem_slopes e;
+    e.l0 = f->s[c] - f->s[a];
+    double dx = f->x[c] - f->x[a], dy = f->y[c] - f->y[a];
+    double lam = e.l0 > 0.0 ? sqrt(dx * dx + dy * dy) / e.l0 : 1.0;
+    e.ta_x = lam * cos(f->phi[a]);
+    e.ta_y = lam * sin(f->phi[a]);
+    e.tb_x = lam * cos(f->phi[c]);
+    e.tb_y = lam * sin(f->phi[c]);
+    return e;
+}
+
 /* evaluate at parameter xi of the element starting at node a */
 static void eval_on(const field_view *f, int a, double xi, double *x, double *y, double *phi,
                     double *vx, double *vy, double *w)
 {
     int c = a + 1;
-    double l0 = f->s[c] - f->s[a];
-    double dx = f->x[c] - f->x[a], dy = f->y[c] - f->y[a];
-    double lam = l0 > 0.0 ? sqrt(dx * dx + dy * dy) / l0 : 1.0;
+    elem_slopes e = slopes_of(f, a);
+    double l0 = e.l0, ta_x = e.ta_x, ta_y = e.ta_y, tb_x = e.tb_x, tb_y = e.tb_y;
     double h00, h10, h01, h11;
     hermite(xi, &h00, &h10, &h01, &h11);
-    double ta_x = lam * cos(f->phi[a]), ta_y = lam * sin(f->phi[a]);
-    double tb_x = lam * cos(f->phi[c]), tb_y = lam * sin(f->phi[c]);
     *x = h00 * f->x[a] + h10 * l0 * ta_x + h01 * f->x[c] + h11 * l0 * tb_x;
     *y = h00 * f->y[a] + h10 * l0 * ta_y + h01 * f->y[c] + h11 * l0 * tb_y;
     *phi = (1.0 - xi) * f->phi[a] + xi * f->phi[c];
@@ -78,7 +95,7 @@ static double rigid_offset_rate(const bd_boom *b, int k, double v)
 void boom_rigid_point(const bd_boom *b, int k, double s, double *x, double *y, double *vx,
                       double *vy)
 {
-    double c = cos(b->theta), sn = sin(b->theta);
+    double c = b->cos_theta, sn = b->sin_theta;
     double d = boom_rigid_offset(b, k, b->stroke_ref) + s;
     double dd = rigid_offset_rate(b, k, b->stroke_v);
     *x = b->def.pivot[0] + d * c;
@@ -165,13 +182,11 @@ void boom_apply(bd_boom *b, const boom_where *at, double fx, double fy, double m
 {
     int a = at->a, c = a + 1;
     double xi = at->xi;
-    double l0 = b->s[c] - b->s[a];
-    double dx = b->x[c] - b->x[a], dy = b->y[c] - b->y[a];
-    double lam = l0 > 0.0 ? sqrt(dx * dx + dy * dy) / l0 : 1.0;
+    field_view f = live_view(b);
+    elem_slopes e = slopes_of(&f, a);
+    double l0 = e.l0, ta_x = e.ta_x, ta_y = e.ta_y, tb_x = e.tb_x, tb_y = e.tb_y;
     double h00, h10, h01, h11;
     hermite(xi, &h00, &h10, &h01, &h11);
-    double ta_x = lam * cos(b->phi[a]), ta_y = lam * sin(b->phi[a]);
-    double tb_x = lam * cos(b->phi[c]), tb_y = lam * sin(b->phi[c]);
     b->fx[a] += h00 * fx;
     b->fy[a] += h00 * fy;
     b->fx[c] += h01 * fx;

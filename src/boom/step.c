@@ -19,6 +19,8 @@ void boom_kinematics(bd_boom *b, double t)
     bd_boom_stroke_eval(&b->def.stroke, t, &b->stroke_ref, &b->stroke_v, &b->stroke_a);
     const double h = 1e-6;
     b->theta = bd_table_eval(&b->def.luffing_angle, t);
+    b->cos_theta = cos(b->theta);
+    b->sin_theta = sin(b->theta);
     b->theta_dot = (bd_table_eval(&b->def.luffing_angle, t + h)
                     - bd_table_eval(&b->def.luffing_angle, t > h ? t - h : 0.0))
                  / (t > h ? 2.0 * h : h + t);
@@ -145,7 +147,7 @@ static int out_of_bounds(const bd_boom *b, char *err, size_t errlen)
     return 0;
 }
 
-void boom_evaluate(bd_boom *b, int settle)
+void boom_evaluate(bd_boom *b)
 {
     double U, D, P;
     boom_kinematics(b, b->t);
@@ -163,7 +165,6 @@ void boom_evaluate(bd_boom *b, int settle)
      * the half steps around it (the second half added in boom_advance) */
     b->e_pot = gravity_energy(b) + U;
     b->pend_kin = kinetic(b);
-    (void)settle;
 }
 
 int boom_advance(bd_boom *b, int settle, char *err, size_t errlen)
@@ -212,6 +213,6 @@ int boom_advance(bd_boom *b, int settle, char *err, size_t errlen)
 
 int boom_step(bd_boom *b, int settle, char *err, size_t errlen)
 {
-    boom_evaluate(b, settle);
+    boom_evaluate(b);
     return boom_advance(b, settle, err, errlen);
 }

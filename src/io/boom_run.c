@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "base/clock.h"
+#include "base/constants.h"
 #include "base/json_util.h"
 #include "io/outputs.h"
 
@@ -180,7 +181,7 @@ static int settle(bd_boom *b, long max_steps, const bd_run_options *opt, char *e
      * pads' and the rod's fast modes peak every few steps and the reset
      * kills the slow sag before it gets anywhere */
     double alpha = b->alpha;
-    b->alpha = fmax(alpha, 2.0 * 2.0 * 3.14159265358979 * b->f1_hz);
+    b->alpha = fmax(alpha, 2.0 * BD_TWO_PI * b->f1_hz);
     int rc = 1;
     long n = 1;
     for (; n <= max_steps && rc == 1; n++) {
@@ -254,7 +255,7 @@ int bd_boom_run(bd_boom *b, const bd_run_options *opt, char *err, size_t errlen)
     double last_progress = wall0;
     double ax = 0.0, ay = 0.0;
     while (rc == BD_RUN_OK) {
-        boom_evaluate(b, 0);
+        boom_evaluate(b);
         record(b);
         if (b->t >= (double)next_row * interval - 0.5 * b->dt) {
             if (dir) {
