@@ -51,6 +51,8 @@ typedef struct boom_contact {
     double normal;            /* N, sum of the pad forces */
     double friction;          /* N, on the inner section along its axis */
     double slide;             /* m/s, sliding speed of A relative to B */
+    double face_force[2];     /* N, friction of the upper and lower pad on A */
+    double face_speed[2];     /* m/s, their faces' sliding speed at the force */
 } boom_contact;
 
 typedef struct bd_boom {
@@ -150,6 +152,10 @@ void boom_beam_forces(bd_boom *b, double *elastic, double *damp_power);
 /* ---- boom/pads.c ---- */
 /* locate every contact and add its pad forces; energy and dissipation */
 void boom_pads(bd_boom *b, double *elastic, double *diss_power);
+/* the friction's dissipation over the step just taken beyond what
+ * boom_pads booked at the step's starting speed (W): half the change of
+ * the faces' speed times their forces, so the work counts the mean speed */
+double boom_pads_friction_correction(const bd_boom *b);
 
 /* ---- boom/actuators.c ---- */
 void boom_actuators_init(bd_boom *b);

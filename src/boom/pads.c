@@ -103,6 +103,7 @@ static void one_contact(bd_boom *b, boom_contact *c, double *elastic, double *di
     double meff = 1.0 / (ima + imb + hh * hh * (ija + ijb));
     double Ff = 0.0, Mf = 0.0;
     for (int p = 0; p < 2; p++) {
+        c->face_force[p] = 0.0;
         if (!(Npad[p] > 0.0))
             continue;
         double sgn = p == 0 ? 1.0 : -1.0;
@@ -116,6 +117,8 @@ static void one_contact(bd_boom *b, boom_contact *c, double *elastic, double *di
             Fp = -(vf > 0.0 ? 1.0 : -1.0) * mu_of(pd, vf) * Npad[p];
         }
         *diss += -Fp * vf;
+        c->face_force[p] = Fp;
+        c->face_speed[p] = vf;
         Ff += Fp;
         Mf -= sgn * hh * Fp;
     }
@@ -142,4 +145,24 @@ void boom_pads(bd_boom *b, double *elastic, double *diss_power)
     }
     *elastic = U;
     *diss_power = D;
+}
+
+double boom_pads_friction_correction(const bd_boom *b)
+{
+    double P = 0.0;
+    for (int j = 0; j < b->nc; j++) {
+        const boom_contact *c = &b->c[j];
+        if (c->face_force[0] == 0.0 && c->face_force[1] == 0.0)
+            continue;
+        double xa, ya, pa, vxa, vya, wa, xb, yb, pb, vxb, vyb, wb;
+        boom_eval(b, &c->A, &xa, &ya, &pa, &vxa, &vya, &wa);
+        boom_eval(b, &c->B, &xb, &yb, &pb, &vxb, &vyb, &wb);
+        double vs = (vxa - vxb) * cos(pb) + (vya - vyb) * sin(pb);
+        for (int p = 0; p < 2; p++) {
+            double sgn = p == 0 ? 1.0 : -1.0;
+            double vf = vs - sgn * 0.5 * c->h * (wa - wb);
+            P += -c->face_force[p] * 0.5 * (vf - c->face_speed[p]);
+        }
+    }
+    return P;
 }

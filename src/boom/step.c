@@ -180,6 +180,11 @@ int boom_advance(bd_boom *b, int settle, char *err, size_t errlen)
     b->vx[pin] = b->vy[pin] = 0.0;
     if (held_angle)
         b->w[pin] = b->theta_dot;
+    /* the friction's work at the step's mean sliding speed (the stick
+     * ramp's force reverses the speed within a step: booked at the
+     * starting speed alone it was the balance's largest error) */
+    if (!settle)
+        b->pend_diss += boom_pads_friction_correction(b);
     double K_after = kinetic(b);
     if (!settle) {
         b->e_kin = 0.5 * (b->pend_kin + K_after);
