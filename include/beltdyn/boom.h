@@ -61,7 +61,9 @@ typedef struct bd_luffing_cylinder_def {
     int present;
     double base[2];        /* m, fixed point (x, y) */
     double attach[2];      /* m, (s along section 1's axis from the pivot,
-                              n off it, positive to the upper side) */
+                              n off it, positive to the upper side); with a
+                              pivot_offset, section 1's material coordinate
+                              is s + pivot_offset[0] */
     double stiffness;      /* N/m of the rod (added key); default 1e9 */
     bd_mark mark;
 } bd_luffing_cylinder_def;
@@ -92,6 +94,11 @@ typedef struct bd_boom_def {
     char name[BD_NAME_MAX];  /* `name`, default the file's base name */
     double gravity;          /* m/s², default 9.81 */
     double pivot[2];         /* m, default (0, 0) */
+    double pivot_offset[2];  /* added: m, the pivot from section 1's bottom end
+                                in the boom frame (along the axis, across it,
+                                positive to the upper side), seed 003's r1
+                                (-0.956, 0.556); default (0, 0): the pivot at
+                                the bottom end on the axis, as the spec has it */
     bd_table luffing_angle;  /* rad against t (s); a number is a one-point table */
     bd_luffing_cylinder_def luffing_cylinder;
     int section_count;                 /* >= 2, <= BD_BOOM_MAX_SECTIONS */

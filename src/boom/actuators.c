@@ -90,7 +90,7 @@ void boom_actuators_init(bd_boom *b)
          * (c dt / m_local <= 1); the boom's luffing mode is damped by the
          * structural damping as well */
         int i = b->attach_node;
-        double off = b->def.luffing_cylinder.attach[1];
+        double off = b->attach_n;
         double m_local = 1.0 / (1.0 / b->m[i] + off * off / b->J[i]);
         b->rod_c = fmin(b->rod_c, m_local / b->dt);
     }
@@ -176,7 +176,7 @@ void boom_actuators(bd_boom *b, double *elastic, double *diss_power, double *in_
     if (b->def.luffing_cylinder.present) {
         int i = b->attach_node;
         const bd_luffing_cylinder_def *lc = &b->def.luffing_cylinder;
-        double off = lc->attach[1];
+        double off = b->attach_n;
         double c = cos(b->phi[i]), s = sin(b->phi[i]);
         double ox = -off * s, oy = off * c;           /* node -> attachment */
         double px = b->x[i] + ox, py = b->y[i] + oy;

@@ -62,7 +62,11 @@ typedef struct bd_boom {
     int N;                    /* nodes */
     double g;
     double tip_mass;
+    double base_a, base_n;    /* section 1's bottom end from the pivot in the
+                                 boom frame (along, across), m: minus the
+                                 added key pivot_offset */
     double attach_s;          /* section 1's luffing attachment, m (if any) */
+    double attach_n;          /* the attachment's offset across the axis, m */
     int attach_node;          /* its node */
 
     /* contacts: [2k] inner contact of boundary k (section k+1's bottom in
@@ -177,6 +181,10 @@ void boom_evaluate(bd_boom *b);
 int boom_advance(bd_boom *b, int settle, char *err, size_t errlen);
 /* rope statics: the telescopic cylinder's force at rest at t = 0, N */
 double boom_static_cylinder_force(const bd_boom *b);
+/* rigid statics of the luffing at time 0's angle and the given stroke:
+ * the rod's force (N, push positive) or, without a rod, the pivot moment
+ * (N·m) that holds the boom's weight and tip load */
+double boom_static_luffing(const bd_boom *b, double stroke);
 /* tip position and the rigid boom's */
 void boom_tip(const bd_boom *b, double *x, double *y, double *vx, double *vy);
 void boom_tip_rigid(const bd_boom *b, double *x, double *y);

@@ -190,6 +190,9 @@ int bd_boom_create(const bd_boom_def *def, bd_boom **out, bd_diag *diag)
     b->ns = d->section_count;
     b->g = d->gravity;
     b->tip_mass = d->tip_mass;
+    b->base_a = -d->pivot_offset[0];
+    b->base_n = -d->pivot_offset[1];
+    b->attach_n = d->luffing_cylinder.attach[1] - b->base_n;
     int p = d->elements_per_segment;
     int first = 0;
     for (int k = 0; k < b->ns; k++) {
@@ -203,9 +206,12 @@ int bd_boom_create(const bd_boom_def *def, bd_boom **out, bd_diag *diag)
         S->per_seg = p;
         if (k == 0) {
             S->key = BOOM_KEY_NONE;
-            if (d->luffing_cylinder.present && d->luffing_cylinder.attach[0] < 0.999 * S->L) {
+            /* the attachment is given from the pivot; on the section it
+             * stands base_a further back */
+            double as = d->luffing_cylinder.attach[0] - b->base_a;
+            if (d->luffing_cylinder.present && as < 0.999 * S->L) {
                 S->key = BOOM_KEY_ATTACH;
-                b->attach_s = d->luffing_cylinder.attach[0];
+                b->attach_s = as;
             }
         } else {
             S->key = BOOM_KEY_OUTER;
@@ -327,6 +333,31 @@ double boom_static_cylinder_force(const bd_boom *b)
     return b->g * sin(th) * F;
 }
 
+double boom_static_luffing(const bd_boom *b, double stroke)
+{
+    /* the weight's moment about the pivot: each section's mass at its
+     * centre, the tip mass at the tip, x - x_pivot = d cos - n sin in the
+     * boom frame (d along from the pivot, n = base_n across) */
+    const bd_boom_def *d = &b->def;
+    double th = bd_table_eval(&d->luffing_angle, 0.0), c = cos(th), sn = sin(th), M = 0.0;
+    for (int k = 0; k < b->ns; k++) {
+        double at = b->base_a + boom_rigid_offset(b, k, stroke);
+        double mk = b->sec[k].rhoA * b->sec[k].L;
+        M += mk * ((at + 0.5 * b->sec[k].L) * c - b->base_n * sn);
+        if (k == b->ns - 1)
+            M += b->tip_mass * ((at + b->sec[k].L) * c - b->base_n * sn);
+    }
+    M *= b->g;
+    if (!d->luffing_cylinder.present)
+        return M;
+    /* the rod's push F along u (base -> attachment) turns the boom by
+     * F (r x u) about the pivot */
+    const double *at = d->luffing_cylinder.attach, *base = d->luffing_cylinder.base;
+    double rx = at[0] * c - at[1] * sn, ry = at[0] * sn + at[1] * c;
+    double ux = d->pivot[0] + rx - base[0], uy = d->pivot[1] + ry - base[1], l = hypot(ux, uy);
+    return M / ((rx * uy - ry * ux) / l);
+}
+
 void bd_boom_describe(const bd_boom *b, FILE *f)
 {
     const bd_boom_def *d = &b->def;
@@ -349,6 +380,11 @@ void bd_boom_describe(const bd_boom *b, FILE *f)
             b->tip_mass, mass);
     fprintf(f, "static telescopic cylinder force by rope statics at t = 0: %.4g N\n",
             boom_static_cylinder_force(b));
+    fprintf(f, "static %s by rigid statics: %.4g %s at the initial stroke, %.4g at %.3f m "
+            "(ratio %.3f)\n", d->luffing_cylinder.present ? "luffing cylinder force"
+            : "pivot moment", boom_static_luffing(b, d->stroke.initial),
+            d->luffing_cylinder.present ? "N" : "N·m", boom_static_luffing(b, s_end), s_end,
+            boom_static_luffing(b, s_end) / boom_static_luffing(b, d->stroke.initial));
     fprintf(f, "%d nodes (%d elements per segment); highest frequency %.0f Hz; time step %.3g s; "
             "%.0f s simulated = %.3g steps\n", b->N, d->elements_per_segment,
             b->omega_max / BD_TWO_PI, b->dt, dur, dur / b->dt);

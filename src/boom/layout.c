@@ -96,13 +96,15 @@ void boom_rigid_point(const bd_boom *b, int k, double s, double *x, double *y, d
                       double *vy)
 {
     double c = b->cos_theta, sn = b->sin_theta;
-    double d = boom_rigid_offset(b, k, b->stroke_ref) + s;
+    /* (d, n): the point in the boom frame from the pivot */
+    double d = b->base_a + boom_rigid_offset(b, k, b->stroke_ref) + s, n = b->base_n;
     double dd = rigid_offset_rate(b, k, b->stroke_v);
-    *x = b->def.pivot[0] + d * c;
-    *y = b->def.pivot[1] + d * sn;
+    double rx = d * c - n * sn, ry = d * sn + n * c;
+    *x = b->def.pivot[0] + rx;
+    *y = b->def.pivot[1] + ry;
     /* along the axis, plus the luffing rotation */
-    *vx = dd * c - b->theta_dot * d * sn;
-    *vy = dd * sn + b->theta_dot * d * c;
+    *vx = dd * c - b->theta_dot * ry;
+    *vy = dd * sn + b->theta_dot * rx;
 }
 
 void boom_distribute(bd_boom *b, int k)

@@ -154,9 +154,11 @@ void boom_evaluate(bd_boom *b)
     boom_forces(b, &U, &D, &P);
     int pin = b->sec[0].first;
     if (!b->def.luffing_cylinder.present) {
-        /* the moment that holds section 1 at the angle: J theta'' - sum
-         * of the others (theta'' = 0 on a linear table segment) */
-        b->luff_force = -b->mz[pin];
+        /* the moment about the pivot that holds section 1 at the angle:
+         * J theta'' - sum of the others (theta'' = 0 on a linear table
+         * segment) */
+        double rx = b->x[pin] - b->def.pivot[0], ry = b->y[pin] - b->def.pivot[1];
+        b->luff_force = -(b->mz[pin] + rx * b->fy[pin] - ry * b->fx[pin]);
         P += b->luff_force * b->theta_dot;
     }
     b->pend_diss = D;
@@ -172,14 +174,25 @@ int boom_advance(bd_boom *b, int settle, char *err, size_t errlen)
     double dt = b->dt;
     int pin = b->sec[0].first;
     int held_angle = !b->def.luffing_cylinder.present;
+    double w_pin = b->w[pin];
     for (int i = 0; i < b->N; i++) {
         b->vx[i] += dt * b->fx[i] / b->m[i];
         b->vy[i] += dt * b->fy[i] / b->m[i];
         b->w[i] += dt * b->mz[i] / b->J[i];
     }
-    b->vx[pin] = b->vy[pin] = 0.0;
-    if (held_angle)
+    /* section 1's bottom node turns about the pivot, r from the pivot to
+     * it (zero without a pivot_offset): J_p w' = mz + r x f, J_p = J + m r²,
+     * v = w x r; held: w = theta' */
+    double rx = b->x[pin] - b->def.pivot[0], ry = b->y[pin] - b->def.pivot[1];
+    double r2 = rx * rx + ry * ry;
+    if (held_angle) {
         b->w[pin] = b->theta_dot;
+    } else if (r2 > 0.0) {
+        double Mp = b->mz[pin] + rx * b->fy[pin] - ry * b->fx[pin];
+        b->w[pin] = w_pin + dt * Mp / (b->J[pin] + b->m[pin] * r2);
+    }
+    b->vx[pin] = -b->w[pin] * ry;
+    b->vy[pin] = b->w[pin] * rx;
     /* the friction's work at the step's mean sliding speed (the stick
      * ramp's force reverses the speed within a step: booked at the
      * starting speed alone it was the balance's largest error) */
@@ -205,6 +218,13 @@ int boom_advance(bd_boom *b, int settle, char *err, size_t errlen)
     if (held_angle) {
         boom_kinematics(b, settle ? b->t : b->t + dt);
         b->phi[pin] = b->theta;
+    }
+    /* back onto the circle about the pivot (the Euler step leaves it by
+     * O(dt²)); the pin itself when there is no offset */
+    {
+        double c = cos(b->phi[pin]), sn = sin(b->phi[pin]);
+        b->x[pin] = b->def.pivot[0] + b->base_a * c - b->base_n * sn;
+        b->y[pin] = b->def.pivot[1] + b->base_a * sn + b->base_n * c;
     }
     boom_remap(b);
     b->steps++;

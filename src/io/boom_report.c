@@ -543,9 +543,9 @@ static int plot_shape(boom_rep *B, sec_rows rows[MAX_TIMES][BD_BOOM_MAX_SECTIONS
 {
     bd_rep *r = B->r;
     const bd_csv *h = &B->h;
-    /* each point of time j: X, Y as drawn, A its distance from the pivot
-     * along the rigid boom's axis (from the pivot, section 1's bottom end,
-     * towards the rigid boom's tip), D its distance off it (positive to
+    /* each point of time j: X, Y as drawn, A its distance from section
+     * 1's bottom end along the rigid boom's axis (towards the rigid boom's
+     * tip), D its distance off it (positive to
      * the upper side) */
     double *X[MAX_TIMES], *Y[MAX_TIMES], *A[MAX_TIMES], *D[MAX_TIMES], *axis[MAX_TIMES];
     size_t start[MAX_TIMES][BD_BOOM_MAX_SECTIONS], total[MAX_TIMES];
@@ -627,7 +627,7 @@ static int plot_shape(boom_rep *B, sec_rows rows[MAX_TIMES][BD_BOOM_MAX_SECTIONS
     a->ylabel = "Height y [m]";
     a->aspect = 1.0;
     bd_plot_axes *b = &f.panel[1];
-    b->xlabel = "Distance from the pivot along the rigid boom's axis [m]";
+    b->xlabel = "Distance from section 1's bottom end along the rigid boom's axis [m]";
     snprintf(yl, BD_REP_LABEL_LEN, "Deflection from the axis [%s]", mm ? "mm" : "m");
     b->ylabel = yl;
     b->include_zero = 1;
@@ -646,11 +646,11 @@ static int plot_shape(boom_rep *B, sec_rows rows[MAX_TIMES][BD_BOOM_MAX_SECTIONS
             a->series[s].width = 1.0;
         }
     }
-    if (isfinite(axis[0][0])) bd_plot_add_text(a, axis[0][0], axis[0][2], "pivot");
+    if (isfinite(axis[0][0])) bd_plot_add_text(a, axis[0][0], axis[0][2], "section 1's bottom");
     snprintf(cap, BD_REP_LABEL_LEN,
              "The boom's sections (beams.csv x_m, y_m) at the start, at the largest bending "
              "moment (dashed) and at the end%s. Top: in the plane, %s. Bottom: each point's "
-             "distance from the rigid boom's axis (from the pivot to the rigid boom's tip, "
+             "distance from the rigid boom's axis (from section 1's bottom end to the rigid boom's tip, "
              "history.csv tip_rigid.*), positive to the upper side, against its place along "
              "the axis.",
              per_section ? "; section 1 widest, the inner sections narrower" : "",

@@ -12,8 +12,9 @@
  * - a cubic stroke profile needs every one of its keys; a table's strokes
  *   are >= 0 and its stroke at t = 0 is `initial` (to 1e-9 m);
  * - tip_load needs its mass; luffing_cylinder needs base and attach, with
- *   attach's s in (0, length of section 1];
- * - added keys (boom-format.md allows more): luffing_cylinder.stiffness,
+ *   attach's s within section 1 (after the pivot's offset);
+ * - added keys (boom-format.md allows more): pivot_offset,
+ *   luffing_cylinder.stiffness,
  *   pads.damping_ratio and smoothing, telescopic_cylinder, ropes;
  * - the geometry the loader can judge: the stroke over the whole profile
  *   stays within [0, length_k - pads.width] for every outer section k
@@ -131,11 +132,14 @@ static void luffing_cylinder_post(bd_fields_ctx *c, const bd_fieldset *fs,
      * when it was given */
     if (c->map_errors || d->section_count < 1 || !(d->sections[0].length > 0.0))
         return;
-    if (!(lc->attach[0] > 0.0 && lc->attach[0] <= d->sections[0].length)) {
+    /* section 1 spans [-a, L - a] along its axis from the pivot, a the
+     * pivot's offset along it from the bottom end */
+    double lo = 0.0 - d->pivot_offset[0], hi = d->sections[0].length - d->pivot_offset[0];
+    if (!(lc->attach[0] > lo && lc->attach[0] <= hi)) {
         bd_fields_join(sub, path, "attach");
         bd_fields_err(c, bd_fields_mark_of(attach), sub,
-                      "expected s in (0, %g] (along section 1 from the pivot), got %g",
-                      d->sections[0].length, lc->attach[0]);
+                      "expected s in (%g, %g] (along section 1's axis from the pivot: where "
+                      "section 1 is), got %g", lo, hi, lc->attach[0]);
     }
 }
 
@@ -310,10 +314,11 @@ static const bd_field ropes_fields[] = {
 };
 FIELDSET(ropes_fs, ropes_fields, NULL);
 
-/* table order is processing order: the sections before the luffing
- * cylinder that is attached to section 1 */
+/* table order is processing order: the sections and the pivot's offset
+ * before the luffing cylinder that is attached to section 1 */
 static const bd_field boom_fields[] = {
     PAIR("pivot", bd_boom_def, pivot, 0, "a point [x, y]"),
+    PAIR("pivot_offset", bd_boom_def, pivot_offset, 0, "[along, across] m from section 1's bottom end"),
     FN_REQ("luffing_angle_deg", luffing_angle_fn),
     LIST("sections", bd_boom_def, sections, REQ, &section_list),
     MAP("luffing_cylinder", bd_boom_def, luffing_cylinder, 0, &luffing_cylinder_fs),

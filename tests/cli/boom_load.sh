@@ -56,6 +56,8 @@ case_bad bad_boom_table_start.yaml \
     "19:14: error: boom.stroke.profile: the table's stroke at t = 0 is 1.5 m, not the initial stroke 2 m"
 case_bad bad_boom_belt.yaml \
     "2:1: error: belt: a boom model has no belt, pulleys or profile"
+case_bad bad_boom_attach_offset.yaml \
+    "9:13: error: boom.luffing_cylinder.attach: expected s in (0.956, 10.956] (along section 1's axis from the pivot: where section 1 is), got 0.5"
 case_bad bad_boom_wrong_type.yaml \
     "10:64: error: boom.sections[1].bending_stiffness: expected a number > 0, got 'stiff'"
 

@@ -154,7 +154,7 @@ static void refusals(void)
             "m.yaml:8:22: error: boom.luffing_angle_deg: expected a number, got 'steep'");
     refused("attach: [7.25, -0.556]", "attach: [12, -0.556]",
             "m.yaml:11:13: error: boom.luffing_cylinder.attach: expected s in (0, 10] (along "
-            "section 1 from the pivot), got 12");
+            "section 1's axis from the pivot: where section 1 is), got 12");
     refused("attach: [7.25, -0.556]", "attach: 7.25",
             "m.yaml:11:13: error: boom.luffing_cylinder.attach: expected a point [s, n] of "
             "section 1, got 7.25");
