@@ -47,6 +47,9 @@ typedef struct boom_contact {
     int inner_sec, outer_sec;
     double h;                 /* m, spacing of the two pads */
     boom_where A, B;          /* where on each section, this step */
+    int surface_on_A;         /* 1: the pads (on B) slide on A's surface (the
+                                 outer contact), 0: the pads (on A) slide on
+                                 B's (the inner contact) */
     /* results of the last force evaluation */
     double normal;            /* N, sum of the pad forces */
     double friction;          /* N, on the inner section along its axis */

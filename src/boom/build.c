@@ -250,6 +250,8 @@ int bd_boom_create(const bd_boom_def *def, bd_boom **out, bd_diag *diag)
         ci->B = (boom_where){j, ou->first, 0.0};
         co->A = (boom_where){j + 1, in->first + in->per_seg, 0.0};
         co->B = (boom_where){j, ou->first + ou->n - 2, 1.0};
+        ci->surface_on_A = 0;
+        co->surface_on_A = 1;
     }
     /* the stable step: the highest frequency over the layouts the stroke
      * passes through (element lengths are extreme at its ends) */

@@ -4,7 +4,7 @@
  * k+1's bottom pads against section k's inside, at the point of section k
  * nearest to section k+1's bottom node) and the outer contact (section k's
  * top pads against section k+1's outside, at section k+1's outer contact
- * node). At each, two pads at +-h/2 across the axis, the upper one pressed
+ * node). Each is measured in the frame of the surface its pads slide on. At each, two pads at +-h/2 across the axis, the upper one pressed
  * when the inner axis moves up relative to the outer, each pad with its two
  * ends at +-w/2 along the axis (seed eq. 59: the resultants at the pad's
  * front and back ends), so a relative rotation loads one end more: the
@@ -64,7 +64,14 @@ static void one_contact(bd_boom *b, boom_contact *c, double *elastic, double *di
     double xa, ya, pa, vxa, vya, wa, xb, yb, pb, vxb, vyb, wb;
     boom_eval(b, &c->A, &xa, &ya, &pa, &vxa, &vya, &wa);
     boom_eval(b, &c->B, &xb, &yb, &pb, &vxb, &vyb, &wb);
-    double tx = cos(pb), ty = sin(pb), nx = -ty, ny = tx;
+    /* the frame of the surface the pads slide on, at the contact point
+     * (the point found by projection): with it the pad's compression is
+     * stationary as that point moves along the surface, so moving it
+     * (boom_remap, the projection) neither makes nor takes energy; with
+     * the pads' own frame at the outer contact each remap released
+     * F ds dphi (21 kJ over the seed's frictionless extension) */
+    double pf = c->surface_on_A ? pa : pb;
+    double tx = cos(pf), ty = sin(pf), nx = -ty, ny = tx;
     double d = (xa - xb) * nx + (ya - yb) * ny;
     double dd = (vxa - vxb) * nx + (vya - vyb) * ny;
     double dphi = pa - pb, dw = wa - wb;
@@ -164,7 +171,8 @@ double boom_pads_friction_correction(const bd_boom *b)
         double xa, ya, pa, vxa, vya, wa, xb, yb, pb, vxb, vyb, wb;
         boom_eval(b, &c->A, &xa, &ya, &pa, &vxa, &vya, &wa);
         boom_eval(b, &c->B, &xb, &yb, &pb, &vxb, &vyb, &wb);
-        double vs = (vxa - vxb) * cos(pb) + (vya - vyb) * sin(pb);
+        double pf = c->surface_on_A ? pa : pb;
+        double vs = (vxa - vxb) * cos(pf) + (vya - vyb) * sin(pf);
         for (int p = 0; p < 2; p++) {
             double sgn = p == 0 ? 1.0 : -1.0;
             double vf = vs - sgn * 0.5 * c->h * (wa - wb);
