@@ -4,8 +4,9 @@
  * k+1's bottom pads against section k's inside, at the point of section k
  * nearest to section k+1's bottom node) and the outer contact (section k's
  * top pads against section k+1's outside, at section k+1's outer contact
- * node). Each is measured in the frame of the surface its pads slide on. At each, two pads at +-h/2 across the axis, the upper one pressed
- * when the inner axis moves up relative to the outer, each pad with its two
+ * node), each measured in the frame of the surface its pads slide on. At
+ * each, two pads at +-h/2 across the axis, the upper one pressed when the
+ * inner axis moves up relative to the outer, each pad with its two
  * ends at +-w/2 along the axis (seed eq. 59: the resultants at the pad's
  * front and back ends), so a relative rotation loads one end more: the
  * pads carry a moment, as the seed's distributed contact does.

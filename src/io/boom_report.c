@@ -545,8 +545,7 @@ static int plot_shape(boom_rep *B, sec_rows rows[MAX_TIMES][BD_BOOM_MAX_SECTIONS
     const bd_csv *h = &B->h;
     /* each point of time j: X, Y as drawn, A its distance from section
      * 1's bottom end along the rigid boom's axis (towards the rigid boom's
-     * tip), D its distance off it (positive to
-     * the upper side) */
+     * tip), D its distance off it (positive to the upper side) */
     double *X[MAX_TIMES], *Y[MAX_TIMES], *A[MAX_TIMES], *D[MAX_TIMES], *axis[MAX_TIMES];
     size_t start[MAX_TIMES][BD_BOOM_MAX_SECTIONS], total[MAX_TIMES];
     double dmax = 0.0, lmax = 0.0;
@@ -650,9 +649,9 @@ static int plot_shape(boom_rep *B, sec_rows rows[MAX_TIMES][BD_BOOM_MAX_SECTIONS
     snprintf(cap, BD_REP_LABEL_LEN,
              "The boom's sections (beams.csv x_m, y_m) at the start, at the largest bending "
              "moment (dashed) and at the end%s. Top: in the plane, %s. Bottom: each point's "
-             "distance from the rigid boom's axis (from section 1's bottom end to the rigid boom's tip, "
-             "history.csv tip_rigid.*), positive to the upper side, against its place along "
-             "the axis.",
+             "distance from the rigid boom's axis (from section 1's bottom end to the rigid "
+             "boom's tip, history.csv tip_rigid.*), positive to the upper side, against its "
+             "place along the axis.",
              per_section ? "; section 1 widest, the inner sections narrower" : "",
              F > 1.0 ? "that distance exaggerated by the factor in the subtitle"
                      : "at true scale");

@@ -318,7 +318,8 @@ FIELDSET(ropes_fs, ropes_fields, NULL);
  * before the luffing cylinder that is attached to section 1 */
 static const bd_field boom_fields[] = {
     PAIR("pivot", bd_boom_def, pivot, 0, "a point [x, y]"),
-    PAIR("pivot_offset", bd_boom_def, pivot_offset, 0, "[along, across] m from section 1's bottom end"),
+    PAIR("pivot_offset", bd_boom_def, pivot_offset, 0,
+         "[along, across] m from section 1's bottom end"),
     FN_REQ("luffing_angle_deg", luffing_angle_fn),
     LIST("sections", bd_boom_def, sections, REQ, &section_list),
     MAP("luffing_cylinder", bd_boom_def, luffing_cylinder, 0, &luffing_cylinder_fs),
