@@ -51,6 +51,7 @@ typedef struct boom_contact {
                                  outer contact), 0: the pads (on A) slide on
                                  B's (the inner contact) */
     /* results of the last force evaluation */
+    double npad[2];           /* N, the upper and the lower pad */
     double normal;            /* N, sum of the pad forces */
     double friction;          /* N, on the inner section along its axis */
     double slide;             /* m/s, sliding speed of A relative to B */
@@ -148,6 +149,13 @@ double boom_inv_inertia(const bd_boom *b, const boom_where *at);
 /* move the inner sections' outer contact nodes to where their outer
  * neighbours' tops are, and every node of theirs through the material */
 void boom_remap(bd_boom *b);
+/* where an outer contact node may stand: at least a sixth of the section
+ * from either end. Nearer, its segment's elements would shrink with the
+ * overlap or the protrusion (to nothing when a boom retracts fully) and the
+ * stable step with the square of their length; the contact itself is
+ * always found by projection, so past the limit it floats between nodes
+ * as the inner contact does */
+double boom_key_clamp(const boom_section *S, double key_s);
 /* section k's key node to material coordinate key_s, its nodes remapped */
 void boom_move_key(bd_boom *b, int k, double key_s);
 

@@ -148,12 +148,18 @@ static double rigid_outer_contact(const bd_boom *b, int k)
     return b->sec[k - 1].L - sig;
 }
 
+double boom_key_clamp(const boom_section *S, double key_s)
+{
+    double lo = S->L / 6.0, hi = S->L - lo;
+    return key_s < lo ? lo : (key_s > hi ? hi : key_s);
+}
+
 void boom_place_rigid(bd_boom *b)
 {
     for (int k = 0; k < b->ns; k++) {
         boom_section *S = &b->sec[k];
         if (S->key == BOOM_KEY_OUTER)
-            S->key_s = rigid_outer_contact(b, k);
+            S->key_s = boom_key_clamp(S, rigid_outer_contact(b, k));
         else if (S->key == BOOM_KEY_ATTACH)
             S->key_s = b->attach_s;
         boom_distribute(b, k);
@@ -299,11 +305,7 @@ void boom_remap(bd_boom *b)
         int top = b->sec[k - 1].first + b->sec[k - 1].n - 1;
         boom_where at = {k, S->first + S->per_seg - 1, 1.0};
         boom_project(b, k, b->x[top], b->y[top], &at);
-        double key_s = boom_where_s(b, &at);
-        /* keep both segments longer than nothing: the loader and build
-         * checked the stroke leaves overlap */
-        double lo = 1e-3 * S->L, hi = S->L - lo;
-        key_s = key_s < lo ? lo : (key_s > hi ? hi : key_s);
+        double key_s = boom_key_clamp(S, boom_where_s(b, &at));
         if (key_s != S->key_s)
             boom_move_key(b, k, key_s);
     }

@@ -59,38 +59,60 @@ static double mu_of(const bd_boom_pads_def *p, double v)
     return p->mu_dynamic + (p->mu_static - p->mu_dynamic) * exp(-(av - vs) / vs);
 }
 
-static void one_contact(bd_boom *b, boom_contact *c, double *elastic, double *diss)
+/* the contact's two points now, in the frame of the surface its pads
+ * slide on (the point found by projection): with it the pad's compression
+ * is stationary as that point moves along the surface, so moving it
+ * (boom_remap, the projection) neither makes nor takes energy; with the
+ * pads' own frame at the outer contact each remap released F ds dphi (21
+ * kJ over the seed's frictionless extension) */
+typedef struct pad_state {
+    double tx, ty, nx, ny;    /* the surface's tangent and normal */
+    double d, dd;             /* A's offset from B along n, its rate */
+    double vs;                /* A's sliding speed on B along t */
+    double dphi, dw;          /* relative rotation, its rate */
+    double ima, imb;          /* 1 / effective masses of the points */
+} pad_state;
+
+static pad_state pad_state_of(const bd_boom *b, const boom_contact *c)
 {
-    const bd_boom_pads_def *pd = &b->def.pads;
     double xa, ya, pa, vxa, vya, wa, xb, yb, pb, vxb, vyb, wb;
     boom_eval(b, &c->A, &xa, &ya, &pa, &vxa, &vya, &wa);
     boom_eval(b, &c->B, &xb, &yb, &pb, &vxb, &vyb, &wb);
-    /* the frame of the surface the pads slide on, at the contact point
-     * (the point found by projection): with it the pad's compression is
-     * stationary as that point moves along the surface, so moving it
-     * (boom_remap, the projection) neither makes nor takes energy; with
-     * the pads' own frame at the outer contact each remap released
-     * F ds dphi (21 kJ over the seed's frictionless extension) */
+    pad_state q;
     double pf = c->surface_on_A ? pa : pb;
-    double tx = cos(pf), ty = sin(pf), nx = -ty, ny = tx;
-    double d = (xa - xb) * nx + (ya - yb) * ny;
-    double dd = (vxa - vxb) * nx + (vya - vyb) * ny;
-    double dphi = pa - pb, dw = wa - wb;
-    double ima = boom_inv_mass(b, &c->A), imb = boom_inv_mass(b, &c->B);
-    double m_light = 1.0 / (ima > imb ? ima : imb);
+    q.tx = cos(pf);
+    q.ty = sin(pf);
+    q.nx = -q.ty;
+    q.ny = q.tx;
+    q.d = (xa - xb) * q.nx + (ya - yb) * q.ny;
+    q.dd = (vxa - vxb) * q.nx + (vya - vyb) * q.ny;
+    q.vs = (vxa - vxb) * q.tx + (vya - vyb) * q.ty;
+    q.dphi = pa - pb;
+    q.dw = wa - wb;
+    q.ima = boom_inv_mass(b, &c->A);
+    q.imb = boom_inv_mass(b, &c->B);
+    return q;
+}
+
+/* the pads' normal forces: springs at the pad ends and their dashpots */
+static void contact_normal(bd_boom *b, boom_contact *c, double *elastic, double *diss)
+{
+    const bd_boom_pads_def *pd = &b->def.pads;
+    pad_state q = pad_state_of(b, c);
+    double m_light = 1.0 / (q.ima > q.imb ? q.ima : q.imb);
     double k_end = 0.5 * pd->stiffness;
     double c_end = 2.0 * pd->damping_ratio * sqrt(k_end * m_light);
     double hw = 0.5 * pd->width;
     double F = 0.0, M = 0.0;       /* on A along n, moment on A */
-    double Npad[2] = {0.0, 0.0};   /* upper, lower */
+    c->npad[0] = c->npad[1] = 0.0; /* upper, lower */
     for (int p = 0; p < 2; p++) {
         double sgn = p == 0 ? 1.0 : -1.0;
         for (int e = 0; e < 2; e++) {
             double xe = e == 0 ? -hw : hw;
-            double del = sgn * (d + dphi * xe) - b->def.gap;
+            double del = sgn * (q.d + q.dphi * xe) - b->def.gap;
             if (del <= 0.0)
                 continue;
-            double deld = sgn * (dd + dw * xe);
+            double deld = sgn * (q.dd + q.dw * xe);
             double fe = spring_stiffness(k_end, pd->smoothing, del) * del;
             double f = fe + c_end * deld;
             if (f < 0.0)
@@ -99,29 +121,41 @@ static void one_contact(bd_boom *b, boom_contact *c, double *elastic, double *di
             *diss += (f - fe) * deld;
             F -= sgn * f;
             M -= sgn * f * xe;
-            Npad[p] += f;
+            c->npad[p] += f;
         }
     }
-    double Ntot = Npad[0] + Npad[1];
-    /* friction along the outer axis at each pad's face, +-h/2 off the
-     * axis, where the sections' rotations add to the sliding: the face of
-     * pad p slides at vs - p (h/2)(wA - wB), and its force F_p t there
-     * gives A the moment -p (h/2) F_p; B takes the opposite of both */
-    double vs = (vxa - vxb) * tx + (vya - vyb) * ty;
+    boom_apply(b, &c->A, F * q.nx, F * q.ny, M);
+    boom_apply(b, &c->B, -F * q.nx, -F * q.ny, -M);
+    c->normal = c->npad[0] + c->npad[1];
+}
+
+/* friction along the surface at each pad's face, +-h/2 off the axis, where
+ * the sections' rotations add to the sliding: the face of pad p slides at
+ * vs - p (h/2)(wA - wB), and its force F_p t there gives A the moment
+ * -p (h/2) F_p; B takes the opposite of both. `share`: the loaded faces
+ * whose points touch the same nodes, this one's included; each face takes
+ * 1/share of the nodes' inertia, so faces sharing a node cannot together
+ * reverse it within a step (alone, each would stop it: together they
+ * overshot, a period-2 chatter where every section's top met at a fully
+ * retracted boom) */
+static void contact_friction(bd_boom *b, boom_contact *c, int share, double *diss)
+{
+    const bd_boom_pads_def *pd = &b->def.pads;
+    pad_state q = pad_state_of(b, c);
     double hh = 0.5 * c->h;
     double ija = boom_inv_inertia(b, &c->A), ijb = boom_inv_inertia(b, &c->B);
-    double meff = 1.0 / (ima + imb + hh * hh * (ija + ijb));
+    double meff = 1.0 / (q.ima + q.imb + hh * hh * (ija + ijb)) / share;
     double Ff = 0.0, Mf = 0.0;
     for (int p = 0; p < 2; p++) {
         c->face_force[p] = 0.0;
-        if (!(Npad[p] > 0.0))
+        if (!(c->npad[p] > 0.0))
             continue;
         double sgn = p == 0 ? 1.0 : -1.0;
-        double vf = vs - sgn * hh * dw;
+        double vf = q.vs - sgn * hh * q.dw;
         double Fp;
         if (fabs(vf) <= pd->switch_speed) {
             /* the stick ramp, implicit on the face's effective mass */
-            double cf = pd->mu_static * Npad[p] / pd->switch_speed;
+            double cf = pd->mu_static * c->npad[p] / pd->switch_speed;
             Fp = -cf * vf / (1.0 + cf * b->dt / meff);
         } else {
             /* sliding, but never more than stops the face within the
@@ -129,7 +163,7 @@ static void one_contact(bd_boom *b, boom_contact *c, double *elastic, double *di
              * chatter (at a rotation-dominated face, period 2 at the
              * dynamic force's bound, seen settling a 25 t boom at 8 m) */
             double Fstop = meff * fabs(vf) / b->dt;
-            Fp = -(vf > 0.0 ? 1.0 : -1.0) * fmin(mu_of(pd, vf) * Npad[p], Fstop);
+            Fp = -(vf > 0.0 ? 1.0 : -1.0) * fmin(mu_of(pd, vf) * c->npad[p], Fstop);
         }
         *diss += -Fp * vf;
         c->face_force[p] = Fp;
@@ -137,12 +171,26 @@ static void one_contact(bd_boom *b, boom_contact *c, double *elastic, double *di
         Ff += Fp;
         Mf -= sgn * hh * Fp;
     }
-    double fxa = F * nx + Ff * tx, fya = F * ny + Ff * ty;
-    boom_apply(b, &c->A, fxa, fya, M + Mf);
-    boom_apply(b, &c->B, -fxa, -fya, -(M + Mf));
-    c->normal = Ntot;
+    boom_apply(b, &c->A, Ff * q.tx, Ff * q.ty, Mf);
+    boom_apply(b, &c->B, -Ff * q.tx, -Ff * q.ty, -Mf);
     c->friction = Ff;
-    c->slide = vs;
+    c->slide = q.vs;
+}
+
+static int loaded_faces(const boom_contact *c)
+{
+    return (c->npad[0] > 0.0) + (c->npad[1] > 0.0);
+}
+
+static int share_nodes(const boom_contact *c, const boom_contact *o)
+{
+    int n[4] = {c->A.a, c->A.a + 1, c->B.a, c->B.a + 1};
+    int m[4] = {o->A.a, o->A.a + 1, o->B.a, o->B.a + 1};
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++)
+            if (n[i] == m[j])
+                return 1;
+    return 0;
 }
 
 void boom_pads(bd_boom *b, double *elastic, double *diss_power)
@@ -153,10 +201,25 @@ void boom_pads(bd_boom *b, double *elastic, double *diss_power)
         /* inner contact: section j+1's bottom node in section j */
         int bot = b->sec[j + 1].first;
         boom_project(b, j, b->x[bot], b->y[bot], &ci->B);
-        one_contact(b, ci, &U, &D);
-        /* outer contact: section j's top node on section j+1's key node
-         * (boom_remap put the key node where the top is) */
-        one_contact(b, co, &U, &D);
+        contact_normal(b, ci, &U, &D);
+        /* outer contact: section j's top node on section j+1, at the
+         * point nearest to it: the key node where boom_remap could put
+         * it there, else between nodes (boom_key_clamp) */
+        int top = b->sec[j].first + b->sec[j].n - 1;
+        boom_project(b, j + 1, b->x[top], b->y[top], &co->A);
+        contact_normal(b, co, &U, &D);
+    }
+    for (int j = 0; j < b->nc; j++) {
+        boom_contact *c = &b->c[j];
+        c->face_force[0] = c->face_force[1] = 0.0;
+        c->friction = 0.0;
+        if (loaded_faces(c) == 0)
+            continue;
+        int share = 0;
+        for (int o = 0; o < b->nc; o++)
+            if (o == j || share_nodes(c, &b->c[o]))
+                share += loaded_faces(&b->c[o]);
+        contact_friction(b, c, share, &D);
     }
     *elastic = U;
     *diss_power = D;
@@ -169,14 +232,10 @@ double boom_pads_friction_correction(const bd_boom *b)
         const boom_contact *c = &b->c[j];
         if (c->face_force[0] == 0.0 && c->face_force[1] == 0.0)
             continue;
-        double xa, ya, pa, vxa, vya, wa, xb, yb, pb, vxb, vyb, wb;
-        boom_eval(b, &c->A, &xa, &ya, &pa, &vxa, &vya, &wa);
-        boom_eval(b, &c->B, &xb, &yb, &pb, &vxb, &vyb, &wb);
-        double pf = c->surface_on_A ? pa : pb;
-        double vs = (vxa - vxb) * cos(pf) + (vya - vyb) * sin(pf);
+        pad_state q = pad_state_of(b, c);
         for (int p = 0; p < 2; p++) {
             double sgn = p == 0 ? 1.0 : -1.0;
-            double vf = vs - sgn * 0.5 * c->h * (wa - wb);
+            double vf = q.vs - sgn * 0.5 * c->h * q.dw;
             P += -c->face_force[p] * 0.5 * (vf - c->face_speed[p]);
         }
     }
