@@ -25,6 +25,16 @@ static int check_user_step(bd_sim *sim, bd_diag *diag);
 int bd_time_step_choose(bd_sim *sim, bd_diag *diag)
 {
     sim->own->dt_limit = sim->own->belt->stable_step(sim, &sim->own->limit_kind);
+    /* a property far out of any physical range (a belt 1e308 m thick) can
+     * overflow the highest frequency: there is no step to take */
+    if (!(sim->own->dt_limit > 0.0 && isfinite(sim->own->dt_limit))) {
+        const bd_model_def *def = sim->model->def;
+        bd_diag_error(diag, def->source, def->belt.mark,
+                      "belt: no stable time step: the %s gives no finite highest "
+                      "frequency; a property of the belt is out of any physical range",
+                      bd_time_step_limit_name(sim->own->limit_kind));
+        return 1;
+    }
     return check_user_step(sim, diag);
 }
 

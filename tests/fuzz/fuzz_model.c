@@ -2,7 +2,9 @@
  * model file. They go through the public loader (bd_model_load_string) and,
  * when the model is valid, through what `beltdyn check` does (bd_sim_create,
  * bd_sim_describe) and what `beltdyn static` does (bd_static_compute, the
- * table and the JSON), without running the transient. Everything is freed:
+ * table and the JSON), without running the transient. The same bytes go
+ * through the boom's loader (bd_boom_load_string, issue 13) and, when they
+ * are a valid boom, through its `check` (bd_boom_create, bd_boom_describe). Everything is freed:
  * LeakSanitizer reports anything left.
  *
  * Built by -DBD_FUZZ=ON with clang (tests/fuzz/CMakeLists.txt); run by
@@ -13,6 +15,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "beltdyn/boom.h"
 #include "beltdyn/model.h"
 #include "beltdyn/sim.h"
 #include "beltdyn/standards.h"
@@ -99,8 +102,27 @@ static void static_design(const bd_model_def *def)
     bd_diag_free(&diag);
 }
 
+/* a boom model: `beltdyn check` on it (its size is bounded by the loader:
+ * at most BD_BOOM_MAX_SECTIONS sections of at most 2 x 200 elements) */
+static void boom(const uint8_t *data, size_t size)
+{
+    bd_boom_def def;
+    bd_diag diag;
+    bd_diag_init(&diag);
+    if (bd_boom_load_string((const char *)data, size, "fuzz.yaml", &def, &diag) == 0) {
+        bd_boom *b = NULL;
+        if (bd_boom_create(&def, &b, &diag) == 0) {
+            bd_boom_describe(b, sink());
+            bd_boom_free(b);
+        }
+        bd_boom_def_free(&def);
+    }
+    bd_diag_free(&diag);
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
+    boom(data, size);
     bd_model_def def;
     bd_diag diag;
     bd_diag_init(&diag);
