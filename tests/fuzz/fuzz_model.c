@@ -8,7 +8,7 @@
  * LeakSanitizer reports anything left.
  *
  * Built by -DBD_FUZZ=ON with clang (tests/fuzz/CMakeLists.txt); run by
- * scripts/fuzz (docs/testing.md). */
+ * scripts/fuzz (README.md, Fuzzing). */
 #include <math.h>
 #include <stddef.h>
 #include <stdint.h>

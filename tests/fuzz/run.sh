@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Fuzz the model loader and `check` (fuzz_model, built by -DBD_FUZZ=ON) for
+# Fuzz the model loaders and `check` (fuzz_model, built by -DBD_FUZZ=ON) for
 # SECONDS over a copy of the committed corpus tests/fuzz/corpus, which is
 # never written. Fails on any crash, hang (> 10 s an input), leak, sanitizer
 # report or out-of-memory; the input that did it is kept and named.
