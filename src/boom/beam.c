@@ -6,9 +6,11 @@
  * zero. In that frame the element is linear: axial force
  * N = EA (l - l0)/l0, end moments Ma = EI/l0 (4 ta + 2 tb),
  * Mb = EI/l0 (2 ta + 4 tb), ta and tb the nodes' cross-section angles
- * against the chord. Their virtual work N dl + Ma dta + Mb dtb with
- * dl = e.(drb - dra) and dta = dphia - n.(drb - dra)/l gives the nodal
- * forces. l0 is the element's material length s_b - s_a, which changes as
+ * against the chord (the two-node Euler-Bernoulli element's end moments in
+ * its corotated frame: M. A. Crisfield, Non-linear Finite Element Analysis
+ * of Solids and Structures, vol. 1, Wiley 1991, ch. 7). Their virtual
+ * work N dl + Ma dta + Mb dtb with dl = e.(drb - dra) and
+ * dta = dphia - n.(drb - dra)/l gives the nodal forces. l0 is the element's material length s_b - s_a, which changes as
  * the spatial nodes move through the material.
  *
  * Damping: Kelvin-Voigt on the material strain rates, beta times the

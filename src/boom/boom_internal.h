@@ -53,6 +53,8 @@ typedef struct boom_contact {
     /* results of the last force evaluation */
     double npad[2];           /* N, the upper and the lower pad */
     double normal;            /* N, sum of the pad forces */
+    double offset;            /* m, the inner axis off the outer along the
+                                 surface's normal */
     double friction;          /* N, on the inner section along its axis */
     double slide;             /* m/s, sliding speed of A relative to B */
     double face_force[2];     /* N, friction of the upper and lower pad on A */

@@ -7,7 +7,9 @@
 #include <string.h>
 
 #include "base/constants.h"
+#include "laws/stable_step.h"
 #include "model/fields.h"
+#include "sim/timestep.h"
 
 /* state arrays: x y phi vx vy w s m J fx fy mz eN eMa eMb eV and the
  * seven remap scratch arrays */
@@ -283,7 +285,7 @@ int bd_boom_create(const bd_boom_def *def, bd_boom **out, bd_diag *diag)
     b->f1_hz = w1 / BD_TWO_PI;
     b->alpha = 2.0 * d->damping_ratio * w1;
     double zeta_hi = zeta_top + d->pads.damping_ratio;
-    double dt_stable = 0.8 * 2.0 / b->omega_max * (sqrt(1.0 + zeta_hi * zeta_hi) - zeta_hi);
+    double dt_stable = BD_TIME_STEP_SAFETY * bd_central_difference_limit(b->omega_max, zeta_hi);
     b->dt = dt_stable;
     if (d->simulation.time_step > 0.0) {
         if (d->simulation.time_step > dt_stable)

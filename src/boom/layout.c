@@ -144,7 +144,8 @@ void boom_masses(bd_boom *b)
  * section k-1's top stands, in section k's material */
 static double rigid_outer_contact(const bd_boom *b, int k)
 {
-    double sig = boom_rigid_offset(b, k, b->stroke_ref) - boom_rigid_offset(b, k - 1, b->stroke_ref);
+    double sig = boom_rigid_offset(b, k, b->stroke_ref)
+               - boom_rigid_offset(b, k - 1, b->stroke_ref);
     return b->sec[k - 1].L - sig;
 }
 

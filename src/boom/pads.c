@@ -18,9 +18,13 @@
  * seed's contact multipliers with auxiliary equations (§6-§8): the same
  * pad law, without the extra algebraic unknowns; docs/boom.md says why.
  *
- * Friction along the axis: mu rises linearly to mu_static at the switch
- * speed (the regularized stick), then falls to mu_dynamic
- * (mu = mu_d + (mu_s - mu_d) exp(-(|v| - v_s)/v_s)), at each pad's face.
+ * Friction along the axis: the seed's f = mu sign(s') f_n (§8, after eq.
+ * 65) with the static coefficient below its threshold speed and the
+ * dynamic one above (§9: mu_a, mu_r, v_eps). Regularized here (this code's
+ * choice, the seed gives no curve between them): mu rises linearly to
+ * mu_static at the switch speed (the regularized stick), then falls to
+ * mu_dynamic (mu = mu_d + (mu_s - mu_d) exp(-(|v| - v_s)/v_s)), at each
+ * pad's face.
  * The stick ramp is a stiff dashpot, integrated implicitly on the face's
  * effective mass (the two points' masses and, through the face's offset
  * h/2, their rotary inertias) so it stays stable at any normal force; the
@@ -95,10 +99,11 @@ static pad_state pad_state_of(const bd_boom *b, const boom_contact *c)
 }
 
 /* the pads' normal forces: springs at the pad ends and their dashpots */
-static void contact_normal(bd_boom *b, boom_contact *c, double *elastic, double *diss)
+static void contact_normal(bd_boom *b, boom_contact *c, const pad_state *qp, double *elastic,
+                           double *diss)
 {
     const bd_boom_pads_def *pd = &b->def.pads;
-    pad_state q = pad_state_of(b, c);
+    pad_state q = *qp;
     double m_light = 1.0 / (q.ima > q.imb ? q.ima : q.imb);
     double k_end = 0.5 * pd->stiffness;
     double c_end = 2.0 * pd->damping_ratio * sqrt(k_end * m_light);
@@ -127,6 +132,7 @@ static void contact_normal(bd_boom *b, boom_contact *c, double *elastic, double 
     boom_apply(b, &c->A, F * q.nx, F * q.ny, M);
     boom_apply(b, &c->B, -F * q.nx, -F * q.ny, -M);
     c->normal = c->npad[0] + c->npad[1];
+    c->offset = q.d;
 }
 
 /* friction along the surface at each pad's face, +-h/2 off the axis, where
@@ -138,10 +144,11 @@ static void contact_normal(bd_boom *b, boom_contact *c, double *elastic, double 
  * reverse it within a step (alone, each would stop it: together they
  * overshot, a period-2 chatter where every section's top met at a fully
  * retracted boom) */
-static void contact_friction(bd_boom *b, boom_contact *c, int share, double *diss)
+static void contact_friction(bd_boom *b, boom_contact *c, const pad_state *qp, int share,
+                             double *diss)
 {
     const bd_boom_pads_def *pd = &b->def.pads;
-    pad_state q = pad_state_of(b, c);
+    pad_state q = *qp;
     double hh = 0.5 * c->h;
     double ija = boom_inv_inertia(b, &c->A), ijb = boom_inv_inertia(b, &c->B);
     double meff = 1.0 / (q.ima + q.imb + hh * hh * (ija + ijb)) / share;
@@ -196,18 +203,22 @@ static int share_nodes(const boom_contact *c, const boom_contact *o)
 void boom_pads(bd_boom *b, double *elastic, double *diss_power)
 {
     double U = 0.0, D = 0.0;
+    /* each contact's state once, for both passes */
+    pad_state q[2 * BD_BOOM_MAX_SECTIONS];
     for (int j = 0; j + 1 < b->ns; j++) {
         boom_contact *ci = &b->c[2 * j], *co = &b->c[2 * j + 1];
         /* inner contact: section j+1's bottom node in section j */
         int bot = b->sec[j + 1].first;
         boom_project(b, j, b->x[bot], b->y[bot], &ci->B);
-        contact_normal(b, ci, &U, &D);
+        q[2 * j] = pad_state_of(b, ci);
+        contact_normal(b, ci, &q[2 * j], &U, &D);
         /* outer contact: section j's top node on section j+1, at the
          * point nearest to it: the key node where boom_remap could put
          * it there, else between nodes (boom_key_clamp) */
         int top = b->sec[j].first + b->sec[j].n - 1;
         boom_project(b, j + 1, b->x[top], b->y[top], &co->A);
-        contact_normal(b, co, &U, &D);
+        q[2 * j + 1] = pad_state_of(b, co);
+        contact_normal(b, co, &q[2 * j + 1], &U, &D);
     }
     for (int j = 0; j < b->nc; j++) {
         boom_contact *c = &b->c[j];
@@ -219,7 +230,7 @@ void boom_pads(bd_boom *b, double *elastic, double *diss_power)
         for (int o = 0; o < b->nc; o++)
             if (o == j || share_nodes(c, &b->c[o]))
                 share += loaded_faces(&b->c[o]);
-        contact_friction(b, c, share, &D);
+        contact_friction(b, c, &q[j], share, &D);
     }
     *elastic = U;
     *diss_power = D;

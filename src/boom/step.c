@@ -26,14 +26,6 @@ void boom_kinematics(bd_boom *b, double t)
                  / (t > h ? 2.0 * h : h + t);
 }
 
-static int section_of(const bd_boom *b, int i)
-{
-    int k = 0;
-    while (k + 1 < b->ns && i >= b->sec[k + 1].first)
-        k++;
-    return k;
-}
-
 void boom_forces(bd_boom *b, double *elastic, double *diss_power, double *in_power)
 {
     int N = b->N;
@@ -109,32 +101,34 @@ static double gravity_energy(const bd_boom *b)
  * through: where and why into err; 1 = out of bounds */
 static int out_of_bounds(const bd_boom *b, char *err, size_t errlen)
 {
-    for (int i = 0; i < b->N; i++) {
-        int k = section_of(b, i);
-        if (!isfinite(b->x[i]) || !isfinite(b->y[i]) || !isfinite(b->vx[i])
-            || !isfinite(b->vy[i]) || !isfinite(b->phi[i])) {
-            snprintf(err, errlen, "at t = %.4f s the state of section %d at s = %.2f m is not "
-                     "finite: the run diverged (time step %.3g s)", b->t, k + 1, b->s[i], b->dt);
-            return 1;
-        }
-        if (i + 1 < b->sec[k].first + b->sec[k].n) {
-            double l = hypot(b->x[i + 1] - b->x[i], b->y[i + 1] - b->y[i]);
-            double l0 = b->s[i + 1] - b->s[i];
-            if (l < 0.5 * l0 || l > 1.5 * l0) {
-                snprintf(err, errlen, "at t = %.4f s section %d between s = %.2f and %.2f m is "
-                         "%s to %.0f %% of its length: the run diverged (time step %.3g s)",
-                         b->t, k + 1, b->s[i], b->s[i + 1], l < l0 ? "crushed" : "stretched",
-                         100.0 * l / l0, b->dt);
+    for (int k = 0; k < b->ns; k++) {
+        int last = b->sec[k].first + b->sec[k].n - 1;
+        for (int i = b->sec[k].first; i <= last; i++) {
+            if (!isfinite(b->x[i]) || !isfinite(b->y[i]) || !isfinite(b->vx[i])
+                || !isfinite(b->vy[i]) || !isfinite(b->phi[i])) {
+                snprintf(err, errlen, "at t = %.4f s the state of section %d at s = %.2f m is "
+                         "not finite: the run diverged (time step %.3g s)", b->t, k + 1, b->s[i],
+                         b->dt);
                 return 1;
+            }
+            if (i < last) {
+                double l = hypot(b->x[i + 1] - b->x[i], b->y[i + 1] - b->y[i]);
+                double l0 = b->s[i + 1] - b->s[i];
+                if (l < 0.5 * l0 || l > 1.5 * l0) {
+                    snprintf(err, errlen, "at t = %.4f s section %d between s = %.2f and %.2f m "
+                             "is %s to %.0f %% of its length: the run diverged (time step %.3g "
+                             "s)",
+                             b->t, k + 1, b->s[i], b->s[i + 1], l < l0 ? "crushed" : "stretched",
+                             100.0 * l / l0, b->dt);
+                    return 1;
+                }
             }
         }
     }
+    /* the pads' offsets as their forces last found them (boom_pads) */
     for (int j = 0; j < b->nc; j++) {
         const boom_contact *c = &b->c[j];
-        double xa, ya, pa, vxa, vya, wa, xb, yb, pb, vxb, vyb, wb;
-        boom_eval(b, &c->A, &xa, &ya, &pa, &vxa, &vya, &wa);
-        boom_eval(b, &c->B, &xb, &yb, &pb, &vxb, &vyb, &wb);
-        double d = -(xa - xb) * sin(pb) + (ya - yb) * cos(pb);
+        double d = c->offset;
         if (fabs(d) > b->def.gap + 0.25 * c->h) {
             snprintf(err, errlen, "at t = %.4f s section %d's %s pads are %.0f mm across the "
                      "axis of section %d (clearance %.0f mm): the pads let go or the run "
