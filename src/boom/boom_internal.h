@@ -20,6 +20,8 @@
 #ifndef BD_BOOM_INTERNAL_H
 #define BD_BOOM_INTERNAL_H
 
+#include <signal.h>
+
 #include "beltdyn/boom.h"
 
 enum { BOOM_KEY_NONE = 0, BOOM_KEY_ATTACH, BOOM_KEY_OUTER };
@@ -192,6 +194,12 @@ int boom_step(bd_boom *b, int settle, char *err, size_t errlen);
  * (what an output row shows), then the advance by dt */
 void boom_evaluate(bd_boom *b);
 int boom_advance(bd_boom *b, int settle, char *err, size_t errlen);
+/* settle at t = 0 (time held, the first bending mode critically damped)
+ * until no node moves faster than 1e-5 m/s over 2000 steps: 0 settled,
+ * 1 not within max_steps (err has the warning), -1 diverged (err), 2
+ * interrupted (*interrupted set) */
+int boom_settle(bd_boom *b, long max_steps, volatile sig_atomic_t *interrupted, char *err,
+                size_t errlen);
 /* rope statics: the telescopic cylinder's force at rest at t = 0, N */
 double boom_static_cylinder_force(const bd_boom *b);
 /* rigid statics of the luffing at time 0's angle and the given stroke:

@@ -11,8 +11,11 @@
 #include "boom/boom_internal.h"
 
 #include <math.h>
+#include <signal.h>
 #include <stdio.h>
 #include <string.h>
+
+#include "base/constants.h"
 
 void boom_kinematics(bd_boom *b, double t)
 {
@@ -234,4 +237,41 @@ int boom_step(bd_boom *b, int settle, char *err, size_t errlen)
 {
     boom_evaluate(b);
     return boom_advance(b, settle, err, errlen);
+}
+
+int boom_settle(bd_boom *b, long max_steps, volatile sig_atomic_t *interrupted, char *err,
+                size_t errlen)
+{
+    const long window = 2000;
+    double vmax = 0.0;
+    /* the first bending mode critically damped (on the velocity: the
+     * rigid boom is at rest at t = 0). Kinetic damping (velocities zeroed
+     * at every peak of kinetic energy) was tried and stalls here: the
+     * pads' and the rod's fast modes peak every few steps and the reset
+     * kills the slow sag before it gets anywhere */
+    double alpha = b->alpha;
+    b->alpha = fmax(alpha, 2.0 * BD_TWO_PI * b->f1_hz);
+    int rc = 1;
+    long n = 1;
+    for (; n <= max_steps && rc == 1; n++) {
+        if (boom_step(b, 1, err, errlen)) {
+            rc = -1;
+            break;
+        }
+        for (int i = 0; i < b->N; i++)
+            vmax = fmax(vmax, hypot(b->vx[i], b->vy[i]));
+        if (n % window == 0) {
+            if (vmax < 1e-5)
+                rc = 0;
+            vmax = 0.0;
+            if (interrupted && *interrupted)
+                rc = 2;
+        }
+    }
+    b->alpha = alpha;
+    b->settle_steps = n - 1;
+    if (rc == 1)
+        snprintf(err, errlen, "the boom did not come to rest under gravity within %ld steps; "
+                 "the run starts from where it stood", max_steps);
+    return rc;
 }

@@ -13,7 +13,6 @@
 #include <string.h>
 
 #include "base/clock.h"
-#include "base/constants.h"
 #include "base/json_util.h"
 #include "io/outputs.h"
 
@@ -167,46 +166,6 @@ static int write_summary(const bd_boom *b, boom_out *o, const char *dir, double 
     return out_finish(o, F_SUMMARY) || bad;
 }
 
-/* settle at t = 0 (time held, strong damping) until no node moves faster
- * than 1e-5 m/s over 2000 steps; 0 settled, 1 not within the limit (err has the
- * warning), -1 diverged (err) */
-static int settle(bd_boom *b, long max_steps, const bd_run_options *opt, char *err,
-                  size_t errlen)
-{
-    const long window = 2000;
-    double vmax = 0.0;
-    /* the first bending mode critically damped (on the velocity: the
-     * rigid boom is at rest at t = 0). Kinetic damping (velocities zeroed
-     * at every peak of kinetic energy) was tried and stalls here: the
-     * pads' and the rod's fast modes peak every few steps and the reset
-     * kills the slow sag before it gets anywhere */
-    double alpha = b->alpha;
-    b->alpha = fmax(alpha, 2.0 * BD_TWO_PI * b->f1_hz);
-    int rc = 1;
-    long n = 1;
-    for (; n <= max_steps && rc == 1; n++) {
-        if (boom_step(b, 1, err, errlen)) {
-            rc = -1;
-            break;
-        }
-        for (int i = 0; i < b->N; i++)
-            vmax = fmax(vmax, hypot(b->vx[i], b->vy[i]));
-        if (n % window == 0) {
-            if (vmax < 1e-5)
-                rc = 0;
-            vmax = 0.0;
-            if (opt && opt->interrupted && *opt->interrupted)
-                rc = 2;
-        }
-    }
-    b->alpha = alpha;
-    b->settle_steps = n - 1;
-    if (rc == 1)
-        snprintf(err, errlen, "the boom did not come to rest under gravity within %ld steps; "
-                 "the run starts from where it stood", max_steps);
-    return rc;
-}
-
 int bd_boom_run(bd_boom *b, const bd_run_options *opt, char *err, size_t errlen)
 {
     const bd_boom_def *d = &b->def;
@@ -231,7 +190,7 @@ int bd_boom_run(bd_boom *b, const bd_run_options *opt, char *err, size_t errlen)
     char warning[512] = "";
     int rc = BD_RUN_OK;
     long max_settle = opt && opt->stabilize_max_steps > 0 ? opt->stabilize_max_steps : 2000000;
-    int s = settle(b, max_settle, opt, err, errlen);
+    int s = boom_settle(b, max_settle, opt ? opt->interrupted : NULL, err, errlen);
     if (s == 1) {
         snprintf(warning, sizeof warning, "%s", err);
         if (opt && opt->message)
