@@ -25,7 +25,7 @@
 static const size_t STATE_DOUBLES[] = {
     offsetof(bd_mn, w),      offsetof(bd_mn, dX),
     offsetof(bd_mn, len),    offsetof(bd_mn, cos_e),  offsetof(bd_mn, sin_e),
-    offsetof(bd_mn, td),     offsetof(bd_mn, f_grav), offsetof(bd_mn, f_norm),
+    offsetof(bd_mn, td),     offsetof(bd_mn, tdw),    offsetof(bd_mn, f_grav), offsetof(bd_mn, f_norm),
     offsetof(bd_mn, normal), offsetof(bd_mn, vnew),   offsetof(bd_mn, rhs),
     offsetof(bd_mn, p0),     offsetof(bd_mn, qa),     offsetof(bd_mn, qb),
     offsetof(bd_mn, cp),     offsetof(bd_mn, fr),     offsetof(bd_mn, ca),

@@ -6,7 +6,9 @@
  * l_e its length in space (span: from the chord and the transverse
  * displacements; arc: R·Δθ), the dashpot acting on the material rate of
  * stretch ∂v/∂X (the belt speed relative to the nodes plus the mesh's own
- * rate where a takeup carriage moves it).
+ * rate where a takeup carriage moves it). Across a span the dashpot pulls
+ * with the rate at which the transverse motion stretches the element
+ * instead (elements(), below).
  *
  * Node i, along the path (seed 003 §3 eqs 3–4: the material time
  * derivative at a spatial point, ∂/∂t = d/dt − ṡ·∂/∂s, makes the
@@ -45,7 +47,7 @@ static void elements(bd_sim *sim)
     const bd_mn_model *mm = bd_mn_model_of(sim);
     bd_mn *mn = bd_mn_of(sim);
     const int n = sim->model->n;
-    const double EA = sim->model->EA, *v = sim->vx;
+    const double EA = sim->model->EA, *v = sim->vx, *wd = sim->vy;
     for (int e = 0; e < n; e++) {
         int j = bd_node_next(e, n);
         double rate = v[j] - v[e];
@@ -60,6 +62,10 @@ static void elements(bd_sim *sim)
         double td = mm->c[e] * rate;
         mn->td[e] = td;
         sim->tension[e] = EA * (l / mn->dX[e] - 1.0) + td;
+        /* the transverse part of the length's rate, ∂l/∂w·∂w/∂t of both
+         * ends (the pull across below is −T·∂l/∂w), and its own dashpot */
+        double ke = mm->kw[e] * cs;
+        mn->tdw[e] = mm->c[e] * ((sn - ke) * wd[j] - (sn + ke) * wd[e]);
     }
 }
 
@@ -164,6 +170,7 @@ void bd_mn_forces(bd_sim *sim)
     convective(sim, to_a, to_z, diff);
 
     const double *v = sim->vx, *wd = sim->vy, *w = mn->w, *T = sim->tension, *td = mn->td;
+    const double *tdw = mn->tdw;
     for (int i = 0; i < n; i++) {
         int b = bd_node_prev(i, n), j = bd_node_next(i, n);
         double vi = v[i];
@@ -200,10 +207,14 @@ void bd_mn_forces(bd_sim *sim)
              * compared in D. Pitcher, "Calculation of correct radii for
              * vertical curves in troughed belt conveyors", IMHC B17-16) */
             double ki = mm->kw[i] * mn->cos_e[i], kb = mm->kw[b] * mn->cos_e[b];
-            G = T[i] * (mn->sin_e[i] + ki) - T[b] * (mn->sin_e[b] - kb) + mn->f_norm[i] + fb[i]
+            /* across, the dashpot pulls with the transverse stretching's
+             * rate alone, not the along-path one: its power is then
+             * −c·(∂l/∂w·ẇ)² ≤ 0. With the whole dashpot tension the pull
+             * did work c·Δv·(∂l/∂w·ẇ), of either sign (generated seed 1060:
+             * the dissipated energy fell at a start) */
+            Gn = tdw[i] * (mn->sin_e[i] + ki) - tdw[b] * (mn->sin_e[b] - kb);
+            G = Ti * (mn->sin_e[i] + ki) - Tb * (mn->sin_e[b] - kb) + Gn + mn->f_norm[i] + fb[i]
               - m * vi * vi * wss - 2.0 * m * vi * (wd[j] - wd[b]) / (la + lb);
-            /* the dashpots' share of the pull across is not conservative */
-            Gn = td[i] * (mn->sin_e[i] + ki) - td[b] * (mn->sin_e[b] - kb);
             mn->normal[i] = 0.0;
             if (mm->kind[i] == BD_MN_IDLER) {
                 /* rests on its idler when it would otherwise end the step

@@ -90,6 +90,8 @@ typedef struct bd_mn {
     double *len;              /* [n] step (forces): m, element length in space */
     double *cos_e, *sin_e;    /* [n] step (forces): its direction in its span */
     double *td;               /* [n] step (forces): N, the dashpot's part */
+    double *tdw;              /* [n] step (forces): N, the dashpot on the
+                                 span's transverse stretching (forces.c) */
     double *f_grav;           /* [n] N, weight along the path (material phase) */
     double *f_norm;           /* [n] N, weight along the normal (material phase) */
     double *normal;           /* [n] step (forces): N, pulley or idler support */
