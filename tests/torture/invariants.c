@@ -49,6 +49,21 @@ static double motor_speed(const bd_running_law *law, const bd_model_def *def)
     return v;
 }
 
+/* the speed the model's drives aim at: a speed drive's set speed, the
+ * motors' speed at the law's force, or (torque drives: none) the speed
+ * measured */
+static double model_speed(const bd_running_law *law, const bd_model_def *def, double measured)
+{
+    for (int i = 0; i < def->pulley_count; i++) {
+        const bd_pulley_def *d = &def->pulleys[i];
+        if (d->has_drive && d->drive.control == BD_CONTROL_SPEED)
+            return d->drive.speed;
+        if (d->has_drive && d->drive.control == BD_CONTROL_MOTOR)
+            return motor_speed(law, def);
+    }
+    return measured;
+}
+
 void bd_torture_run(const char *yaml, const char *label, const bd_torture_options *opt,
                     bd_torture_result *res)
 {
@@ -222,7 +237,8 @@ void bd_torture_run(const char *yaml, const char *label, const bd_torture_option
     res->dissipation_drop = drop_worst / flow;
     res->completed = 1;
     res->ran_s = bd_sim_time(sim);
-    res->speed_target = opt->target_speed > 0.0 ? opt->target_speed : motor_speed(&law, &def);
+    res->speed_target = opt->target_speed > 0.0 ? opt->target_speed
+                                                : model_speed(&law, &def, res->speed);
     res->force_law = bd_running_law_force(&law, res->speed, &res->force_scale);
     goto done;
 failed:

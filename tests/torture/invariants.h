@@ -26,7 +26,8 @@ typedef struct bd_torture_result {
 
 typedef struct bd_torture_options {
     double window;             /* s of steady running averaged at the end */
-    double target_speed;       /* m/s of a speed drive; 0: from the motor curve */
+    double target_speed;       /* m/s of a speed drive; 0: from the model (a
+                                  speed drive's speed, the motor curve's) */
     /* running is steady when the means of three successive checks differ
      * by no more than these (force: of the law's terms summed in
      * magnitude; speed: relative); until then the run is extended window

@@ -6,6 +6,11 @@
  *   torture [--first SEED] [--count N] [--formulation discrete|axial]
  *           [--max-length M] [--settle S] [--force-check] [--curves]
  *           [--element-scale K] [--bending-stiffness EI] [--print SEED]
+ *           [--model FILE]...
+ *
+ * --model FILE holds a model file of one's own to the same invariants
+ * (its own formulation; the generator's options do not apply): a
+ * conveyor drawn with --print and changed by hand, or a reduced case.
  *
  * --element-scale K multiplies the discrete belt's element length (the
  * drawn one or the default) by K and --bending-stiffness EI gives the belt
@@ -77,12 +82,35 @@
 #define TOL_BALANCE 0.005
 #define TOL_DISSIPATION 1e-9
 #define TOL_SPEED 0.01
+#define MAX_MODELS 64
+
+/* a model file of one's own (--model): its text, and what the report
+ * line and the options need (no motor assumed: the window is 3 s, the
+ * target speed the model's own, invariants.c) */
+static int read_model(const char *path, char *yaml, size_t size, bd_gen_info *info)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return 1;
+    size_t n = fread(yaml, 1, size, f);
+    int err = ferror(f) || n == size;
+    fclose(f);
+    if (err)
+        return 1;
+    yaml[n] = '\0';
+    memset(info, 0, sizeof *info);
+    snprintf(info->summary, sizeof info->summary, "%s", path);
+    info->motor = strstr(yaml, "control: motor") != NULL;
+    return 0;
+}
 
 int main(int argc, char **argv)
 {
     unsigned long first = 1;
     int count = 30, print = 0, force_check = 0;
     double max_extension = 90.0;
+    const char *models[MAX_MODELS];
+    int model_count = 0;
     bd_gen_options gen = {"discrete", 120.0, 6.0, 0, 0.0, 0.0};
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--first") && i + 1 < argc)
@@ -105,6 +133,8 @@ int main(int argc, char **argv)
             gen.element_scale = atof(argv[++i]);
         else if (!strcmp(argv[i], "--bending-stiffness") && i + 1 < argc)
             gen.bending_stiffness = atof(argv[++i]);
+        else if (!strcmp(argv[i], "--model") && i + 1 < argc && model_count < MAX_MODELS)
+            models[model_count++] = argv[++i];
         else if (!strcmp(argv[i], "--print") && i + 1 < argc) {
             first = strtoul(argv[++i], NULL, 10);
             print = 1;
@@ -112,7 +142,7 @@ int main(int argc, char **argv)
             fprintf(stderr, "usage: torture [--first SEED] [--count N] [--formulation F] "
                             "[--max-length M] [--settle S] [--max-extension S] [--force-check] "
                             "[--curves] [--element-scale K] [--bending-stiffness EI] "
-                            "[--print SEED]\n");
+                            "[--print SEED] [--model FILE]...\n");
             return 2;
         }
     }
@@ -123,7 +153,7 @@ int main(int argc, char **argv)
     /* the belts whose nodes pass over the idlers (discrete, and rfe, whose
      * elements' centres rest on them through the discrete belt's contact) */
     int passing = !strcmp(gen.formulation, "discrete") || !strcmp(gen.formulation, "rfe");
-    double tol_force = passing ? 0.03 : 0.01;
+    double tol_gen = passing ? 0.03 : 0.01;
     static char yaml[1 << 16];
     bd_gen_info info;
     if (print) {
@@ -133,15 +163,33 @@ int main(int argc, char **argv)
     }
     int failures = 0;
     double worst_balance = 0.0, worst_force = 0.0, worst_speed = 0.0, wall = 0.0;
+    if (model_count > 0)
+        count = model_count;
     for (int k = 0; k < count; k++) {
         unsigned long seed = first + (unsigned long)k;
-        if (bd_gen_conveyor(seed, &gen, yaml, sizeof yaml, &info) >= sizeof yaml) {
-            printf("seed %lu: generator overflow\n", seed);
-            failures++;
-            continue;
+        char label[512];
+        if (model_count > 0) {
+            if (read_model(models[k], yaml, sizeof yaml, &info)) {
+                printf("FAIL %s: cannot read it, or longer than %zu bytes\n", models[k],
+                       sizeof yaml - 1);
+                failures++;
+                continue;
+            }
+            snprintf(label, sizeof label, "%s", models[k]);
+        } else {
+            if (bd_gen_conveyor(seed, &gen, yaml, sizeof yaml, &info) >= sizeof yaml) {
+                printf("seed %lu: generator overflow\n", seed);
+                failures++;
+                continue;
+            }
+            snprintf(label, sizeof label, "generated-%lu.yaml", seed);
         }
-        char label[64];
-        snprintf(label, sizeof label, "generated-%lu.yaml", seed);
+        /* a model of one's own names its belt (discrete when it does not) */
+        double tol_force = tol_gen;
+        if (model_count > 0)
+            tol_force = strstr(yaml, "formulation: axial") || strstr(yaml, "formulation: moving_node")
+                          ? 0.01
+                          : 0.03;
         /* a motor's swing with the takeup is slow: a longer window */
         bd_torture_options opt = {info.motor ? 6.0 : 3.0, info.motor ? 0.0 : info.speed,
                                   0.25 * tol_force, 0.25 * TOL_SPEED, max_extension};
@@ -182,9 +230,14 @@ int main(int argc, char **argv)
          * is said on the line, so that an "ok" is not read as a pass of it */
         int force_unchecked = !force_check && why[0] == '\0' && r.completed
                            && fabs(ferr) > tol_force;
-        printf("%s seed %lu [%s] %s: %d nodes, %.1f s wall, balance %.2g, force %.0f/%.0f N%s, "
+        char name[600];
+        if (model_count > 0)
+            snprintf(name, sizeof name, "%s", label);
+        else
+            snprintf(name, sizeof name, "seed %lu [%s] %s", seed, gen.formulation, info.summary);
+        printf("%s %s: %d nodes, %.1f s wall, balance %.2g, force %.0f/%.0f N%s, "
                "speed %.3f/%.3f, ran %.0f s%s%s%s%s\n",
-               ok ? "ok  " : "FAIL", seed, gen.formulation, info.summary, r.nodes, r.wall_s,
+               ok ? "ok  " : "FAIL", name, r.nodes, r.wall_s,
                r.balance, r.force, r.force_law,
                force_unchecked ? " (beyond the force tolerance; --force-check fails it)" : "",
                r.speed, r.speed_target, r.ran_s,
@@ -195,7 +248,7 @@ int main(int argc, char **argv)
     }
     printf("torture [%s]: %d of %d conveyors pass; worst balance %.3g, worst force error "
            "%+.2f%%, worst speed error %+.2f%%; %.0f s wall\n",
-           gen.formulation, count - failures, count, worst_balance, 100.0 * worst_force,
+           model_count > 0 ? "models" : gen.formulation, count - failures, count, worst_balance, 100.0 * worst_force,
            100.0 * worst_speed, wall);
     return failures ? 1 : 0;
 }
