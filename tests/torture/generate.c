@@ -196,6 +196,12 @@ size_t bd_gen_conveyor(unsigned long seed, const bd_gen_options *opt, char *buf,
         put(&o, "  element_length: %.6g\n", elem);
     if (opt->bending_stiffness > 0.0)
         put(&o, "  bending_stiffness: %.6g\n", opt->bending_stiffness);
+    /* the moving-node belt: half of the conveyors with span nodes between
+     * the idlers too (transverse waves on the spans; from a stream of its
+     * own, the other belts' conveyors unchanged) */
+    rng r_span = {0x5A4EULL + 32452843ULL * (unsigned long long)seed};
+    if (strcmp(opt->formulation, "moving_node") == 0 && chance(&r_span, 0.5))
+        put(&o, "  span_element_length: %.6g\n", uniform(&r_span, 0.2, 1.0));
 
     /* drives: a motor's gear ratio suits its own pulley, so that dual
      * drives on pulleys of different radii run the belt at one speed */

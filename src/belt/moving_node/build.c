@@ -23,13 +23,15 @@
 #define WEIGHT_SAMPLES 4
 
 static const size_t STATE_DOUBLES[] = {
-    offsetof(bd_mn, w),      offsetof(bd_mn, dX),
-    offsetof(bd_mn, len),    offsetof(bd_mn, cos_e),  offsetof(bd_mn, sin_e),
-    offsetof(bd_mn, td),     offsetof(bd_mn, tdw),    offsetof(bd_mn, f_grav), offsetof(bd_mn, f_norm),
+    offsetof(bd_mn, w),      offsetof(bd_mn, dX),     offsetof(bd_mn, len),
+    offsetof(bd_mn, cos_e),  offsetof(bd_mn, sin_e),  offsetof(bd_mn, td),
+    offsetof(bd_mn, tdw),    offsetof(bd_mn, f_grav), offsetof(bd_mn, f_norm),
     offsetof(bd_mn, normal), offsetof(bd_mn, vnew),   offsetof(bd_mn, rhs),
     offsetof(bd_mn, p0),     offsetof(bd_mn, qa),     offsetof(bd_mn, qb),
     offsetof(bd_mn, cp),     offsetof(bd_mn, fr),     offsetof(bd_mn, ca),
-    offsetof(bd_mn, cb),     offsetof(bd_mn, cna),    offsetof(bd_mn, cnb)};
+    offsetof(bd_mn, cb),     offsetof(bd_mn, cna),    offsetof(bd_mn, cnb),
+    offsetof(bd_mn, wdn),    offsetof(bd_mn, gw),     offsetof(bd_mn, pin),
+    offsetof(bd_mn, tc),     offsetof(bd_mn, td2),    offsetof(bd_mn, kap)};
 static const size_t MODEL_DOUBLES[] = {
     offsetof(bd_mn_model, nx),         offsetof(bd_mn_model, ny),
     offsetof(bd_mn_model, arc_len),
@@ -350,6 +352,10 @@ int bd_mn_build(bd_sim *sim, bd_diag *diag)
 
     bd_setup_probes_and_feed(sim);
     mm->feed_node = -1;
+    mm->first_arc = 0;
+    for (int i = n - 1; i >= 0; i--)
+        if (mm->kind[i] == BD_MN_ARC)
+            mm->first_arc = i;
     if (mat->present && sim->has_feed)
         mm->feed_node = sim->feed.gamma < 0.5 ? sim->feed.element
                                               : bd_node_next(sim->feed.element, n);
@@ -376,17 +382,22 @@ static double mean_span_element(const bd_model_def *def, const bd_path *path)
 /* The step: the axial motion is implicit (solve.c), stable at any step,
  * so the step is set by accuracy there: a wave crosses the mean span
  * element in no less than a step (seed 001 eq 6.1 at ζ = 0), the mesh
- * where the belt is. The shorter elements of short spans (a takeup loop's
- * 1 m elements between 3 m return bays) keep the trapezoidal rule, which
- * only delays their own fastest waves. Measured on the cement plant (1.2 m
- * carry, 3 m return, 1 m loop elements; Δt 1.9 ms against 1.12 ms for the
- * shortest element): every figure of its summary within 0.25 % of the
- * run at Δt 0.56 ms (the drive's tension swing −0.24 %, the rest
- * ≤ 0.12 %). The transverse motion is explicit: a
+ * where the belt is; shorter elements keep the trapezoidal rule, which
+ * only delays their own fastest waves. Except those that follow a takeup
+ * carriage, whose lengths change with its travel, which the parts advance
+ * explicitly: there a wave must cross each element in a step. On the
+ * cement plant (1.2 m carry, 3 m return, 1 m loop elements) the mean gave
+ * Δt 1.9 ms; with the drive's speed loop no longer holding the step down
+ * (650bf43) its 40 s start diverged in the loop's spans at 15.6 s (at
+ * 1.7 ms at 16.5 s), and ran to the end with the carriage fixed. Its loop
+ * elements now give 1.12 ms (1.5 ms ran too), and every figure of its
+ * summary lies within 0.03 % of the run at 0.45 ms (issue 10). The
+ * transverse motion is explicit: a
  * free node between elements l_a, l_b at the tension bound has
  * ω² ≤ 2·T·(1/l_a + 1/l_b)/m, plus 16·EI/(m·l⁴)·l per unit mass for
  * bending (Gershgorin bounds of the string's and the bending stencil's
- * rows, derived here; 16 = 1 + 4 + 6 + 4 + 1 of the five-point row); a carriage ω² ≤ Σ k_e·dsq_e·(|dsq_e| + 2)/M as the axial belt's.
+ * rows, derived here; 16 = 1 + 4 + 6 + 4 + 1 of the five-point row); a
+ * carriage ω² ≤ Σ k_e·dsq_e·(|dsq_e| + 2)/M as the axial belt's.
  * And the belt may pass no more than TRANSPORT_CFL of an element per step
  * at 1.2 × the fastest drive speed (at least 1 m/s): the strain carried
  * through the nodes is explicit (upwind), and with the implicit solve its
@@ -399,6 +410,11 @@ double bd_mn_stable_step(const bd_sim *sim, bd_time_step_limit *limit)
     const int n = sim->model->n;
     double c = mm->wave_speed;
     double lref = mean_span_element(def, &sim->model->path);
+    /* the elements that follow a takeup carriage: a wave crosses each in
+     * no less than a step (below) */
+    for (int e = 0; e < n; e++)
+        if (mm->eq[e] >= 0)
+            lref = fmin(lref, mm->ds0[e]);
     double dt = bd_central_difference_limit(2.0 * c / lref, 0.0);
     *limit = BD_LIMIT_AXIAL;
     double EI = sim->model->EI, Tb = mm->tension_bound;
@@ -503,7 +519,8 @@ void bd_mn_clone(bd_sim *dst, const bd_sim *src)
 }
 
 /* node-steps per second: the cement-plant example as moving_node, 40 s
- * (1291 nodes, 20 980 steps) in 1.25–2.0 s on the two-core machine */
+ * (1291 nodes, 42 517 steps) in 3.4 s on the two-core machine (1.6e7;
+ * issue 10's implicit Coriolis force) */
 #define MN_RATE 1.6e7
 
 /* what bd_mn_build would make: the layout's node count, and the step of

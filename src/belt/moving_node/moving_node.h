@@ -81,6 +81,8 @@ typedef struct bd_mn_model {
     double tension_bound;     /* N, the tension the transverse step allows */
     double wave_speed;        /* m/s, √(EA/m') of the empty belt */
     int feed_node;            /* node at the feed point, −1 = none */
+    int first_arc;            /* the first arc node (the transverse solve's
+                                 walk round the loop starts there) */
 } bd_mn_model;
 
 /* state (behind sim->belt_data) */
@@ -102,6 +104,11 @@ typedef struct bd_mn {
     double *cp;               /* [n] scratch: the Thomas sweep (also of
                                  forces: bending; of integrate: the flux) */
     double *fr;               /* [n] step (supports): N, pulley friction on node i */
+    /* [n] step (forces): the transverse solve (forces.c): ẇ at t + Δt/2,
+     * the pull across without the Coriolis term, 1 where ẇ is set (an
+     * arc node, an idler node held on its idler), and its sweep's scratch */
+    double *wdn, *gw, *pin, *tc, *td2;
+    double *kap;              /* [n] step (forces): kg/s, κ_e = ρ_e·v̄_e */
     double *frg;              /* [3n] scratch: a stuck node's friction per pulley speed */
     int *frp;                 /* [3n] scratch: ... and which pulleys */
     int *run_prev, *run_next; /* [n] scratch: a stuck node's stuck neighbours
