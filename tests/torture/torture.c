@@ -133,8 +133,13 @@ int main(int argc, char **argv)
             gen.element_scale = atof(argv[++i]);
         else if (!strcmp(argv[i], "--bending-stiffness") && i + 1 < argc)
             gen.bending_stiffness = atof(argv[++i]);
-        else if (!strcmp(argv[i], "--model") && i + 1 < argc && model_count < MAX_MODELS)
+        else if (!strcmp(argv[i], "--model") && i + 1 < argc) {
+            if (model_count == MAX_MODELS) {
+                fprintf(stderr, "torture: at most %d --model files\n", MAX_MODELS);
+                return 2;
+            }
             models[model_count++] = argv[++i];
+        }
         else if (!strcmp(argv[i], "--print") && i + 1 < argc) {
             first = strtoul(argv[++i], NULL, 10);
             print = 1;
@@ -186,10 +191,11 @@ int main(int argc, char **argv)
         }
         /* a model of one's own names its belt (discrete when it does not) */
         double tol_force = tol_gen;
-        if (model_count > 0)
-            tol_force = strstr(yaml, "formulation: axial") || strstr(yaml, "formulation: moving_node")
-                          ? 0.01
-                          : 0.03;
+        if (model_count > 0) {
+            int station = strstr(yaml, "formulation: axial") != NULL
+                       || strstr(yaml, "formulation: moving_node") != NULL;
+            tol_force = station ? 0.01 : 0.03;
+        }
         /* a motor's swing with the takeup is slow: a longer window */
         bd_torture_options opt = {info.motor ? 6.0 : 3.0, info.motor ? 0.0 : info.speed,
                                   0.25 * tol_force, 0.25 * TOL_SPEED, max_extension};
@@ -248,7 +254,8 @@ int main(int argc, char **argv)
     }
     printf("torture [%s]: %d of %d conveyors pass; worst balance %.3g, worst force error "
            "%+.2f%%, worst speed error %+.2f%%; %.0f s wall\n",
-           model_count > 0 ? "models" : gen.formulation, count - failures, count, worst_balance, 100.0 * worst_force,
+           model_count > 0 ? "models" : gen.formulation, count - failures, count, worst_balance,
+           100.0 * worst_force,
            100.0 * worst_speed, wall);
     return failures ? 1 : 0;
 }
