@@ -64,6 +64,7 @@ static void alloc_arrays(bd_sim *sim)
     mn->run_prev = bd_xcalloc(n, sizeof *mn->run_prev);
     mn->run_next = bd_xcalloc(n, sizeof *mn->run_next);
     mm->kind = bd_xcalloc(n, 1);
+    mm->idler_nodes = bd_xcalloc(n, sizeof *mm->idler_nodes);
     mm->on_arc = bd_xcalloc(n, 1);
     mm->pulley = bd_xcalloc(n, sizeof *mm->pulley);
     mm->mover = bd_xcalloc(n, sizeof *mm->mover);
@@ -353,9 +354,13 @@ int bd_mn_build(bd_sim *sim, bd_diag *diag)
     bd_setup_probes_and_feed(sim);
     mm->feed_node = -1;
     mm->first_arc = 0;
-    for (int i = n - 1; i >= 0; i--)
+    mm->idler_node_count = 0;
+    for (int i = n - 1; i >= 0; i--) {
         if (mm->kind[i] == BD_MN_ARC)
             mm->first_arc = i;
+        if (mm->kind[i] == BD_MN_IDLER)
+            mm->idler_nodes[mm->idler_node_count++] = i;
+    }
     if (mat->present && sim->has_feed)
         mm->feed_node = sim->feed.gamma < 0.5 ? sim->feed.element
                                               : bd_node_next(sim->feed.element, n);
@@ -485,6 +490,7 @@ void bd_mn_free_model(bd_model *model)
         return;
     bd_doubles_free(mm, MODEL_DOUBLES, COUNT(MODEL_DOUBLES));
     free(mm->kind);
+    free(mm->idler_nodes);
     free(mm->on_arc);
     free(mm->pulley);
     free(mm->mover);

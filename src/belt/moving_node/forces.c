@@ -257,21 +257,18 @@ static void transverse(bd_sim *sim)
     const double dt = sim->model->dt;
     const int start = mm->first_arc;
     for (int pass = 0; pass < SUPPORT_PASSES; pass++) {
-        for (int i = 0; i < n; i++) {
-            if (mm->kind[i] == BD_MN_ARC)
-                mn->wdn[i] = 0.0;
-            else if (mn->pin[i] != 0.0)
-                mn->wdn[i] = -mn->w[i] / dt;
-        }
-        /* the runs, walking once round the loop from an arc node */
+        /* the runs, walking once round the loop from an arc node; a set
+         * node's ẇ⁺ is known before the run it ends is solved */
+        mn->wdn[start] = 0.0;
         int run_first = -1, run_count = 0;
         for (int k = 1, i = bd_node_next(start, n); k <= n; k++, i = bd_node_next(i, n)) {
-            int set = mm->kind[i] == BD_MN_ARC || mn->pin[i] != 0.0;
-            if (!set) {
+            int arc = mm->kind[i] == BD_MN_ARC;
+            if (!arc && mn->pin[i] == 0.0) {
                 if (run_count++ == 0)
                     run_first = i;
                 continue;
             }
+            mn->wdn[i] = arc ? 0.0 : -mn->w[i] / dt;
             if (run_count > 0)
                 transverse_run(sim, run_first, run_count);
             run_count = 0;
@@ -280,9 +277,8 @@ static void transverse(bd_sim *sim)
         if (pass == SUPPORT_PASSES - 1)
             break;
         int changed = 0;
-        for (int i = 0; i < n; i++) {
-            if (mm->kind[i] != BD_MN_IDLER)
-                continue;
+        for (int q = 0; q < mm->idler_node_count; q++) {
+            int i = mm->idler_nodes[q];
             double m = sim->mass[i] - mm->idler_mass[i];
             if (mn->pin[i] != 0.0) {
                 double N = m * (mn->wdn[i] - sim->vy[i]) / dt - mn->gw[i]

@@ -83,6 +83,8 @@ typedef struct bd_mn_model {
     int feed_node;            /* node at the feed point, −1 = none */
     int first_arc;            /* the first arc node (the transverse solve's
                                  walk round the loop starts there) */
+    int *idler_nodes;         /* the idler nodes, idler_node_count of them */
+    int idler_node_count;
 } bd_mn_model;
 
 /* state (behind sim->belt_data) */
