@@ -131,11 +131,11 @@ static void describe_idler_turn(FILE *f, const bd_sim *sim, int k)
     fprintf(f, ", the belt turns %.3f rad at each at rest, v %.2f of its wave speed\n", phi,
             v / c);
     if (phi >= 0.10 && v >= 0.2 * c)
-        fprintf(f, "warning: the idlers of span '%s' turn the belt by %.2f rad at rest, at %.2f "
-                   "of its wave speed: the discrete belt without bending stiffness has drawn running "
-                   "force above its resistance law on such spans (docs/physics.md §10); give "
-                   "belt.bending_stiffness, or use the axial or moving_node belt for the "
-                   "running force\n",
+        fprintf(f, "warning: the idlers of span '%s' turn the belt by %.2f rad at rest, at "
+                   "%.2f of its wave speed: the discrete belt without bending stiffness has "
+                   "drawn running force above its resistance law on such spans "
+                   "(docs/physics.md §10); give belt.bending_stiffness, or use the axial or "
+                   "moving_node belt for the running force\n",
                 def->pulleys[def->idler_sets[k].span].name, phi, v / c);
 }
 

@@ -53,10 +53,12 @@ if grep -q "^warning: the idlers of span 'head'" "$tmp/out" \
 else
     bad "warnings" "$(grep '^warning' "$tmp/out")"
 fi
-sed 's/initial_tension: 5000}/initial_tension: 5000, bending_stiffness: 20}/' "$tmp/loop.yaml" >"$tmp/ei.yaml"
+sed 's/initial_tension: 5000}/initial_tension: 5000, bending_stiffness: 20}/' \
+    "$tmp/loop.yaml" >"$tmp/ei.yaml"
 sed 's/belt: {/belt: {formulation: moving_node, /' "$tmp/loop.yaml" >"$tmp/mn.yaml"
 for m in ei mn; do
-    "$BELTDYN" check "$tmp/$m.yaml" >"$tmp/out_$m" 2>"$tmp/err" || bad "check $m" "$(cat "$tmp/err")"
+    "$BELTDYN" check "$tmp/$m.yaml" >"$tmp/out_$m" 2>"$tmp/err" \
+        || bad "check $m" "$(cat "$tmp/err")"
     if ! grep -q "turns .* rad\|^warning: the idlers" "$tmp/out_$m"; then
         ok "$m: nothing said"
     else
