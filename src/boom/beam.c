@@ -10,8 +10,9 @@
  * its corotated frame: M. A. Crisfield, Non-linear Finite Element Analysis
  * of Solids and Structures, vol. 1, Wiley 1991, ch. 7). Their virtual
  * work N dl + Ma dta + Mb dtb with dl = e.(drb - dra) and
- * dta = dphia - n.(drb - dra)/l gives the nodal forces. l0 is the element's material length s_b - s_a, which changes as
- * the spatial nodes move through the material.
+ * dta = dphia - n.(drb - dra)/l gives the nodal forces. l0 is the
+ * element's material length s_b - s_a, which changes as the spatial nodes
+ * move through the material.
  *
  * Damping: Kelvin-Voigt on the material strain rates, beta times the
  * stiffness (the stiffness-proportional half of Rayleigh damping). */

@@ -91,10 +91,12 @@ static void describe_spans(FILE *f, const bd_sim *sim)
 }
 
 /* The discrete belt without bending stiffness over idler set k: the angle
- * by which the belt turns at each idler, φ = m'g·a·cos δ/(T − m'v²) (the
- * bay's weight over the tension less the centrifugal term; T and m' the
- * span's at rest, v the drives' speed) and v against the transverse wave
- * speed √(T/m'). On generated conveyors its running force ran above the
+ * by which the belt turns at each idler, φ = m'g·a·cos δ/(T − m'v²): twice
+ * the slope m'g·a/(2T) at the ends of the sag parabola h = m'g·a²/(8T)
+ * whose limit standards.c takes for DIN 22101's minimum tension
+ * (T_min_sag), with the moving string's T − m'v² (Wickert & Mote 1990, as
+ * in moving_node/forces.c); T and m' the span's at rest, v the drives'
+ * speed; and v against the transverse wave speed √(T/m'). On generated conveyors its running force ran above the
  * resistance law on 8 of 13 with φ ≥ 0.10 rad and v ≥ 0.2·c, on 1 of 88
  * with φ < 0.05 rad (docs/physics.md §10); said, with a warning there. */
 static void describe_idler_turn(FILE *f, const bd_sim *sim, int k)

@@ -4,8 +4,9 @@
  * bd_sim_describe) and what `beltdyn static` does (bd_static_compute, the
  * table and the JSON), without running the transient. The same bytes go
  * through the boom's loader (bd_boom_load_string, issue 13) and, when they
- * are a valid boom, through its `check` (bd_boom_create, bd_boom_describe). Everything is freed:
- * LeakSanitizer reports anything left.
+ * are a valid boom, through its `check` (bd_boom_create,
+ * bd_boom_describe). Everything is freed: LeakSanitizer reports anything
+ * left.
  *
  * Built by -DBD_FUZZ=ON with clang (tests/fuzz/CMakeLists.txt); run by
  * scripts/fuzz (README.md, Fuzzing). */

@@ -31,7 +31,7 @@ static const size_t STATE_DOUBLES[] = {
     offsetof(bd_mn, cp),     offsetof(bd_mn, fr),     offsetof(bd_mn, ca),
     offsetof(bd_mn, cb),     offsetof(bd_mn, cna),    offsetof(bd_mn, cnb),
     offsetof(bd_mn, wdn),    offsetof(bd_mn, gw),     offsetof(bd_mn, pin),
-    offsetof(bd_mn, tc),     offsetof(bd_mn, td2),    offsetof(bd_mn, kap)};
+    offsetof(bd_mn, sweep_c), offsetof(bd_mn, sweep_d), offsetof(bd_mn, kap)};
 static const size_t MODEL_DOUBLES[] = {
     offsetof(bd_mn_model, nx),         offsetof(bd_mn_model, ny),
     offsetof(bd_mn_model, arc_len),
@@ -395,8 +395,9 @@ static double mean_span_element(const bd_model_def *def, const bd_path *path)
  * Δt 1.9 ms; with the drive's speed loop no longer holding the step down
  * (650bf43) its 40 s start diverged in the loop's spans at 15.6 s (at
  * 1.7 ms at 16.5 s), and ran to the end with the carriage fixed. Its loop
- * elements now give 1.12 ms (1.5 ms ran too), and every figure of its
- * summary lies within 0.03 % of the run at 0.45 ms (issue 10). The
+ * elements (0.84 m where a span is split) now give 0.94 ms (1.5 ms ran
+ * too), and every figure of its summary lies within 0.03 % of the run at
+ * 0.45 ms (issue 10). The
  * transverse motion is explicit: a
  * free node between elements l_a, l_b at the tension bound has
  * ω² ≤ 2·T·(1/l_a + 1/l_b)/m, plus 16·EI/(m·l⁴)·l per unit mass for

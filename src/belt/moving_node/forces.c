@@ -211,7 +211,7 @@ static void transverse_run(bd_sim *sim, int first, int count)
     bd_mn *mn = bd_mn_of(sim);
     const int n = sim->model->n;
     const double dt = sim->model->dt;
-    double *c = mn->tc, *d = mn->td2;
+    double *c = mn->sweep_c, *d = mn->sweep_d;
     int i = first, prev_i = -1;
     for (int k = 0; k < count; k++, prev_i = i, i = bd_node_next(i, n)) {
         int b = bd_node_prev(i, n), j = bd_node_next(i, n);

@@ -109,7 +109,7 @@ typedef struct bd_mn {
     /* [n] step (forces): the transverse solve (forces.c): ẇ at t + Δt/2,
      * the pull across without the Coriolis term, 1 where ẇ is set (an
      * arc node, an idler node held on its idler), and its sweep's scratch */
-    double *wdn, *gw, *pin, *tc, *td2;
+    double *wdn, *gw, *pin, *sweep_c, *sweep_d;
     double *kap;              /* [n] step (forces): kg/s, κ_e = ρ_e·v̄_e */
     double *frg;              /* [3n] scratch: a stuck node's friction per pulley speed */
     int *frp;                 /* [3n] scratch: ... and which pulleys */
