@@ -7,8 +7,9 @@
  *    within 0.1% of the largest kinetic energy (issue 2), and no more than
  *    that is dissipated. The only losses are the implicit contacts' (a node
  *    striking a shell is stopped in one step); they scale with the step:
- *    at the automatic step (7.5 ms) they take 0.12% of the largest kinetic
- *    energy over 6 s, at the 3 ms used here 0.03%.
+ *    at the automatic step (7.5 ms) they take 0.19% of the largest kinetic
+ *    energy over 6 s (balance 0.16%), at the 3 ms used here 0.036%
+ *    (balance 0.003%; measured 2026-11-24, docs/physics.md §10).
  * 2. A damped, driven run with friction: the flat belt drive example
  *    (Kelvin–Voigt damping, stick–slip on both pulleys, a speed-controlled
  *    drive, bearing damping as the load) closes kinetic + potential +
