@@ -132,6 +132,7 @@ static int create(const bd_model_def *def, bd_sim *volatile *out, bd_diag *diag)
         bd_node_mass_changed(sim, i);
     /* a failure of its forces shows again, with its message, in the first step */
     (void)bd_sim_start_at_rest(sim);
+    bd_idler_turn_warn(sim);
     bd_sim_records_restart(sim);
     return 0;
 }

@@ -33,6 +33,11 @@ int bd_bounds_check(bd_sim *sim);
  * when refused (the error in diag; a long run gets a warning there); after
  * it, the nodes and the step actually made. Bytes and seconds as text. */
 int bd_cost_estimate(bd_sim *sim, bd_diag *diag);
+/* idler_turn.c: idler set k's turn φ of the discrete belt without bending
+ * stiffness at rest and its speed over its wave speed (0: not that belt,
+ * or no such span); the warning where φ and v/c are large */
+int bd_idler_turn(const bd_sim *sim, int k, double *phi, double *v_over_c);
+void bd_idler_turn_warn(bd_sim *sim);
 /* the same estimate of a definition over `duration` s, from its path and
  * its formulation's `estimate`, without a simulation: counts, step, bytes,
  * seconds (not the memory available; the study orders its cases by it).

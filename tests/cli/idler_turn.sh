@@ -11,7 +11,8 @@
 # different tensions (the sag stretches the belt, the pulleys' friction
 # holds the difference: the carry's angle reads 4 % under the count), so
 # each angle is held to 5 % of it. With bending stiffness, or on the
-# moving-node belt, nothing is said.
+# moving-node belt, nothing is said. `run` puts the same warning into
+# summary.json (and so into the report) for the return span alone.
 . "$(dirname "$0")/lib/setup.sh"
 cat >"$tmp/loop.yaml" <<'YAML'
 name: idler turn
@@ -52,6 +53,14 @@ if grep -q "^warning: the idlers of span 'head'" "$tmp/out" \
     ok "warned for the return span only"
 else
     bad "warnings" "$(grep '^warning' "$tmp/out")"
+fi
+"$BELTDYN" run "$tmp/loop.yaml" -o "$tmp/run" >/dev/null 2>"$tmp/err" \
+    || bad "run" "$(cat "$tmp/err")"
+if grep -q "the idlers of span 'head' turn the belt" "$tmp/run/summary.json" \
+    && ! grep -q "the idlers of span 'tail'" "$tmp/run/summary.json"; then
+    ok "run: summary.json warns for the return span only"
+else
+    bad "run's warnings" "$(grep -A3 '"warnings"' "$tmp/run/summary.json")"
 fi
 sed 's/initial_tension: 5000}/initial_tension: 5000, bending_stiffness: 20}/' \
     "$tmp/loop.yaml" >"$tmp/ei.yaml"
