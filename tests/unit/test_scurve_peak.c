@@ -15,7 +15,8 @@
  * swing and the belt's slowest modes, which the element's dashpots barely
  * damp (ζ_mode = ζ·ω/ω_e, docs/physics.md §10).
  *
- * The raw peak carries ±0.8 kN of the belt's axial modes at ~20 Hz:
+ * The raw peak carries ±0.8 kN of the belt's axial modes, 5–16 Hz at both
+ * elements (not the node passage, 20 Hz there at the default element):
  * 5495 N (+22.6 %). It is no mesh artefact: at half the element it is
  * 5661 N, +3.0 % against the default's, and the test holds it within 5 %
  * of that (at a quarter, 5560 N). When the belt ran over the drum as
