@@ -43,23 +43,6 @@ static const double G = 9.81;
 
 /* ---- helpers on a built sim ---- */
 
-/* M of the rigid-body equation, kg */
-static double rigid_mass(const bd_sim *sim)
-{
-    double M = bd_sim_belt_mass(sim);
-    for (int i = 0; i < bd_sim_pulley_count(sim); i++) {
-        bd_pulley_state p;
-        bd_sim_pulley(sim, i, &p);
-        M += p.inertia_kgm2 / (p.radius_m * p.radius_m);
-    }
-    for (int i = 0; i < bd_sim_idler_count(sim); i++) {
-        bd_idler_state id;
-        bd_sim_idler(sim, i, &id);
-        M += id.inertia_kgm2 / (id.radius_m * id.radius_m);
-    }
-    return M;
-}
-
 /* the drive pulley (pulley 0 in every model here) now */
 static bd_pulley_state drive_pulley(const bd_sim *sim)
 {
@@ -120,7 +103,7 @@ static void start_force(void)
     bd_model_def def;
     bd_sim *sim;
     bd_test_make_sim(yaml, &def, &sim);
-    double M = rigid_mass(sim), a = 0.5, F, v;
+    double M = bd_test_rigid_mass(sim), a = 0.5, F, v;
     mean_force(sim, 0.5, 1.5, &F, &v);
     double want = M * a + cb * v / (R * R);
     printf("start force: M = %.1f kg, a = %.2f m/s2, mean v = %.3f m/s: drive force %.2f N, "
@@ -163,7 +146,7 @@ static void dol_start(void)
     bd_model_def def;
     bd_sim *sim;
     bd_test_make_sim(yaml, &def, &sim);
-    double M = rigid_mass(sim);
+    double M = bd_test_rigid_mass(sim);
     /* the reference: RK4 to the final speed, then the time to 95% of it */
     double h = 1e-4, v = 0.0, t = 0.0, t95 = -1.0;
     double vf = 0.0;
@@ -252,7 +235,7 @@ static void loaded_steady_and_coast(void)
     CHECK_REL(F, want, 0.05);
 
     /* coast from t = 3 s */
-    double M = rigid_mass(sim), v0 = bd_sim_belt_speed(sim);
+    double M = bd_test_rigid_mass(sim), v0 = bd_sim_belt_speed(sim);
     double Fr = F - M_LOAD * v * v;
     double vs = 0.02 * v0;
     double k = sqrt(M_LOAD / Fr);

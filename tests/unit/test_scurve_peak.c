@@ -35,20 +35,12 @@
 #define V0 3.94763         /* m/s, the drive's speed */
 #define T_START 30.0       /* s */
 
-/* the rigid body's drive force, its largest over the curve */
+/* the rigid body's drive force, its largest over the curve (the s-curve
+ * v = v0·(3τ² − 2τ³) of seed 000 eqs 52–55, as docs/physics.md §6 and
+ * laws/start_curve.c take it) */
 static double rigid_peak(const bd_sim *sim)
 {
-    double M = bd_sim_belt_mass(sim);
-    for (int i = 0; i < bd_sim_pulley_count(sim); i++) {
-        bd_pulley_state p;
-        bd_sim_pulley(sim, i, &p);
-        M += p.inertia_kgm2 / (p.radius_m * p.radius_m);
-    }
-    for (int i = 0; i < bd_sim_idler_count(sim); i++) {
-        bd_idler_state id;
-        bd_sim_idler(sim, i, &id);
-        M += id.inertia_kgm2 / (id.radius_m * id.radius_m);
-    }
+    double M = bd_test_rigid_mass(sim);
     bd_running_law law;
     bd_running_law_build(sim, &law);
     double peak = 0.0;

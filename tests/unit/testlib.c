@@ -125,3 +125,19 @@ void bd_test_remove_run(const char *dir)
     }
     remove(dir);
 }
+
+double bd_test_rigid_mass(const bd_sim *sim)
+{
+    double M = bd_sim_belt_mass(sim);
+    for (int i = 0; i < bd_sim_pulley_count(sim); i++) {
+        bd_pulley_state p;
+        bd_sim_pulley(sim, i, &p);
+        M += p.inertia_kgm2 / (p.radius_m * p.radius_m);
+    }
+    for (int i = 0; i < bd_sim_idler_count(sim); i++) {
+        bd_idler_state id;
+        bd_sim_idler(sim, i, &id);
+        M += id.inertia_kgm2 / (id.radius_m * id.radius_m);
+    }
+    return M;
+}

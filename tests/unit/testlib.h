@@ -47,5 +47,9 @@ int bd_test_make_sim(const char *yaml, struct bd_model_def *def, struct bd_sim *
 struct bd_model;
 int bd_test_compile(const struct bd_model_def *def, struct bd_model **model);
 int bd_test_create(const struct bd_model_def *def, struct bd_sim **sim);
+/* the mass of the rigid-body equation M·dv/dt = F_drive − F_resist(v), kg:
+ * belt and material, and Σ I/r² of every pulley (drive inertia included)
+ * and idler, from the built model */
+double bd_test_rigid_mass(const struct bd_sim *sim);
 /* advance to time t (s); returns 0, or 1 if the run failed */
 int bd_test_run_to(struct bd_sim *sim, double t);
