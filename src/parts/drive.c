@@ -187,11 +187,11 @@ void bd_drive_take_over(bd_drive *dr, double torque)
 }
 
 /* the fastest belt speed a drive asks for, m/s (0: no drive with a speed) */
-double bd_drives_reference_speed(const bd_model *m)
+double bd_drives_reference_speed(const bd_model_def *def)
 {
     double v = 0.0;
-    for (int i = 0; i < m->pulley_count; i++) {
-        const bd_pulley_def *pd = m->pulleys[i].def;
+    for (int i = 0; i < def->pulley_count; i++) {
+        const bd_pulley_def *pd = &def->pulleys[i];
         if (!pd->has_drive)
             continue;
         const bd_drive_def *d = &pd->drive;
@@ -202,7 +202,7 @@ double bd_drives_reference_speed(const bd_model *m)
             break;
         case BD_CONTROL_MOTOR:
             vi = d->motor.synchronous_speed_rpm * 2.0 * BD_PI / 60.0 / d->motor.gear_ratio
-               * m->pulleys[i].radius;
+               * pd->radius;
             break;
         case BD_CONTROL_TORQUE: break;
         }

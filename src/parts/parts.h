@@ -110,7 +110,7 @@ void bd_idlers_advance(bd_sim *sim, double *ke, double *w_nc);
 /* the fastest belt speed a drive asks for, m/s (0: no drive with a speed):
  * speed drives' speed or creep speed, motors' synchronous speed at the
  * pulley */
-double bd_drives_reference_speed(const bd_model *m);
+double bd_drives_reference_speed(const bd_model_def *def);
 /* a motor's rated torque at its shaft, N·m: rated power over rated speed */
 double bd_motor_rated_torque(const bd_motor_def *m);
 /* tune the speed loop of drive d on pulley p for the inertia it moves */

@@ -39,7 +39,7 @@
 
 void bd_bounds_prepare(bd_model *m)
 {
-    m->speed_bound = fmax(SPEED_BOUND_FLOOR, SPEED_BOUND_FACTOR * bd_drives_reference_speed(m));
+    m->speed_bound = fmax(SPEED_BOUND_FLOOR, SPEED_BOUND_FACTOR * bd_drives_reference_speed(m->def));
     m->travel_bound = 0.5 * m->path.length;
 }
 

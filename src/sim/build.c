@@ -164,6 +164,8 @@ void bd_model_free(bd_model *m)
     free(m->s_node0);
     free(m->idlers_per_set);
     free(m->idler_spacing);
+    free(m->idler_turn);
+    free(m->idler_turn_speed);
     free(m->pulleys);
     free(m->idlers);
     bd_path_free(&m->path);

@@ -40,7 +40,7 @@ static void describe_speed_loops(FILE *f, const bd_sim *sim)
  * should come to, and the torture test holds it to */
 static void describe_running_law(FILE *f, const bd_sim *sim)
 {
-    double v = bd_drives_reference_speed(sim->model);
+    double v = bd_drives_reference_speed(sim->model->def);
     if (!(v > 0.0))
         return;
     const bd_model_def *def = sim->model->def;
@@ -115,7 +115,12 @@ void bd_sim_describe(const bd_sim *sim, FILE *f)
     fprintf(f, "model: %s\n", def->name);
     fprintf(f, "formulation: %s\n", sim->model->belt->description);
     fprintf(f, "belt loop length: %.3f m\n", sim->model->path.length);
-    fprintf(f, "belt elements: %d (unstretched length %.4f m)\n", sim->model->n, sim->model->l0);
+    fprintf(f, "belt elements: %d (unstretched length %.4f m%s)\n", sim->model->n,
+            sim->model->l0,
+            sim->model->element_refined
+                ? "; the default halved: idlers turn the belt by 0.05 rad or more, "
+                  "docs/model-format.md"
+                : "");
     fprintf(f, "belt nodes: %d\n", sim->model->n);
     if (def->belt.formulation == BD_FORMULATION_DISCRETE) {
         /* docs/physics.md §10: without bending stiffness the nodes' passage

@@ -8,6 +8,9 @@
  * leaving the head rises over it, so the head's wrap is more than 180°. */
 #include "generate.h"
 
+#include "beltdyn/model.h"
+#include "beltdyn/sim.h"
+
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -64,8 +67,11 @@ static void put_pulley(out *o, const char *name, double x, double y, double R, c
         put(o, "    bearing_damping: %.6g\n", bearing);
 }
 
-size_t bd_gen_conveyor(unsigned long seed, const bd_gen_options *opt, char *buf, size_t size,
-                       bd_gen_info *info)
+/* conveyor `seed`; an element drawn as a fraction of the default is that
+ * fraction of `element_unit` (0: of the 30° chord of the smallest pulley);
+ * `no_element` leaves belt.element_length out */
+static size_t generate(unsigned long seed, const bd_gen_options *opt, double element_unit,
+                       int no_element, char *buf, size_t size, bd_gen_info *info)
 {
     rng r = {0x5EEDULL + 7919ULL * (unsigned long long)seed};
     out o = {buf, size, 0};
@@ -148,8 +154,7 @@ size_t bd_gen_conveyor(unsigned long seed, const bd_gen_options *opt, char *buf,
      * 30° chord of the smallest pulley, drawn before the snub's turn */
     double R_min = fmin(fmin(Rh, Rt), takeup == TAIL_TAKEUP ? 1.0 : fmin(Rb, Rk));
     double Rs = fmax(Rs_draw, R_min);
-    double elem_default = 2.0 * R_min
-                        * sin(15.0 * PI / 180.0);
+    double elem_default = element_unit > 0.0 ? element_unit : 2.0 * R_min * sin(15.0 * PI / 180.0);
     double elem = axial ? (chance(&r, 0.5) ? 0.0 : uniform(&r, 0.5, 2.0))
                         : (chance(&r, 0.5) ? 0.0 : uniform(&r, 0.5, 1.0) * elem_default);
     /* the curve's radius against the carry's highest tension, and no less
@@ -192,7 +197,7 @@ size_t bd_gen_conveyor(unsigned long seed, const bd_gen_options *opt, char *buf,
      * one or the default); the draws above are unchanged */
     if (opt->element_scale > 0.0 && !axial)
         elem = (elem > 0.0 ? elem : elem_default) * opt->element_scale;
-    if (elem > 0.0)
+    if (elem > 0.0 && !no_element)
         put(&o, "  element_length: %.6g\n", elem);
     if (opt->bending_stiffness > 0.0)
         put(&o, "  bending_stiffness: %.6g\n", opt->bending_stiffness);
@@ -301,4 +306,30 @@ size_t bd_gen_conveyor(unsigned long seed, const bd_gen_options *opt, char *buf,
     put(&o, "  probes:\n    - {name: carry, span: tail, at: 0.5}\n"
             "    - {name: return, span: %s, at: 0.5}\n", return_span);
     return o.len;
+}
+
+/* The element lengths are drawn up to the model's own default, which the
+ * build takes from the pulleys and, for the discrete belt, from how sharply
+ * the idlers turn it (belt/lumped/idler_turn.c): the conveyor is written
+ * without one and compiled to find it. */
+size_t bd_gen_conveyor(unsigned long seed, const bd_gen_options *opt, char *buf, size_t size,
+                       bd_gen_info *info)
+{
+    size_t len = generate(seed, opt, 0.0, 1, buf, size, info);
+    if (len >= size || !strcmp(opt->formulation, "axial"))
+        return len < size ? generate(seed, opt, 0.0, 0, buf, size, info) : len;
+    double unit = 0.0;
+    bd_model_def def;
+    bd_diag diag;
+    bd_diag_init(&diag);
+    if (bd_model_load_string(buf, len, "generated", &def, &diag) == 0) {
+        bd_sim *sim;
+        if (bd_sim_create(&def, &sim, &diag) == 0) {
+            unit = bd_sim_element_length(sim);
+            bd_sim_free(sim);
+        }
+        bd_model_def_free(&def);
+    }
+    bd_diag_free(&diag);
+    return generate(seed, opt, unit, 0, buf, size, info);
 }

@@ -16,15 +16,6 @@
 
 /* default target element length: chord of a 30° arc of the smallest pulley
  * (seed 001 §4.3.1, §6.1) */
-static double default_element_length(const bd_model_def *def)
-{
-    double r = INFINITY;
-    for (int i = 0; i < def->pulley_count; i++)
-        if (def->pulleys[i].radius < r)
-            r = def->pulleys[i].radius;
-    return 2.0 * r * sin(BD_PI / 12.0);
-}
-
 /* the lumped state's arrays of doubles: [n] of the belt, [node_max] of a
  * shell contact (ints apart) */
 static const size_t BELT_DOUBLES[] = {offsetof(bd_lumped, ux), offsetof(bd_lumped, uy),
@@ -181,8 +172,18 @@ int bd_lumped_build_sized(bd_sim *sim, bd_diag *diag, size_t state_size, size_t 
         return 1;
     bd_lumped *L = bd_xcalloc(1, state_size);
     sim->belt_data = L;
-    double target = def->belt.element_length > 0.0 ? def->belt.element_length
-                                                   : default_element_length(def);
+    /* the idlers' turn of the discrete belt at rest: the default element
+     * (idler_turn.c), `check` and the warning (sim/idler_turn.c) */
+    if (def->belt.formulation == BD_FORMULATION_DISCRETE && def->idler_set_count > 0) {
+        size_t sets = (size_t)def->idler_set_count;
+        sim->own->idler_turn = bd_xcalloc(sets, sizeof *sim->own->idler_turn);
+        sim->own->idler_turn_speed = bd_xcalloc(sets, sizeof *sim->own->idler_turn_speed);
+        bd_lumped_idler_turns(def, &given, sim->own->idler_turn, sim->own->idler_turn_speed);
+    }
+    double target = def->belt.element_length > 0.0
+                        ? def->belt.element_length
+                        : bd_lumped_default_element(def, sim->own->idler_turn,
+                                                    &sim->own->element_refined);
     bd_layout lay;
     char err[512];
     bd_layout_request req = {&given, target};
@@ -223,7 +224,7 @@ int bd_lumped_build_sized(bd_sim *sim, bd_diag *diag, size_t state_size, size_t 
                       "circumference of pulley '%s' (radius %.3g m) and cannot follow it; "
                       "use less than %.3g m (the default is %.3g m, 30° of it)",
                       sim->model->l0, def->pulleys[worst].name, R, BD_PI * R,
-                      default_element_length(def));
+                      bd_lumped_pulley_element(def));
         bd_layout_free(&lay);
         return 1;
     }
@@ -232,7 +233,7 @@ int bd_lumped_build_sized(bd_sim *sim, bd_diag *diag, size_t state_size, size_t 
                     "radius %.3g m): the wrap's pressure and friction are carried by few "
                     "nodes; belt.element_length %.3g m gives 30°",
                     span / BD_DEG, def->pulleys[worst].name, sim->model->l0, R,
-                    default_element_length(def));
+                    bd_lumped_pulley_element(def));
 
     bd_node_arrays_alloc(sim);
     size_t n = (size_t)sim->model->n;
@@ -369,8 +370,17 @@ static double node_bytes(void)
  * get, and the step of elements that long (the build's own law) */
 void bd_lumped_estimate(const bd_model_def *def, const bd_path *path, bd_belt_estimate *out)
 {
-    double l = def->belt.element_length > 0.0 ? def->belt.element_length
-                                              : default_element_length(def);
+    double l = def->belt.element_length;
+    if (!(l > 0.0)) {
+        size_t sets = (size_t)(def->idler_set_count > 0 ? def->idler_set_count : 1);
+        double *phi = bd_xcalloc(sets, sizeof *phi), *voc = bd_xcalloc(sets, sizeof *voc);
+        int refined;
+        if (def->belt.formulation == BD_FORMULATION_DISCRETE)
+            bd_lumped_idler_turns(def, path, phi, voc);
+        l = bd_lumped_default_element(def, phi, &refined);
+        free(phi);
+        free(voc);
+    }
     out->element_length = l;
     out->nodes = fmax(8.0, floor(path->length / l + 0.5));
     out->idlers = 0.0;

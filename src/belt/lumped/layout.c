@@ -35,9 +35,8 @@ typedef struct weight_grid {
     double *dW;  /* [m] the weight of each grid step of path, unstretched */
 } weight_grid;
 
-/* belt and material at rest: the material lies from the feed point to where
- * the belt reaches the discharge pulley, when the belt starts loaded */
-static bd_rest_load rest_load(const bd_model_def *def, const bd_path *path)
+/* what loads the belt at rest (layout.h) */
+bd_rest_load bd_layout_rest_load(const bd_model_def *def, const bd_path *path)
 {
     bd_rest_load load = {def->belt.mass_per_length, 0.0, 0.0, 0.0, def->gravity};
     const bd_material_def *mat = &def->material;
@@ -58,7 +57,7 @@ static void weight_grid_build(const bd_model_def *def, const bd_path *path, doub
     g->ds = path->length / (double)g->m;
     g->W = bd_xcalloc((size_t)g->m + 1, sizeof *g->W);
     g->dW = bd_xcalloc((size_t)g->m, sizeof *g->dW);
-    bd_rest_load load = rest_load(def, path);
+    bd_rest_load load = bd_layout_rest_load(def, path);
     g->W[0] = 0.0;
     for (long i = 1; i <= g->m; i++) {
         g->dW[i - 1] = bd_rest_weight(path, &load, (double)(i - 1) * g->ds, (double)i * g->ds, 1);
@@ -171,7 +170,7 @@ static int takeup_level(const bd_model_def *def, const bd_path *path, const weig
     bd_path_wrap_dirs(path, k, &u_in, &u_out);
     const double *a = pd->takeup.axis;
     double F = bd_table_eval(&pd->takeup.force, 0.0);
-    bd_rest_load load = rest_load(def, path);
+    bd_rest_load load = bd_layout_rest_load(def, path);
     double W_in = weight_at(g, arc->s0);
     double W_out = weight_at(g, arc->s0 + arc->length);
     /* the wrap's belt, unstretched (weight_grid_stretch) */

@@ -8,6 +8,7 @@
 
 #include "beltdyn/model.h"
 #include "model/path.h"
+#include "model/rest_weight.h"
 
 typedef struct bd_layout_request {
     const bd_path *path;     /* the path of the model as given */
@@ -28,5 +29,8 @@ typedef struct bd_layout {
 int bd_layout_belt(const bd_model_def *def, const bd_layout_request *req, bd_layout *out,
                    char *err, size_t errlen);
 void bd_layout_free(bd_layout *l);
+/* belt and material at rest on path: the material from the feed point to
+ * where the belt reaches the discharge pulley, when the belt starts loaded */
+bd_rest_load bd_layout_rest_load(const bd_model_def *def, const bd_path *path);
 
 #endif

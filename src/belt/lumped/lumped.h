@@ -131,6 +131,15 @@ void bd_lumped_free(bd_sim *sim);
 void bd_lumped_free_model(bd_model *model);
 void bd_lumped_clone(bd_sim *dst, const bd_sim *src);
 double bd_lumped_stable_step(const bd_sim *sim, bd_time_step_limit *limit);
+/* idler_turn.c: the chord of 30° of the smallest pulley; φ (rad) and v/c
+ * of every idler set of the discrete belt without bending stiffness at
+ * rest (0 where none; returns whether any was found); the default element
+ * length, *refined when halved for the idlers' turn (phi may be NULL for
+ * other belts) */
+double bd_lumped_pulley_element(const bd_model_def *def);
+int bd_lumped_idler_turns(const bd_model_def *def, const bd_path *path, double *phi,
+                          double *voc);
+double bd_lumped_default_element(const bd_model_def *def, const double *phi, int *refined);
 void bd_lumped_estimate(const bd_model_def *def, const bd_path *path, bd_belt_estimate *out);
 double bd_lumped_support_inertia(const bd_sim *sim, double R, double J);
 

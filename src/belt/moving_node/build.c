@@ -438,7 +438,7 @@ double bd_mn_stable_step(const bd_sim *sim, bd_time_step_limit *limit)
             *limit = Kb > K ? BD_LIMIT_BENDING : BD_LIMIT_TRANSVERSE;
         }
     }
-    double v_ref = 1.2 * fmax(bd_drives_reference_speed(sim->model), 1.0);
+    double v_ref = 1.2 * fmax(bd_drives_reference_speed(sim->model->def), 1.0);
     for (int e = 0; e < n; e++) {
         double d = TRANSPORT_CFL * mm->ds0[e] / v_ref;
         if (d < dt) {
