@@ -1,10 +1,11 @@
 /* The warning where the discrete belt turns sharply over its idlers at
  * speed: φ and v/c of each idler set are the build's (belt/lumped/
- * idler_turn.c, which halves the default element for φ ≥ 0.05 rad). On generated conveyors at the 30° element the running force
- * ran above the resistance law on 8 of 13 with φ ≥ 0.10 rad and v ≥ 0.2·c,
- * on 1 of 88 with φ < 0.05 rad. At the halved element 2 of 13 conveyors
- * that had failed still did (seeds 1138 and 1213, φ 0.20 and 0.25 on
- * their return; docs/physics.md §10). */
+ * idler_turn.c, which halves the default element for φ ≥ 0.05 rad). On
+ * generated conveyors at the 30° element the running force ran above the
+ * resistance law on 8 of 13 with φ ≥ 0.10 rad and v ≥ 0.2·c, on 1 of 88
+ * with φ < 0.05 rad. At the halved element 2 of 13 conveyors that had
+ * failed still did (seeds 1138 and 1213, φ 0.20 and 0.25 on their return;
+ * docs/physics.md §10). */
 #include "sim/engine.h"
 
 #include <math.h>
