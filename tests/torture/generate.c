@@ -67,6 +67,14 @@ static void put_pulley(out *o, const char *name, double x, double y, double R, c
         put(o, "    bearing_damping: %.6g\n", bearing);
 }
 
+static double pulley_radius_min(const bd_model_def *def)
+{
+    double r = INFINITY;
+    for (int i = 0; i < def->pulley_count; i++)
+        r = fmin(r, def->pulleys[i].radius);
+    return r;
+}
+
 /* conveyor `seed`; an element drawn as a fraction of the default is that
  * fraction of `element_unit` (0: of the 30° chord of the smallest pulley);
  * `no_element` leaves belt.element_length out */
@@ -308,16 +316,19 @@ static size_t generate(unsigned long seed, const bd_gen_options *opt, double ele
     return o.len;
 }
 
-/* The element lengths are drawn up to the model's own default, which the
- * build takes from the pulleys and, for the discrete belt, from how sharply
- * the idlers turn it (belt/lumped/idler_turn.c): the conveyor is written
- * without one and compiled to find it. */
+/* The discrete belt's element lengths are drawn up to the model's own
+ * default, which the build halves where the idlers turn the belt sharply
+ * (belt/lumped/idler_turn.c): the conveyor is written without one and
+ * compiled to see whether it did. Other belts, and conveyors the build
+ * does not refine, are drawn as before, byte for byte. */
 size_t bd_gen_conveyor(unsigned long seed, const bd_gen_options *opt, char *buf, size_t size,
                        bd_gen_info *info)
 {
+    if (strcmp(opt->formulation, "discrete"))
+        return generate(seed, opt, 0.0, 0, buf, size, info);
     size_t len = generate(seed, opt, 0.0, 1, buf, size, info);
-    if (len >= size || !strcmp(opt->formulation, "axial"))
-        return len < size ? generate(seed, opt, 0.0, 0, buf, size, info) : len;
+    if (len >= size)
+        return len;
     double unit = 0.0;
     bd_model_def def;
     bd_diag diag;
@@ -325,7 +336,10 @@ size_t bd_gen_conveyor(unsigned long seed, const bd_gen_options *opt, char *buf,
     if (bd_model_load_string(buf, len, "generated", &def, &diag) == 0) {
         bd_sim *sim;
         if (bd_sim_create(&def, &sim, &diag) == 0) {
-            unit = bd_sim_element_length(sim);
+            /* halved: l0 is half the 30° chord, to the layout's rounding */
+            double chord = 2.0 * pulley_radius_min(&def) * sin(15.0 * PI / 180.0);
+            if (bd_sim_element_length(sim) < 0.75 * chord)
+                unit = 0.5 * chord;
             bd_sim_free(sim);
         }
         bd_model_def_free(&def);
