@@ -163,8 +163,6 @@ double bd_sim_time_step(const bd_sim *sim);      /* s */
 int bd_sim_node_count(const bd_sim *sim);
 const char *bd_sim_formulation(const bd_sim *sim);   /* "discrete", "axial" */
 double bd_sim_belt_length(const bd_sim *sim);    /* m, the loop's path at t = 0 */
-/* m, the unstretched length of a belt element (the mean where they differ) */
-double bd_sim_element_length(const bd_sim *sim);
 /* m, length of the span leaving pulley i */
 double bd_sim_span_length(const bd_sim *sim, int pulley);
 /* where the span leaving pulley `pulley` starts and ends on the path at

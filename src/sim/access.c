@@ -10,7 +10,6 @@ double bd_sim_time_step(const bd_sim *sim) { return sim->model->dt; }
 int bd_sim_node_count(const bd_sim *sim) { return sim->model->n; }
 const char *bd_sim_formulation(const bd_sim *sim) { return sim->model->belt->name; }
 double bd_sim_belt_length(const bd_sim *sim) { return sim->model->path.length; }
-double bd_sim_element_length(const bd_sim *sim) { return sim->model->l0; }
 
 double bd_sim_span_length(const bd_sim *sim, int pulley)
 {

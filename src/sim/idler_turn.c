@@ -8,7 +8,6 @@
  * docs/physics.md §10). */
 #include "sim/engine.h"
 
-#include <math.h>
 
 #include "parts/parts.h"
 
@@ -18,7 +17,7 @@
 int bd_idler_turn(const bd_sim *sim, int k, double *phi, double *v_over_c)
 {
     const bd_model *m = sim->model;
-    if (!m->idler_turn || m->EI > 0.0 || !(m->idler_turn[k] > 0.0))
+    if (!m->idler_turn || !(m->idler_turn[k] > 0.0))
         return 0;
     *phi = m->idler_turn[k];
     *v_over_c = m->idler_turn_speed[k];

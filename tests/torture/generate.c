@@ -8,12 +8,12 @@
  * leaving the head rises over it, so the head's wrap is more than 180°. */
 #include "generate.h"
 
-#include "beltdyn/model.h"
-#include "beltdyn/sim.h"
+#include "belt/lumped/lumped.h"
 
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #define G 9.81
@@ -65,14 +65,6 @@ static void put_pulley(out *o, const char *name, double x, double y, double R, c
            "    mass: %.6g\n", name, x, y, R, wrap, mass);
     if (bearing > 0.0)
         put(o, "    bearing_damping: %.6g\n", bearing);
-}
-
-static double pulley_radius_min(const bd_model_def *def)
-{
-    double r = INFINITY;
-    for (int i = 0; i < def->pulley_count; i++)
-        r = fmin(r, def->pulleys[i].radius);
-    return r;
 }
 
 /* conveyor `seed`; an element drawn as a fraction of the default is that
@@ -318,9 +310,9 @@ static size_t generate(unsigned long seed, const bd_gen_options *opt, double ele
 
 /* The discrete belt's element lengths are drawn up to the model's own
  * default, which the build halves where the idlers turn the belt sharply
- * (belt/lumped/idler_turn.c): the conveyor is written without one and
- * compiled to see whether it did. Other belts, and conveyors the build
- * does not refine, are drawn as before, byte for byte. */
+ * (belt/lumped/idler_turn.c, asked here with the conveyor written without
+ * one). Other belts, and conveyors the build does not refine, are drawn as
+ * before, byte for byte. */
 size_t bd_gen_conveyor(unsigned long seed, const bd_gen_options *opt, char *buf, size_t size,
                        bd_gen_info *info)
 {
@@ -334,13 +326,19 @@ size_t bd_gen_conveyor(unsigned long seed, const bd_gen_options *opt, char *buf,
     bd_diag diag;
     bd_diag_init(&diag);
     if (bd_model_load_string(buf, len, "generated", &def, &diag) == 0) {
-        bd_sim *sim;
-        if (bd_sim_create(&def, &sim, &diag) == 0) {
-            /* halved: l0 is half the 30° chord, to the layout's rounding */
-            double chord = 2.0 * pulley_radius_min(&def) * sin(15.0 * PI / 180.0);
-            if (bd_sim_element_length(sim) < 0.75 * chord)
-                unit = 0.5 * chord;
-            bd_sim_free(sim);
+        bd_path path;
+        if (bd_path_build(&def, &path, &diag) == 0) {
+            size_t sets = (size_t)(def.idler_set_count > 0 ? def.idler_set_count : 1);
+            double *phi = calloc(sets, sizeof *phi), *voc = calloc(sets, sizeof *voc);
+            int refined = 0;
+            if (phi && voc) {
+                bd_lumped_idler_turns(&def, &path, phi, voc);
+                double l = bd_lumped_default_element(&def, phi, &refined);
+                unit = refined ? l : 0.0;
+            }
+            free(phi);
+            free(voc);
+            bd_path_free(&path);
         }
         bd_model_def_free(&def);
     }
