@@ -328,16 +328,9 @@ size_t bd_gen_conveyor(unsigned long seed, const bd_gen_options *opt, char *buf,
     if (bd_model_load_string(buf, len, "generated", &def, &diag) == 0) {
         bd_path path;
         if (bd_path_build(&def, &path, &diag) == 0) {
-            size_t sets = (size_t)(def.idler_set_count > 0 ? def.idler_set_count : 1);
-            double *phi = calloc(sets, sizeof *phi), *voc = calloc(sets, sizeof *voc);
-            int refined = 0;
-            if (phi && voc) {
-                bd_lumped_idler_turns(&def, &path, phi, voc);
-                double l = bd_lumped_default_element(&def, phi, &refined);
-                unit = refined ? l : 0.0;
-            }
-            free(phi);
-            free(voc);
+            int refined;
+            double l = bd_lumped_default_element_on(&def, &path, &refined);
+            unit = refined ? l : 0.0;
             bd_path_free(&path);
         }
         bd_model_def_free(&def);

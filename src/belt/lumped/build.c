@@ -371,16 +371,9 @@ static double node_bytes(void)
 void bd_lumped_estimate(const bd_model_def *def, const bd_path *path, bd_belt_estimate *out)
 {
     double l = def->belt.element_length;
-    if (!(l > 0.0)) {
-        size_t sets = (size_t)(def->idler_set_count > 0 ? def->idler_set_count : 1);
-        double *phi = bd_xcalloc(sets, sizeof *phi), *voc = bd_xcalloc(sets, sizeof *voc);
-        int refined;
-        if (def->belt.formulation == BD_FORMULATION_DISCRETE)
-            bd_lumped_idler_turns(def, path, phi, voc);
-        l = bd_lumped_default_element(def, phi, &refined);
-        free(phi);
-        free(voc);
-    }
+    int refined;
+    if (!(l > 0.0))
+        l = bd_lumped_default_element_on(def, path, &refined);
     out->element_length = l;
     out->nodes = fmax(8.0, floor(path->length / l + 0.5));
     out->idlers = 0.0;

@@ -24,7 +24,9 @@
 #include "belt/lumped/lumped.h"
 
 #include <math.h>
+#include <stdlib.h>
 
+#include "base/alloc.h"
 #include "base/constants.h"
 #include "belt/lumped/layout.h"
 #include "parts/parts.h"
@@ -102,4 +104,17 @@ double bd_lumped_default_element(const bd_model_def *def, const double *phi, int
         if (phi[k] >= REFINE_TURN_RAD)
             *refined = 1;
     return *refined ? 0.5 * l : l;
+}
+
+double bd_lumped_default_element_on(const bd_model_def *def, const bd_path *path,
+                                    int *refined)
+{
+    size_t sets = (size_t)(def->idler_set_count > 0 ? def->idler_set_count : 1);
+    double *phi = bd_xcalloc(sets, sizeof *phi), *voc = bd_xcalloc(sets, sizeof *voc);
+    if (def->belt.formulation == BD_FORMULATION_DISCRETE)
+        bd_lumped_idler_turns(def, path, phi, voc);
+    double l = bd_lumped_default_element(def, phi, refined);
+    free(phi);
+    free(voc);
+    return l;
 }

@@ -140,6 +140,9 @@ double bd_lumped_pulley_element(const bd_model_def *def);
 int bd_lumped_idler_turns(const bd_model_def *def, const bd_path *path, double *phi,
                           double *voc);
 double bd_lumped_default_element(const bd_model_def *def, const double *phi, int *refined);
+/* the same from the definition and its path alone (the estimate, tests) */
+double bd_lumped_default_element_on(const bd_model_def *def, const bd_path *path,
+                                    int *refined);
 void bd_lumped_estimate(const bd_model_def *def, const bd_path *path, bd_belt_estimate *out);
 double bd_lumped_support_inertia(const bd_sim *sim, double R, double J);
 
