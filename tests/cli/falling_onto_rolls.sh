@@ -15,10 +15,12 @@
 if python3 -c 'import json,sys; s=json.load(open(sys.argv[1])); assert s["status"] == "completed"' \
     "$tmp/out/summary.json" 2>/dev/null; then ok "completed"
 else bad "status" "$(cat "$tmp/stderr")"; fi
-fall=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["energy"]["dissipation_fall_rel"])' \
-    "$tmp/out/summary.json")
-balance=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["energy"]["balance_error_rel"])' \
-    "$tmp/out/summary.json")
+energy() {
+    python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["energy"][sys.argv[2]])' \
+        "$tmp/out/summary.json" "$1"
+}
+fall=$(energy dissipation_fall_rel)
+balance=$(energy balance_error_rel)
 if python3 -c "import sys; sys.exit(0 if $fall <= 1e-9 else 1)"; then
     ok "dissipated energy never fell (largest fall $fall of the energy scale)"
 else bad "dissipation fell" "$fall of the energy scale, allowed 1e-9"; fi
