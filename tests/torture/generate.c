@@ -146,13 +146,15 @@ static size_t generate(unsigned long seed, const bd_gen_options *opt, double ele
     }
     double wraps = drives == DRIVE_DUAL ? 2.0 : 1.0;
     double T_slip = F_start / wraps * 1.3 / (exp(mu_d * PI) - 1.0) + mB * G * fabs(H);
-    /* a drive at the foot of a loaded incline with the takeup at the head:
-     * its slack side is the carry leaving the tail, below the takeup's
-     * tension by the carry's lift and resistance, the material's share of
-     * which grows as the belt fills (seed 3341 slipped at half speed once
-     * full) */
-    if (drives != DRIVE_HEAD && takeup == LOOP_HEAD && mL > 0.0 && H > 0.0)
-        T_slip += mL * G * H + rr * G * cosd * Lc * mL;
+    /* a tail drive's slack side is the carry leaving the tail: with the
+     * takeup at the head it sits below the takeup's tension by the
+     * carry's lift and resistance and the feed's acceleration of the
+     * material (the belt's own lift is in the term above). Seed 3341
+     * (loaded, +12°) slipped at half speed once full without it. On a
+     * dual drive the head drive's pull raises the carry above the tail
+     * by its share, so there the term errs on the safe side. */
+    if (drives != DRIVE_HEAD && takeup == LOOP_HEAD)
+        T_slip += fmax(0.0, mL * G * H + rr * G * cosd * Lc * (mB + mL) + mL * v * v);
     double T_sag = (mB + mL) * G * a_carry / (8.0 * 0.015);
     double T0 = (T_slip > T_sag ? T_slip : T_sag) * uniform(&r, 1.1, 1.5);
     double T_max = T0 + F_start + mB * G * fabs(H);

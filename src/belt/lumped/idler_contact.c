@@ -114,7 +114,8 @@ static double newton_step(const bd_sim *sim, double cx, double cy, int *kp, doub
     double den = h > 0.0 ? h : dB2;
     double step = den > 0.0 ? (Bx * dBx + By * dBy) / den : 0.0;
     t -= step;
-    /* past the piece's end: the same point on the next piece's start */
+    /* past the piece's end: onto the neighbouring piece, the previous
+     * one's end or the next one's start (where the two pieces meet) */
     if (t < 0.0) {
         *kp = a;
         *tp = t + 1.0 < 0.0 ? 0.0 : t + 1.0;
@@ -129,19 +130,33 @@ static double newton_step(const bd_sim *sim, double cx, double cy, int *kp, doub
     return fabs(step);
 }
 
+/* the squared distance from c of the smoothed line's point at t on the
+ * piece round node k */
+static double distance2(const bd_sim *sim, int k, double t, const double c[2])
+{
+    bd_idler_touch scratch;
+    double r[2];
+    piece_at(sim, k, t, c, &scratch, r);
+    return r[0] * r[0] + r[1] * r[1];
+}
+
 /* the point of the smoothed belt line nearest the roll's centre c, by
  * Newton steps from the point the tracker's foot point maps to. One step
  * is exact on a straight belt and off by the square of its size on a bent
- * one; that is all a belt running over its rolls needs, and a second step
+ * one. That is all a belt running over its rolls needs, and a second step
  * in every idler's chain made bench_long_conveyor 15 % slower. A step
- * longer than NEAREST_ONE_STEP of the piece, or one onto the next piece,
- * is followed by more, to convergence: a belt falling onto its rolls
- * bends sharply at them, and the point one step found was on the wrong
- * piece. A node then sank 0.85 mm into a roll unseen, and the contact
- * threw it out with 70 kN and 60 J the account had not booked as stored
- * (generated seed 2089, element 0.043 m, start from rest: the dissipated
- * energy fell by 5.4·10⁻⁴ of the energy scale; issue 10). The normal
- * then turns smoothly as the nodes pass the roll. */
+ * longer than NEAREST_ONE_STEP of the piece, or one onto a neighbouring
+ * piece, is followed by more, to convergence, and the nearest of the
+ * points they pass is kept (a roll inside a sharp corner converges only
+ * slowly, and the steps may swing between two pieces). A belt falling
+ * onto its rolls bends sharply at them, and there the point one step
+ * found was on the wrong piece. A node then sank 0.85 mm into a roll
+ * unseen, and the contact threw it out with 70 kN. The account had not
+ * booked that energy as stored, so the dissipated energy fell: by
+ * 5.2·10⁻⁵ of the energy scale in the first 0.6 s of generated seed 2089
+ * at a 0.043 m element (started from rest), by 5.4·10⁻⁴ over torture's
+ * 51 s (issue 10; tests/cli/falling_onto_rolls.sh). The normal then
+ * turns smoothly as the nodes pass the roll. */
 static void nearest_point(const bd_sim *sim, const bd_idler *id, bd_idler_touch *pc)
 {
     const int n = sim->model->n;
@@ -156,9 +171,21 @@ static void nearest_point(const bd_sim *sim, const bd_idler *id, bd_idler_touch 
         t = id->tr.gamma + 0.5;
     }
     if (newton_step(sim, cx, cy, &k, &t) > NEAREST_ONE_STEP) {
-        for (int it = 0; it < NEAREST_STEPS; it++)
-            if (newton_step(sim, cx, cy, &k, &t) < NEAREST_CONVERGED)
+        int best_k = k;
+        double best_t = t, best = distance2(sim, k, t, id->m->centre);
+        for (int it = 0; it < NEAREST_STEPS; it++) {
+            double step = newton_step(sim, cx, cy, &k, &t);
+            double d2 = distance2(sim, k, t, id->m->centre);
+            if (d2 < best) {
+                best = d2;
+                best_k = k;
+                best_t = t;
+            }
+            if (step < NEAREST_CONVERGED)
                 break;
+        }
+        k = best_k;
+        t = best_t;
     }
     double r[2];
     piece_at(sim, k, t, id->m->centre, pc, r);
