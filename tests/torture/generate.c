@@ -127,7 +127,8 @@ static size_t generate(unsigned long seed, const bd_gen_options *opt, double ele
     double cosd = cos(incline), Lc = L / cosd;
     double idler_I = 0.01, idler_r = 0.0635;
     double F_run = rr * G * cosd * (Lc * (mB + mL) + Lc * mB) + mL * G * H + mL * v * v;
-    double M = 2.0 * Lc * mB + Lc * mL + (Lc / a_carry + Lc / a_return) * idler_I / (idler_r * idler_r)
+    double M = 2.0 * Lc * mB + Lc * mL
+             + (Lc / a_carry + Lc / a_return) * idler_I / (idler_r * idler_r)
              + drive_inertia / (Rh * Rh) + 600.0;
     double a_max = 2.0 * v / ramp;
     double F_start = fabs(F_run) + M * a_max;
@@ -284,7 +285,8 @@ static size_t generate(unsigned long seed, const bd_gen_options *opt, double ele
     if (takeup == TAIL_TAKEUP) {
         /* horizontal along the conveyor: the pull leads away from the head */
         if (constant_force)
-            put(&o, "    takeup: {type: constant_force, force: %.6g, mass: %.6g, axis: [%.6g, %.6g]}\n",
+            put(&o, "    takeup: {type: constant_force, force: %.6g, mass: %.6g, "
+                    "axis: [%.6g, %.6g]}\n",
                 T_takeup, carriage, -cos(incline), -sin(incline));
         else
             put(&o, "    takeup: {type: gravity, mass: %.6g, axis: [%.6g, %.6g]}\n",
