@@ -91,8 +91,8 @@ static void piece_at(const bd_sim *sim, int k, double t, const double c[2], bd_i
 }
 
 /* one Newton step on (B − c)·B' = 0 along the piece round node k from t,
- * onto the next piece's start or end when t leaves [0, 1]; the step's
- * size, or 1 on leaving the piece */
+ * onto the neighbouring piece when t leaves [0, 1]; the step's size, or 1
+ * on leaving the piece */
 static double newton_step(const bd_sim *sim, double cx, double cy, int *kp, double *tp)
 {
     const int n = sim->model->n;
