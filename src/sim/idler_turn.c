@@ -8,7 +8,6 @@
  * docs/physics.md §10). */
 #include "sim/engine.h"
 
-
 #include "parts/parts.h"
 
 #define TURN_WARN_RAD 0.10

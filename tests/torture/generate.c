@@ -146,14 +146,17 @@ static size_t generate(unsigned long seed, const bd_gen_options *opt, double ele
             t_acc = 1.0;
     }
     double wraps = drives == DRIVE_DUAL ? 2.0 : 1.0;
-    double T_slip = F_start / wraps * 1.3 / (exp(mu_d * PI) - 1.0) + mB * G * fabs(H);
-    /* a tail drive's slack side is the carry leaving the tail: with the
+    /* the slack side a drive needs for its start force by the capstan
+     * law T1/T2 = e^(μφ) (Euler–Eytelwein; seed 001, test_capstan) with
+     * 30 % margin, plus the belt's lift between it and the takeup.
+     * A tail drive's slack side is the carry leaving the tail: with the
      * takeup at the head it sits below the takeup's tension by the
      * carry's lift and resistance and the feed's acceleration of the
-     * material (the belt's own lift is in the term above). Seed 3341
+     * material (the belt's own lift is already counted). Seed 3341
      * (loaded, +12°) slipped at half speed once full without it. On a
      * dual drive the head drive's pull raises the carry above the tail
      * by its share, so there the term errs on the safe side. */
+    double T_slip = F_start / wraps * 1.3 / (exp(mu_d * PI) - 1.0) + mB * G * fabs(H);
     if (drives != DRIVE_HEAD && takeup == LOOP_HEAD)
         T_slip += fmax(0.0, mL * G * H + rr * G * cosd * Lc * (mB + mL) + mL * v * v);
     double T_sag = (mB + mL) * G * a_carry / (8.0 * 0.015);
