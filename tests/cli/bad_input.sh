@@ -103,6 +103,10 @@ case_bad bad_layout_compressed.yaml    20     "runs through"
 # an element longer than half the smallest pulley's circumference: refused
 # at the belt (found by CI's fuzz run as a leak on this path)
 case_bad bad_element_too_long.yaml     5      "element_length"
+# the same on a 0.5 µm bend under a discrete belt with idlers: the idlers'
+# turn once laid the belt at that pulley's chord and ran out of memory
+# (found by CI's fuzz run at stop 47)
+case_bad bad_element_tiny_pulley.yaml  5      "element_length"
 # a belt property so large its highest frequency overflows: no time step
 # (the fuzzer reached a NaN step and undefined behaviour in a transmission)
 case_bad bad_belt_overflow.yaml        5      "no stable time step"

@@ -32,6 +32,11 @@
 #include "parts/parts.h"
 
 #define REFINE_TURN_RAD 0.05
+/* the turns need the spans' tensions, not the belt's nodes: a belt given a
+ * long element on tiny pulleys is not laid at their chord to find them
+ * (13 MB at most; a 0.5 m element on a 0.5 µm bend pulley ran out of
+ * memory in `check`) */
+#define TURN_LAYOUT_MAX_NODES 1e5
 
 double bd_lumped_pulley_element(const bd_model_def *def)
 {
@@ -83,7 +88,8 @@ int bd_lumped_idler_turns(const bd_model_def *def, const bd_path *path, double *
     laid.simulation.initial_state = BD_INITIAL_STATIC;
     bd_layout lay;
     char err[256];
-    bd_layout_request req = {path, bd_lumped_pulley_element(def)};
+    double l = fmax(bd_lumped_pulley_element(def), path->length / TURN_LAYOUT_MAX_NODES);
+    bd_layout_request req = {path, l};
     if (bd_layout_belt(&laid, &req, &lay, err, sizeof err))
         return 0;
     double v = bd_drives_reference_speed(def);
