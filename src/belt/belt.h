@@ -51,6 +51,10 @@ typedef struct bd_belt_estimate {
     double idler_bytes;      /* bytes per idler body */
     double stable_step;      /* s, of elements element_length long */
     double rate;             /* (node + idler)-steps per second, measured */
+    /* the key and value that set the node count, for messages, when it is
+     * not belt.element_length ("belt.span_element_length: 1e-07 m"), else "" */
+    char element_what[96];
+    char element_advice[64]; /* what to change ("a larger wrap_element_angle_deg"), or "" */
 } bd_belt_estimate;
 
 typedef struct bd_belt_ops {

@@ -163,6 +163,9 @@ typedef enum bd_time_step_limit {
  * the nodes and time step actually made (sim/estimate.c) */
 typedef struct bd_cost {
     double element_length;    /* m, aimed at */
+    /* what sets the node count when not belt.element_length, and what to
+     * change (bd_belt_estimate), else "" */
+    char element_what[96], element_advice[64];
     double nodes, idlers;
     double bytes;             /* peak memory of the build and the run */
     double dt;                /* s, time step */

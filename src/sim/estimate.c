@@ -25,6 +25,7 @@
 
 #include <limits.h>
 #include <math.h>
+#include <string.h>
 #include <stdio.h>
 #include <sys/resource.h>
 #include <unistd.h>
@@ -111,9 +112,13 @@ static void what_it_makes(const bd_model_def *def, const bd_cost *c, double loop
     char idlers[64] = "";
     if (c->idlers > 0.0)
         snprintf(idlers, sizeof idlers, " and %.3g idlers", c->idlers);
-    snprintf(buf, len, "belt.element_length: %g m%s on a %.1f m belt loop makes about %.3g "
-             "nodes%s", c->element_length,
-             def->belt.element_length > 0.0 ? "" : " (the default)", loop, c->nodes, idlers);
+    if (c->element_what[0])
+        snprintf(buf, len, "%s on a %.1f m belt loop makes about %.3g nodes%s", c->element_what,
+                 loop, c->nodes, idlers);
+    else
+        snprintf(buf, len, "belt.element_length: %g m%s on a %.1f m belt loop makes about %.3g "
+                 "nodes%s", c->element_length,
+                 def->belt.element_length > 0.0 ? "" : " (the default)", loop, c->nodes, idlers);
 }
 
 int bd_cost_from_def(const bd_model_def *def, double duration, bd_cost *c, double *loop)
@@ -127,7 +132,10 @@ int bd_cost_from_def(const bd_model_def *def, double duration, bd_cost *c, doubl
     if (bad)
         return -1;
     bd_belt_estimate be;
+    memset(&be, 0, sizeof be);
     ops->estimate(def, &path, &be);
+    snprintf(c->element_what, sizeof c->element_what, "%s", be.element_what);
+    snprintf(c->element_advice, sizeof c->element_advice, "%s", be.element_advice);
     if (loop)
         *loop = path.length;
     bd_path_free(&path);
@@ -165,7 +173,8 @@ int bd_cost_estimate(bd_sim *sim, bd_diag *diag)
             snprintf(limit, sizeof limit, " (this machine's physical memory)");
         bd_diag_error(diag, def->source, def->belt.mark,
                       "%s, needing about %s of memory: more than the %s this process may "
-                      "use%s; use a longer element_length", makes, mem, avail, limit);
+                      "use%s; use %s", makes, mem, avail, limit,
+                      c->element_advice[0] ? c->element_advice : "a longer element_length");
         return 1;
     }
     char steps[320];
@@ -174,9 +183,9 @@ int bd_cost_estimate(bd_sim *sim, bd_diag *diag)
              "memory %s", def->simulation.duration, c->dt, c->steps, time, c->rate, mem, phys);
     if (c->seconds > REFUSED_RUN_S) {
         bd_diag_error(diag, def->source, def->belt.mark,
-                      "%s: %s; refused, a run of more than %g days is not practical: use a "
-                      "longer element_length or a shorter simulation.duration", makes, steps,
-                      REFUSED_RUN_S / 86400.0);
+                      "%s: %s; refused, a run of more than %g days is not practical: use %s "
+                      "or a shorter simulation.duration", makes, steps, REFUSED_RUN_S / 86400.0,
+                      c->element_advice[0] ? c->element_advice : "a longer element_length");
         return 1;
     }
     if (c->seconds > LONG_RUN_S)

@@ -107,6 +107,10 @@ case_bad bad_element_too_long.yaml     5      "element_length"
 # turn once laid the belt at that pulley's chord and ran out of memory
 # (found by CI's fuzz run at stop 47)
 case_bad bad_element_tiny_pulley.yaml  5      "element_length"
+# the moving-node belt's own element keys: a count past any int, and the
+# key that sets the count named (not element_length, which it does not use)
+case_bad bad_mn_wrap_angle.yaml        5      "wrap_element_angle_deg"
+case_bad bad_mn_span_element.yaml      4      "span_element_length"
 # a belt property so large its highest frequency overflows: no time step
 # (the fuzzer reached a NaN step and undefined behaviour in a transmission)
 case_bad bad_belt_overflow.yaml        5      "no stable time step"

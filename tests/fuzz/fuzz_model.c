@@ -60,6 +60,16 @@ static int too_big(const bd_model_def *m)
     }
     if (!(L / el <= FUZZ_MAX_POINTS))
         return 1;
+    /* the moving-node belt's own elements: spans by span_element_length
+     * (else the idler spacing, else 1 m) and the wraps by their angle */
+    if (m->belt.formulation == BD_FORMULATION_MOVING_NODE) {
+        double span = m->belt.span_element_length > 0.0 ? m->belt.span_element_length : 1.0;
+        for (int k = 0; k < m->idler_set_count; k++)
+            span = fmin(span, m->idler_sets[k].spacing);
+        double arcs = m->pulley_count * (2.0 * FUZZ_PI / m->belt.wrap_element_angle + 1.0);
+        if (!(L / span + arcs <= FUZZ_MAX_POINTS))
+            return 1;
+    }
     for (int k = 0; k < m->idler_set_count; k++)
         if (!(L / m->idler_sets[k].spacing <= FUZZ_MAX_POINTS))
             return 1;

@@ -10,11 +10,13 @@
 #include "belt/moving_node/moving_node.h"
 
 #include "base/alloc.h"
+#include "base/constants.h"
 #include "laws/stable_step.h"
 #include "parts/parts.h"
 
 #include <math.h>
 #include <stddef.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 /* the belt's passage per step through an element, at most (stable_step) */
@@ -293,7 +295,7 @@ int bd_mn_build(bd_sim *sim, bd_diag *diag)
     sim->own->belt_model = bd_xcalloc(1, sizeof(bd_mn_model));
     bd_mn_model *mm = bd_mn_model_build(sim);
     bd_mn *mn = bd_mn_of(sim);
-    int n = bd_mn_layout_count(def, &sim->model->path);
+    int n = (int)bd_mn_layout_count(def, &sim->model->path, NULL);
     sim->own->n = n;
     sim->own->s_node0 = bd_xcalloc((size_t)n, sizeof *sim->own->s_node0);
     alloc_arrays(sim);
@@ -535,9 +537,27 @@ void bd_mn_clone(bd_sim *dst, const bd_sim *src)
  * limit, which needs the tensions) */
 void bd_mn_estimate(const bd_model_def *def, const bd_path *path, bd_belt_estimate *out)
 {
-    double lref = mean_span_element(def, path);
+    double lref = mean_span_element(def, path), arcs;
     out->element_length = lref;
-    out->nodes = bd_mn_layout_count(def, path);
+    out->nodes = bd_mn_layout_count(def, path, &arcs);
+    /* what sets the count, for a refusal's message (sim/estimate.c) */
+    if (arcs > out->nodes - arcs)
+    {
+        snprintf(out->element_what, sizeof out->element_what,
+                 "belt.wrap_element_angle_deg: %g° on the wraps",
+                 def->belt.wrap_element_angle / BD_DEG);
+        snprintf(out->element_advice, sizeof out->element_advice,
+                 "a larger wrap_element_angle_deg");
+    } else if (def->belt.span_element_length > 0.0) {
+        snprintf(out->element_what, sizeof out->element_what, "belt.span_element_length: %g m",
+                 def->belt.span_element_length);
+        snprintf(out->element_advice, sizeof out->element_advice, "a longer span_element_length");
+    } else {
+        snprintf(out->element_what, sizeof out->element_what,
+                 "belt.span_element_length (not given: each span's idler spacing, the mean "
+                 "element %.3g m)", lref);
+        snprintf(out->element_advice, sizeof out->element_advice, "a longer span_element_length");
+    }
     out->idlers = 0.0;
     out->node_bytes = (double)(bd_node_arrays_bytes()
                                + (size_t)(COUNT(STATE_DOUBLES) + COUNT(MODEL_DOUBLES) + 2)

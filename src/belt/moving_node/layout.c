@@ -93,30 +93,35 @@ static int span_points(const bd_model_def *def, const bd_path *path, int j, hard
 }
 
 /* elements over a piece of span of length d */
-static int piece_elements(double d, double target)
+static double piece_elements(double d, double target)
 {
-    int k = (int)ceil(d / target - 1e-9);
-    return k < 1 ? 1 : k;
+    double k = ceil(d / target - 1e-9);
+    return k < 1.0 ? 1.0 : k;
 }
 
-/* elements on the arc of pulley p */
-static int arc_elements(const bd_model_def *def, const bd_path *path, int p)
+/* elements on the arc of pulley p. Counted in doubles: a tiny
+ * wrap_element_angle_deg (the loader takes any above 0) made 1.8e11 per
+ * arc, past any int, and `check` then said 8 nodes; the estimate
+ * (sim/estimate.c) refuses such a count before the build asks for it */
+static double arc_elements(const bd_model_def *def, const bd_path *path, int p)
 {
     double wrap = bd_path_wrap_angle(path, p);
     if (wrap < 1e-9)
-        return 0;
-    int k = (int)ceil(wrap / def->belt.wrap_element_angle - 1e-9);
-    return k < 1 ? 1 : k;
+        return 0.0;
+    double k = ceil(wrap / def->belt.wrap_element_angle - 1e-9);
+    return k < 1.0 ? 1.0 : k;
 }
 
 /* walk the loop: spans with their hard points, then the arcs; each node
  * reported to `put` (NULL: count only) */
 typedef void (*put_fn)(bd_sim *sim, int i, double s, int kind, int pulley, int set);
 
-static int walk(const bd_model_def *def, const bd_path *path, bd_sim *sim, put_fn put)
+static double walk(const bd_model_def *def, const bd_path *path, bd_sim *sim, put_fn put,
+                   double *arcs)
 {
     const int np = path->pulley_count;
-    int n = 0;
+    double n = 0.0;
+    *arcs = 0.0;
     for (int j = 0; j < np; j++) {
         const bd_path_segment *sp = bd_path_span(path, j);
         double target = bd_mn_span_target(def, path, j);
@@ -124,21 +129,21 @@ static int walk(const bd_model_def *def, const bd_path *path, bd_sim *sim, put_f
         int m = span_points(def, path, j, &hp);
         /* the span's first node is pulley j's tangent-out point */
         if (put)
-            put(sim, n, sp->s0, BD_MN_ARC, j, -1);
+            put(sim, (int)n, sp->s0, BD_MN_ARC, j, -1);
         n++;
         double from = 0.0;
         for (int h = 0; h <= m; h++) {
             double to = h < m ? hp[h].rel : sp->length;
-            int k = piece_elements(to - from, target);
-            for (int c = 1; c < k; c++) {
-                if (put)
-                    put(sim, n, sp->s0 + from + c * (to - from) / k, BD_MN_FREE, -1, -1);
-                n++;
-            }
+            double k = piece_elements(to - from, target);
+            if (put)
+                for (int c = 1; c < (int)k; c++)
+                    put(sim, (int)n + c - 1, sp->s0 + from + c * (to - from) / k, BD_MN_FREE,
+                        -1, -1);
+            n += k - 1.0;
             if (h < m) {
                 if (put)
-                    put(sim, n, sp->s0 + to, hp[h].set >= 0 ? BD_MN_IDLER : BD_MN_FREE, -1,
-                        hp[h].set);
+                    put(sim, (int)n, sp->s0 + to,
+                        hp[h].set >= 0 ? BD_MN_IDLER : BD_MN_FREE, -1, hp[h].set);
                 n++;
             }
             from = to;
@@ -148,19 +153,23 @@ static int walk(const bd_model_def *def, const bd_path *path, bd_sim *sim, put_f
          * tangent-out being the next span's first node */
         int p = (j + 1) % np;
         const bd_path_segment *arc = bd_path_arc(path, p);
-        int k = arc_elements(def, path, p);
-        for (int c = 0; c < k; c++) {
-            if (put)
-                put(sim, n, arc->s0 + c * arc->length / k, BD_MN_ARC, p, -1);
-            n++;
-        }
+        double k = arc_elements(def, path, p);
+        if (put)
+            for (int c = 0; c < (int)k; c++)
+                put(sim, (int)n + c, arc->s0 + c * arc->length / k, BD_MN_ARC, p, -1);
+        n += k;
+        *arcs += k;
     }
     return n;
 }
 
-int bd_mn_layout_count(const bd_model_def *def, const bd_path *path)
+double bd_mn_layout_count(const bd_model_def *def, const bd_path *path, double *arc_nodes)
 {
-    return walk(def, path, NULL, NULL);
+    double arcs;
+    double n = walk(def, path, NULL, NULL, &arcs);
+    if (arc_nodes)
+        *arc_nodes = arcs;
+    return n;
 }
 
 /* the node's place and what stands there (the arrays are allocated) */
@@ -240,7 +249,8 @@ static void element_geometry(bd_sim *sim)
  * arc nodes (the arrays of [n] are allocated, n from bd_mn_layout_count) */
 void bd_mn_layout_fill(bd_sim *sim)
 {
-    walk(sim->model->def, &sim->model->path, sim, put_node);
+    double arcs;
+    walk(sim->model->def, &sim->model->path, sim, put_node, &arcs);
     element_geometry(sim);
     /* the arc length each arc node stands for, and each pulley's arc nodes */
     bd_mn_model *mm = bd_mn_model_build(sim);

@@ -187,7 +187,10 @@ static inline double bd_mn_element_length(const bd_mn_model *mm, const bd_mn *mn
 
 /* layout.c: the nodes on the path */
 void bd_mn_layout_fill(bd_sim *sim);
-int bd_mn_layout_count(const bd_model_def *def, const bd_path *path);
+/* the layout's node count (a double: the estimate refuses counts past an
+ * int before the build asks), and in *arc_nodes (may be NULL) those on
+ * the wraps */
+double bd_mn_layout_count(const bd_model_def *def, const bd_path *path, double *arc_nodes);
 double bd_mn_span_target(const bd_model_def *def, const bd_path *path, int span);
 
 /* build.c */
