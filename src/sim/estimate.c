@@ -25,8 +25,8 @@
 
 #include <limits.h>
 #include <math.h>
-#include <string.h>
 #include <stdio.h>
+#include <string.h>
 #include <sys/resource.h>
 #include <unistd.h>
 

@@ -541,8 +541,7 @@ void bd_mn_estimate(const bd_model_def *def, const bd_path *path, bd_belt_estima
     out->element_length = lref;
     out->nodes = bd_mn_layout_count(def, path, &arcs);
     /* what sets the count, for a refusal's message (sim/estimate.c) */
-    if (arcs > out->nodes - arcs)
-    {
+    if (arcs > out->nodes - arcs) {
         snprintf(out->element_what, sizeof out->element_what,
                  "belt.wrap_element_angle_deg: %g° on the wraps",
                  def->belt.wrap_element_angle / BD_DEG);
