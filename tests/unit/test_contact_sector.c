@@ -12,33 +12,21 @@
  * let through. */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 
 #include "beltdyn/model.h"
 #include "beltdyn/sim.h"
 #include "testlib.h"
 
-static const char *model =
-    "name: gravity-free frictionless undamped loop from rest\n"
-    "gravity: 0\n"
-    "belt: {mass_per_length: 20, axial_stiffness: 5.0e6, damping_ratio: 0}\n"
-    "pulleys:\n"
-    "  - {name: a, x: 20, y: 0, radius: 0.4, wrap: cw, mass: 200,\n"
-    "     friction: {static: 0, dynamic: 0}}\n"
-    "  - name: b\n"
-    "    x: 0\n"
-    "    y: 0\n"
-    "    radius: 0.4\n"
-    "    wrap: cw\n"
-    "    mass: 200\n"
-    "    friction: {static: 0, dynamic: 0}\n"
-    "    takeup: {type: constant_force, force: 20000, mass: 100, axis: [-1, 0]}\n"
-    "simulation: {duration: 10, initial_state: rest}\n";
-
 int main(void)
 {
     bd_model_def def;
     bd_sim *sim;
+    char *model = bd_test_read_data("loop_from_rest.yaml");
+    if (!model)
+        return bd_test_finish("contact_sector");
     bd_test_make_sim(model, &def, &sim);
+    free(model);
     int n = bd_sim_node_count(sim);
     double deepest = 0.0, deepest_t = 0.0;
     char err[512] = "";

@@ -46,8 +46,10 @@ void bd_mn_integrate(bd_sim *sim, double *ke_out, double *w_nc_out)
     sim->energy.dissipated += d_up * dt;
     for (int e = 0; e < n; e++)
         dX[e] += flux[e] - flux[bd_node_next(e, n)];
-    for (int i = 0; i < n; i++)
+    for (int i = 0; i < n; i++) {
+        mn->vold[i] = v[i];   /* the four-level rule's (solve.c) */
         v[i] = vn[i];
+    }
     /* across the spans */
     for (int i = 0; i < n; i++) {
         if (mm->kind[i] == BD_MN_ARC)

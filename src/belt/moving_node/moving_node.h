@@ -120,9 +120,11 @@ typedef struct bd_mn {
                                  travel the geometry follows, summed step by step
                                  (the run's own q restarts at 0 after
                                  stabilization; the belt's lengths must not) */
-    double *ca, *cb;          /* [n] the solve's a_e, b_e for coef_dt */
-    double *cna, *cnb;        /* [n] their numerical parts (solve.c) */
-    double coef_dt;           /* s, the step they are for (0: none yet) */
+    double *ca, *cb;          /* [n] step (supports): the solve's a_e, b_e */
+    double *cna, *cnb, *cnc;  /* [n] their numerical parts, on Δv⁺, Δv⁻, Δv⁻⁻
+                                 (solve.c) */
+    double *vold;             /* [n] step (integrate): v at t − 3Δt/2 */
+    double coef_dt;           /* s, the last step's (0 before the first) */
     unsigned char *contact;   /* [n] step (supports): BD_MN_STICK .. OFF */
     double *Q;                /* [pulley_count] step (wrap): external torque */
     double *A;                /* [pulley_count²] scratch: the pulleys' system */

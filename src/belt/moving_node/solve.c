@@ -43,60 +43,77 @@ typedef struct affine {
 } affine;
 
 /* A wrap element the step does not resolve (a wave crosses it in less
- * than a step) has its own modes far above 1/Δt. The
- * trapezoidal rule leaves such modes undamped at the amplification −1, and
- * the explicit transport of strain through the nodes then drives them
- * (measured: an odd-even tension ripple on a driven pulley's slip arc grew
- * ×3 every 0.08 s; with a dashpot Δt·k/2 on v⁺ it still grew over 10 s on
- * a dual drive's tail arc). Such an element takes its tension at the end
- * of the step instead, T(t) + k·Δt·Δv⁺ (backward Euler: amplification 0
- * for its own modes, which only carry the quasi-static strain the arc
- * needs), i.e. the trapezoidal force plus k·Δt·(3Δv⁺ + Δv⁻)/4, booked as
- * numerical dissipation. Span elements keep the trapezoidal rule even when
- * a wave crosses them in less than a step (the short spans of a takeup
- * loop at 1 m elements): backward Euler there damped the waves through the
- * loop (cement plant, Δt 1.9 ms: takeup travel −6 %, tension swing at the
- * drive −16 %), the trapezoidal rule does not (≤ 0.2 % from Δt/2). */
+ * than a step) has its own modes far above 1/Δt. The trapezoidal rule
+ * leaves them undamped at the amplification −1, a double root: any
+ * explicit coupling (the transport of strain through the nodes, the
+ * friction) pushes one root outside the unit circle (measured: an odd-even
+ * tension ripple on a driven pulley's slip arc grew ×3 every 0.08 s).
+ * Such an element takes its tension at the end of the step instead,
+ * T(t) + k·Δt·Δv⁺ (backward Euler: amplification 0 for its own modes,
+ * which only carry the quasi-static strain the arc needs), i.e. the
+ * trapezoidal force plus k·Δt·(3Δv⁺ + Δv⁻)/4, booked as numerical
+ * dissipation. Between two stuck nodes it costs nothing (Δv = 0), and
+ * where a node slips friction damps far more.
+ * Backward Euler also damps the slow modes, by a ratio of about ωΔt/2
+ * (0.02 at ωΔt = 0.04) in the strain the arc takes. Where no friction
+ * acts (a frictionless pulley, a lifted node) nothing else damped them:
+ * an undamped frictionless loop's takeup oscillation fell to half its
+ * amplitude in 10 s (to 29 % with 0.8 m pulleys), and issue 10's loop from
+ * rest booked 79 % of its energy as dissipated. An element whose two nodes
+ * both take no friction therefore follows a four-level rule on its
+ * elongation x, k·(8·x⁺ + 12·x + 6·x⁻ + x⁻⁻)/27: its weights sum to 1 and
+ * are centred on t (8 − 6 − 2 = 0), so it stays second-order; its roots
+ * for modes far above 1/Δt are a triple −½ (amplification ½ per step), and
+ * it damps the slow ones by a ratio of 1.2e-6 at ωΔt = 0.04. It stays
+ * stable while the implicit k = EA/ΔX (at build) is at least 0.97 of the
+ * element's tangent EA/ΔX(t), i.e. up to 3 % more strain than at build.
+ * In speeds (x⁺ − x = Δt·Δv⁺, x⁻ − x⁻⁻ = Δt·Δv⁻⁻): the trapezoidal force
+ * plus k·Δt·[(8/27 − 1/4)·Δv⁺ − (7/27 − 1/4)·Δv⁻ − Δv⁻⁻/27], booked as
+ * numerical dissipation. With friction it is not used: on a drive's slip
+ * arc friction switching sides drove an odd-even pattern of slip
+ * directions that an amplification of ½ did not hold (generated conveyor
+ * 3 diverged at 3.5 s), and on stuck arcs its ringing tripled the passes
+ * of the contact solve (cement plant) for no gain.
+ * Span elements keep the trapezoidal rule even when a wave crosses them
+ * in less than a step (the short spans of a takeup loop at 1 m elements):
+ * backward Euler there damped the waves through the loop (cement plant,
+ * Δt 1.9 ms: takeup travel −6 %, tension swing at the drive −16 %), the
+ * trapezoidal rule does not (≤ 0.2 % from Δt/2). */
 static inline int unresolved(const bd_mn_model *mm, int e, double dt)
 {
     return mm->on_arc[e] && mm->ds0[e] < mm->wave_speed * dt;
 }
 
-/* that extra force's factors on Δv⁺ and Δv⁻ */
-static inline double numerical_a(const bd_mn_model *mm, int e, double dt)
-{
-    return unresolved(mm, e, dt) ? 0.75 * dt * mm->k[e] : 0.0;
-}
-
-static inline double numerical_b(const bd_mn_model *mm, int e, double dt)
-{
-    return unresolved(mm, e, dt) ? 0.25 * dt * mm->k[e] : 0.0;
-}
-
-static inline double a_of(const bd_mn_model *mm, int e, double dt)
-{
-    return 0.25 * dt * mm->k[e] + 0.5 * mm->c[e] + numerical_a(mm, e, dt);
-}
-
-static inline double b_of(const bd_mn_model *mm, int e, double dt)
-{
-    return -0.25 * dt * mm->k[e] + 0.5 * mm->c[e] + numerical_b(mm, e, dt);
-}
-
-/* the coefficients, constant over a run: computed by the first step (the
- * time step is chosen after the belt is built) */
+/* the coefficients of this step: a wrap element's rule follows whether
+ * its nodes took friction in the last step. The first step starts the
+ * four-level rule from the speeds it has (Δv⁻⁻ = Δv⁻). */
 static void coefs(bd_sim *sim, double dt)
 {
     bd_mn *mn = bd_mn_of(sim);
     const bd_mn_model *mm = bd_mn_model_of(sim);
-    if (mn->coef_dt != dt) {
-        for (int e = 0; e < sim->model->n; e++) {
-            mn->ca[e] = a_of(mm, e, dt);
-            mn->cb[e] = b_of(mm, e, dt);
-            mn->cna[e] = numerical_a(mm, e, dt);
-            mn->cnb[e] = numerical_b(mm, e, dt);
+    const int n = sim->model->n;
+    if (mn->coef_dt == 0.0)
+        for (int i = 0; i < n; i++)
+            mn->vold[i] = sim->vx[i];
+    mn->coef_dt = dt;
+    for (int e = 0; e < n; e++) {
+        double na = 0.0, nb = 0.0, nc = 0.0;
+        if (unresolved(mm, e, dt)) {
+            if (mn->contact[e] != BD_MN_OFF || mn->contact[bd_node_next(e, n)] != BD_MN_OFF) {
+                na = 0.75 * dt * mm->k[e];
+                nb = 0.25 * dt * mm->k[e];
+            } else {
+                double kdt = dt * mm->k[e];
+                na = (8.0 / 27.0 - 0.25) * kdt;
+                nb = -(7.0 / 27.0 - 0.25) * kdt;
+                nc = -kdt / 27.0;
+            }
         }
-        mn->coef_dt = dt;
+        mn->ca[e] = 0.25 * dt * mm->k[e] + 0.5 * mm->c[e] + na;
+        mn->cb[e] = -0.25 * dt * mm->k[e] + 0.5 * mm->c[e] + nb;
+        mn->cna[e] = na;
+        mn->cnb[e] = nb;
+        mn->cnc[e] = nc;
     }
 }
 
@@ -501,8 +518,10 @@ void bd_mn_solve(bd_sim *sim)
     coefs(sim, dt);
     for (int i = 0; i < n; i++) {
         int b = bd_node_prev(i, n), j = bd_node_next(i, n);
+        const double *vo = mn->vold;
         mn->rhs[i] = sim->mass[i] * v[i] / dt + sim->fx[i]
-                   + mn->cb[i] * (v[j] - v[i]) - mn->cb[b] * (v[i] - v[b]);
+                   + mn->cb[i] * (v[j] - v[i]) - mn->cb[b] * (v[i] - v[b])
+                   + mn->cnc[i] * (vo[j] - vo[i]) - mn->cnc[b] * (vo[i] - vo[b]);
     }
     contact_from_pressure(sim);
     for (int clip = 0; clip < 3; clip++) {
@@ -536,7 +555,9 @@ void bd_mn_solve(bd_sim *sim)
         double dmi = 0.5 * (vn[j] - vn[i] + v[j] - v[i]), dmb = 0.5 * (vn[i] - vn[b] + v[i] - v[b]);
         double damp = mm->c[i] * dmi - mm->c[b] * dmb
                     + mn->cna[i] * (vn[j] - vn[i]) + mn->cnb[i] * (v[j] - v[i])
-                    - mn->cna[b] * (vn[i] - vn[b]) - mn->cnb[b] * (v[i] - v[b]);
+                    - mn->cna[b] * (vn[i] - vn[b]) - mn->cnb[b] * (v[i] - v[b])
+                    + mn->cnc[i] * (mn->vold[j] - mn->vold[i])
+                    - mn->cnc[b] * (mn->vold[i] - mn->vold[b]);
         sim->fnx[i] += damp + mn->fr[i];
         sim->fx[i] = sim->mass[i] * (vn[i] - v[i]) / dt;
     }
