@@ -1,0 +1,76 @@
+/* Issue 10's known answer, "the undamped frictionless loop from rest
+ * conserves energy", on every belt that runs it in a few seconds
+ * (discrete, axial, moving_node; rfe runs the same contacts as discrete).
+ *
+ * The issue's loop (tests/data/loop_from_rest.yaml: gravity-free,
+ * frictionless, undamped, a constant-force takeup, laid unstretched) gets
+ * its 20 kN as a step. Undamped, its tension then swings from 0 to twice
+ * the static value and its waves take the belt into compression every
+ * swing (−5 kN on the discrete belt; the run warns "the belt is in
+ * compression: raise the takeup force"). A 2D belt in compression lifts
+ * off its wraps and lands again when the tension returns, and a landing
+ * is inelastic: the discrete belt lost 15.0, 18.5 and 3.0 J at the first
+ * three returns (42 J of 421 J in 10 s, docs/physics.md §10). The axial
+ * belt carries compression as a negative tension and loses nothing; the
+ * moving-node belt's arc nodes stay on their arcs (test_mn_undamped).
+ *
+ * Here the takeup force rises from 0 to 20 kN over the first second, so
+ * the belt stays in tension and nothing may land. Over 10 s every belt
+ * must then book as dissipated less than 0.1 % of the work the takeup
+ * put in (about 424 J; measured: discrete 0.0006 J, axial 0 J,
+ * moving_node 0.0002 J), and balance its energy at the end within 0.1 %
+ * of it (measured 0.0006, 0.0007 and 0.0002 J). The 0.1 % is the
+ * issue's; what it allows for here is the contacts' and the transport's
+ * numerical work, which measures 10⁻⁶ of it. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "beltdyn/model.h"
+#include "beltdyn/sim.h"
+#include "testlib.h"
+
+static void run(const char *formulation)
+{
+    char *text = bd_test_read_data("loop_from_rest.yaml");
+    char *ramped = text ? bd_test_replaced(text, "force: 20000,", "force: [[0, 0], [1, 20000]],")
+                        : NULL;
+    char to[128];
+    snprintf(to, sizeof to, "damping_ratio: 0, formulation: %s}", formulation);
+    char *model = ramped ? bd_test_replaced(ramped, "damping_ratio: 0}", to) : NULL;
+    free(text);
+    free(ramped);
+    CHECK(model != NULL);
+    if (!model)
+        return;
+    bd_model_def def;
+    bd_sim *sim;
+    bd_test_make_sim(model, &def, &sim);
+    free(model);
+    bd_sim_book_energy_every_step(sim, 1);
+    int ok = bd_test_run_to(sim, 10.0) == 0;
+    bd_energy_state en;
+    bd_sim_energy(sim, &en);
+    /* the takeup's work is booked as input −∫q·dF: negative, its force
+     * rising while the carriage stands out */
+    double scale = fabs(en.input_J);
+    double err = en.kinetic_J + en.potential_J + en.dissipated_J - en.input_J - en.initial_J;
+    printf("%s: %s at t = %.3f s; takeup work %.1f J, dissipated %.4f J (%.2g %%), "
+           "balance %.2g J (%.2g %%)\n", formulation, ok ? "completed" : "failed",
+           bd_sim_time(sim), en.input_J, en.dissipated_J, 100.0 * en.dissipated_J / scale, err,
+           100.0 * err / scale);
+    CHECK(ok);
+    CHECK(scale > 300.0);
+    CHECK(fabs(en.dissipated_J) < 1e-3 * scale);
+    CHECK(fabs(err) < 1e-3 * scale);
+    bd_sim_free(sim);
+    bd_model_def_free(&def);
+}
+
+int main(void)
+{
+    run("discrete");
+    run("axial");
+    run("moving_node");
+    return bd_test_finish("loop_in_tension");
+}
