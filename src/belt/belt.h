@@ -86,7 +86,8 @@ typedef struct bd_belt_ops {
     void (*integrate)(bd_sim *sim, double *ke, double *w_nc);
     /* velocities of its own beyond the nodes' vx, vy (an element's spin),
      * at rest at t: after the forces, the half-step values −h·acceleration
-     * with h = Δt/2, or 0 with h = 0 (sim/step.c, sim/stabilize.c); may
+     * with h = Δt/2, or 0 with h = 0 (sim/step.c, sim/stabilize.c); and
+     * whatever the belt keeps of past speeds, restarted from vx, vy; may
      * be NULL */
     void (*rest_velocities)(bd_sim *sim, double h);
     void (*after_parts)(bd_sim *sim);

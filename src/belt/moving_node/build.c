@@ -31,7 +31,8 @@ static const size_t STATE_DOUBLES[] = {
     offsetof(bd_mn, normal), offsetof(bd_mn, vnew),   offsetof(bd_mn, rhs),
     offsetof(bd_mn, p0),     offsetof(bd_mn, qa),     offsetof(bd_mn, qb),
     offsetof(bd_mn, cp),     offsetof(bd_mn, fr),     offsetof(bd_mn, ca),
-    offsetof(bd_mn, cb),     offsetof(bd_mn, cna),    offsetof(bd_mn, cnb),   offsetof(bd_mn, cnc),   offsetof(bd_mn, vold),
+    offsetof(bd_mn, cb),     offsetof(bd_mn, cna),    offsetof(bd_mn, cnb),
+    offsetof(bd_mn, cnc),    offsetof(bd_mn, vold),
     offsetof(bd_mn, wdn),    offsetof(bd_mn, gw),     offsetof(bd_mn, pin),
     offsetof(bd_mn, sweep_c), offsetof(bd_mn, sweep_d), offsetof(bd_mn, kap)};
 static const size_t MODEL_DOUBLES[] = {

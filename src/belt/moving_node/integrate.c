@@ -75,6 +75,18 @@ void bd_mn_integrate(bd_sim *sim, double *ke_out, double *w_nc_out)
     *w_nc_out = w_nc * dt;
 }
 
+/* the speeds set from outside (at rest, sim/step.c; zeroed, stabilize.c):
+ * the wraps' four-level rule (solve.c) restarts its history from them, as
+ * at the first step (Δv⁻⁻ = Δv⁻), instead of taking a jump from the speeds
+ * before the reset for a motion */
+void bd_mn_rest_velocities(bd_sim *sim, double h)
+{
+    (void)h;
+    bd_mn *mn = bd_mn_of(sim);
+    for (int i = 0; i < sim->model->n; i++)
+        mn->vold[i] = sim->vx[i];
+}
+
 /* where the nodes are after the carriages moved: on a carriage or a
  * stretch that follows it, and across the span by w */
 void bd_mn_takeup_geometry(bd_sim *sim)

@@ -213,6 +213,7 @@ void bd_mn_solve(bd_sim *sim);
 
 /* integrate.c */
 void bd_mn_integrate(bd_sim *sim, double *ke, double *w_nc);
+void bd_mn_rest_velocities(bd_sim *sim, double h);
 void bd_mn_takeup_geometry(bd_sim *sim);
 void bd_mn_material(bd_sim *sim);
 double bd_mn_potential(const bd_sim *sim);

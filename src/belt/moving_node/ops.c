@@ -50,6 +50,7 @@ const bd_belt_ops bd_moving_node_ops = {
     .wrap = bd_mn_wrap,
     .supports = bd_mn_solve,
     .integrate = bd_mn_integrate,
+    .rest_velocities = bd_mn_rest_velocities,
     .after_parts = bd_mn_takeup_geometry,
     .material = bd_mn_material,
     .potential = bd_mn_potential,

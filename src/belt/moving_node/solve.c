@@ -516,9 +516,9 @@ void bd_mn_solve(bd_sim *sim)
     const int n = sim->model->n, np = sim->model->pulley_count;
     const double dt = sim->model->dt, *v = sim->vx;
     coefs(sim, dt);
+    const double *vo = mn->vold;
     for (int i = 0; i < n; i++) {
         int b = bd_node_prev(i, n), j = bd_node_next(i, n);
-        const double *vo = mn->vold;
         mn->rhs[i] = sim->mass[i] * v[i] / dt + sim->fx[i]
                    + mn->cb[i] * (v[j] - v[i]) - mn->cb[b] * (v[i] - v[b])
                    + mn->cnc[i] * (vo[j] - vo[i]) - mn->cnc[b] * (vo[i] - vo[b]);
@@ -556,8 +556,7 @@ void bd_mn_solve(bd_sim *sim)
         double damp = mm->c[i] * dmi - mm->c[b] * dmb
                     + mn->cna[i] * (vn[j] - vn[i]) + mn->cnb[i] * (v[j] - v[i])
                     - mn->cna[b] * (vn[i] - vn[b]) - mn->cnb[b] * (v[i] - v[b])
-                    + mn->cnc[i] * (mn->vold[j] - mn->vold[i])
-                    - mn->cnc[b] * (mn->vold[i] - mn->vold[b]);
+                    + mn->cnc[i] * (vo[j] - vo[i]) - mn->cnc[b] * (vo[i] - vo[b]);
         sim->fnx[i] += damp + mn->fr[i];
         sim->fx[i] = sim->mass[i] * (vn[i] - v[i]) / dt;
     }
