@@ -20,7 +20,13 @@
  *    second must be that of the first within 1 % (measured: 0.00899 m in
  *    both; before, 0.00256 m of 0.00883 m). The 1 % allows for the
  *    beating of the carriage's mode with the belt's own modes in a 1 s
- *    window. */
+ *    window.
+ * 3. Where the belt runs through a frictionless wrap the rule is not used
+ *    (its strain's explicit transport through the nodes drove the rule's
+ *    stiff modes): the loop driven to 4 m/s over its frictionless takeup
+ *    pulley must run its 8 s and balance its energy within 0.5 % (the
+ *    torture's figure). With the rule at every speed it diverged at
+ *    1.38 s, at 1.5 m/s; now it balances to 0.0008 J of 8.6 kJ. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -66,12 +72,17 @@ static void loop_from_rest(void)
     bd_sim_book_energy_every_step(sim, 1);
     char err[512] = "";
     int ok = 1;
-    double scale = 0.0, drift = 0.0, drift_t = 0.0;
-    int turns = 0;
+    double scale = 0.0, drift = 0.0, drift_t = 0.0, e0 = 0.0;
+    int turns = 0, first = 1;
     while (ok && bd_sim_time(sim) < 10.0 - 1e-9) {
         ok = bd_sim_step(sim, 1, err, sizeof err) == 0;
         bd_energy_state en;
         bd_sim_energy(sim, &en);
+        if (first) {
+            /* the energy at t = 0, as the first step books it */
+            e0 = en.kinetic_J + en.potential_J;
+            first = 0;
+        }
         if (en.kinetic_J > scale)
             scale = en.kinetic_J;
         /* at the carriage's turns, where nearly all is potential (the
@@ -81,7 +92,7 @@ static void loop_from_rest(void)
         if (bd_sim_time(sim) < 0.5 || en.kinetic_J > 5e-3 * scale)
             continue;
         turns++;
-        double mech = en.kinetic_J + en.potential_J - en.initial_J;
+        double mech = en.kinetic_J + en.potential_J - e0;
         if (fabs(mech) > fabs(drift)) {
             drift = mech;
             drift_t = bd_sim_time(sim);
@@ -132,9 +143,42 @@ static void takeup_step(void)
     bd_model_def_free(&def);
 }
 
+static const char *running_model =
+    "name: running loop over a frictionless takeup pulley\n"
+    "gravity: 0\n"
+    "belt: {formulation: moving_node, mass_per_length: 20, axial_stiffness: 5.0e6,\n"
+    "       damping_ratio: 0}\n"
+    "pulleys:\n"
+    "  - {name: a, x: 20, y: 0, radius: 0.4, wrap: cw, mass: 200,\n"
+    "     friction: {static: 0.4, dynamic: 0.35},\n"
+    "     drive: {control: speed, speed: 4, inertia: 20, start: {curve: s-curve, time: 3}}}\n"
+    "  - {name: b, x: 0, y: 0, radius: 0.4, wrap: cw, mass: 200,\n"
+    "     friction: {static: 0, dynamic: 0},\n"
+    "     takeup: {type: constant_force, force: 20000, mass: 100, axis: [-1, 0]}}\n"
+    "simulation: {duration: 8, initial_state: static}\n";
+
+static void running_frictionless(void)
+{
+    bd_model_def def;
+    bd_sim *sim;
+    bd_test_make_sim(running_model, &def, &sim);
+    double err;
+    int ok = bd_test_run_balanced(sim, 8.0, &err) == 0;
+    bd_energy_state en;
+    bd_sim_energy(sim, &en);
+    double scale = fmax(en.input_J, en.kinetic_J);
+    printf("running over a frictionless pulley: %s at t = %.3f s; balance %.3g J of %.3g J\n",
+           ok ? "completed" : "failed", bd_sim_time(sim), err, scale);
+    CHECK(ok);
+    CHECK(fabs(err) < 5e-3 * scale);
+    bd_sim_free(sim);
+    bd_model_def_free(&def);
+}
+
 int main(void)
 {
     loop_from_rest();
     takeup_step();
+    running_frictionless();
     return bd_test_finish("mn_undamped");
 }

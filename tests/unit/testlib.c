@@ -94,6 +94,27 @@ int bd_test_run_to(bd_sim *sim, double t)
     return 0;
 }
 
+static double energy_sum(const bd_sim *sim)
+{
+    bd_energy_state en;
+    bd_sim_energy(sim, &en);
+    return en.kinetic_J + en.potential_J + en.dissipated_J - en.input_J;
+}
+
+int bd_test_run_balanced(bd_sim *sim, double t, double *err)
+{
+    char msg[512];
+    bd_sim_book_energy_every_step(sim, 1);
+    if (bd_sim_step(sim, 1, msg, sizeof msg)) {
+        fprintf(stderr, "run failed: %s\n", msg);
+        return 1;
+    }
+    double e0 = energy_sum(sim);
+    int failed = bd_test_run_to(sim, t);
+    *err = energy_sum(sim) - e0;
+    return failed;
+}
+
 unsigned long long bd_test_hash_file(const char *path)
 {
     FILE *f = fopen(path, "rb");

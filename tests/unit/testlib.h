@@ -53,3 +53,8 @@ int bd_test_create(const struct bd_model_def *def, struct bd_sim **sim);
 double bd_test_rigid_mass(const struct bd_sim *sim);
 /* advance to time t (s); returns 0, or 1 if the run failed */
 int bd_test_run_to(struct bd_sim *sim, double t);
+/* run to t (s) booking the energy every step; *err: how far
+ * E_k + E_p + E_d − E_in moved from its value at t = 0 (as the first step
+ * books it: the run command's initial_J is not set here), J. Returns 0,
+ * or 1 if the run failed */
+int bd_test_run_balanced(struct bd_sim *sim, double t, double *err);
