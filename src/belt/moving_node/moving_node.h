@@ -125,6 +125,7 @@ typedef struct bd_mn {
                                  (solve.c) */
     double *vold;             /* [n] step (integrate): v at t − 3Δt/2 */
     double coef_dt;           /* s, the last step's (0 before the first) */
+    int four_level;           /* wrap elements on the four-level rule now */
     unsigned char *contact;   /* [n] step (supports): BD_MN_STICK .. OFF */
     double *Q;                /* [pulley_count] step (wrap): external torque */
     double *A;                /* [pulley_count²] scratch: the pulleys' system */

@@ -99,19 +99,24 @@ static inline int unresolved(const bd_mn_model *mm, int e, double dt)
     return mm->on_arc[e] && mm->ds0[e] < mm->wave_speed * dt;
 }
 
-/* the coefficients of this step: a wrap element's rule follows whether
- * its nodes took friction in the last step. The first step starts the
- * four-level rule from the speeds it has (Δv⁻⁻ = Δv⁻). */
+/* the coefficients of this step: every element's at the first step (and
+ * when the step changes), then a wrap element's rule as its nodes took
+ * friction in the last step. The first step starts the four-level rule
+ * from the speeds it has (Δv⁻⁻ = Δv⁻). */
 static void coefs(bd_sim *sim, double dt)
 {
     bd_mn *mn = bd_mn_of(sim);
     const bd_mn_model *mm = bd_mn_model_of(sim);
     const int n = sim->model->n;
+    const int all = mn->coef_dt != dt;
     if (mn->coef_dt == 0.0)
         for (int i = 0; i < n; i++)
             mn->vold[i] = sim->vx[i];
     mn->coef_dt = dt;
+    int four_level = 0;
     for (int e = 0; e < n; e++) {
+        if (!all && !unresolved(mm, e, dt))
+            continue;
         double na = 0.0, nb = 0.0, nc = 0.0;
         if (unresolved(mm, e, dt)) {
             int j = bd_node_next(e, n);
@@ -125,6 +130,7 @@ static void coefs(bd_sim *sim, double dt)
                 na = (8.0 / 27.0 - 0.25) * kdt;
                 nb = -(7.0 / 27.0 - 0.25) * kdt;
                 nc = -kdt / 27.0;
+                four_level++;
             }
         }
         mn->ca[e] = 0.25 * dt * mm->k[e] + 0.5 * mm->c[e] + na;
@@ -132,6 +138,25 @@ static void coefs(bd_sim *sim, double dt)
         mn->cna[e] = na;
         mn->cnb[e] = nb;
         mn->cnc[e] = nc;
+    }
+    mn->four_level = four_level;
+}
+
+/* the four-level rule's force from the speeds before, −k·Δt·Δv⁻⁻/27 on
+ * each element that follows it, added to out (at the start node, and
+ * taken from the end node) */
+static void four_level_old(const bd_sim *sim, double *out)
+{
+    const bd_mn *mn = bd_mn_of(sim);
+    const int n = sim->model->n;
+    const double *vo = mn->vold;
+    for (int e = 0; e < n; e++) {
+        if (mn->cnc[e] == 0.0)
+            continue;
+        int j = bd_node_next(e, n);
+        double f = mn->cnc[e] * (vo[j] - vo[e]);
+        out[e] += f;
+        out[j] -= f;
     }
 }
 
@@ -534,13 +559,13 @@ void bd_mn_solve(bd_sim *sim)
     const int n = sim->model->n, np = sim->model->pulley_count;
     const double dt = sim->model->dt, *v = sim->vx;
     coefs(sim, dt);
-    const double *vo = mn->vold;
     for (int i = 0; i < n; i++) {
         int b = bd_node_prev(i, n), j = bd_node_next(i, n);
         mn->rhs[i] = sim->mass[i] * v[i] / dt + sim->fx[i]
-                   + mn->cb[i] * (v[j] - v[i]) - mn->cb[b] * (v[i] - v[b])
-                   + mn->cnc[i] * (vo[j] - vo[i]) - mn->cnc[b] * (vo[i] - vo[b]);
+                   + mn->cb[i] * (v[j] - v[i]) - mn->cb[b] * (v[i] - v[b]);
     }
+    if (mn->four_level)
+        four_level_old(sim, mn->rhs);
     contact_from_pressure(sim);
     for (int clip = 0; clip < 3; clip++) {
         int pass = 0;
@@ -573,11 +598,12 @@ void bd_mn_solve(bd_sim *sim)
         double dmi = 0.5 * (vn[j] - vn[i] + v[j] - v[i]), dmb = 0.5 * (vn[i] - vn[b] + v[i] - v[b]);
         double damp = mm->c[i] * dmi - mm->c[b] * dmb
                     + mn->cna[i] * (vn[j] - vn[i]) + mn->cnb[i] * (v[j] - v[i])
-                    - mn->cna[b] * (vn[i] - vn[b]) - mn->cnb[b] * (v[i] - v[b])
-                    + mn->cnc[i] * (vo[j] - vo[i]) - mn->cnc[b] * (vo[i] - vo[b]);
+                    - mn->cna[b] * (vn[i] - vn[b]) - mn->cnb[b] * (v[i] - v[b]);
         sim->fnx[i] += damp + mn->fr[i];
         sim->fx[i] = sim->mass[i] * (vn[i] - v[i]) / dt;
     }
+    if (mn->four_level)
+        four_level_old(sim, sim->fnx);
     for (int p = 0; p < np; p++) {
         bd_pulley_body *pb = &sim->pulleys[p];
         const bd_mn_pulley *pp = &mm->pulleys[p];
