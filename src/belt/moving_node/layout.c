@@ -113,15 +113,15 @@ static double arc_elements(const bd_model_def *def, const bd_path *path, int p)
 }
 
 /* walk the loop: spans with their hard points, then the arcs; each node
- * reported to `put` (NULL: count only) */
+ * reported to `put` (NULL: count only); the wraps' nodes into *arcs (may
+ * be NULL) */
 typedef void (*put_fn)(bd_sim *sim, int i, double s, int kind, int pulley, int set);
 
 static double walk(const bd_model_def *def, const bd_path *path, bd_sim *sim, put_fn put,
                    double *arcs)
 {
     const int np = path->pulley_count;
-    double n = 0.0;
-    *arcs = 0.0;
+    double n = 0.0, on_arcs = 0.0;
     for (int j = 0; j < np; j++) {
         const bd_path_segment *sp = bd_path_span(path, j);
         double target = bd_mn_span_target(def, path, j);
@@ -158,18 +158,16 @@ static double walk(const bd_model_def *def, const bd_path *path, bd_sim *sim, pu
             for (int c = 0; c < (int)k; c++)
                 put(sim, (int)n + c, arc->s0 + c * arc->length / k, BD_MN_ARC, p, -1);
         n += k;
-        *arcs += k;
+        on_arcs += k;
     }
+    if (arcs)
+        *arcs = on_arcs;
     return n;
 }
 
 double bd_mn_layout_count(const bd_model_def *def, const bd_path *path, double *arc_nodes)
 {
-    double arcs;
-    double n = walk(def, path, NULL, NULL, &arcs);
-    if (arc_nodes)
-        *arc_nodes = arcs;
-    return n;
+    return walk(def, path, NULL, NULL, arc_nodes);
 }
 
 /* the node's place and what stands there (the arrays are allocated) */
@@ -249,8 +247,7 @@ static void element_geometry(bd_sim *sim)
  * arc nodes (the arrays of [n] are allocated, n from bd_mn_layout_count) */
 void bd_mn_layout_fill(bd_sim *sim)
 {
-    double arcs;
-    walk(sim->model->def, &sim->model->path, sim, put_node, &arcs);
+    walk(sim->model->def, &sim->model->path, sim, put_node, NULL);
     element_geometry(sim);
     /* the arc length each arc node stands for, and each pulley's arc nodes */
     bd_mn_model *mm = bd_mn_model_build(sim);

@@ -61,12 +61,16 @@ typedef struct affine {
  * amplitude in 10 s (to 29 % with 0.8 m pulleys), and issue 10's loop from
  * rest booked 79 % of its energy as dissipated. An element whose two nodes
  * both take no friction therefore follows a four-level rule on its
- * elongation x, k·(8·x⁺ + 12·x + 6·x⁻ + x⁻⁻)/27: its weights sum to 1 and
- * are centred on t (8 − 6 − 2 = 0), so it stays second-order; its roots
- * for modes far above 1/Δt are a triple −½ (amplification ½ per step), and
- * it damps the slow ones by a ratio of 1.2e-6 at ωΔt = 0.04. It stays
- * stable while the implicit k = EA/ΔX (at build) is at least 0.97 of the
- * element's tangent EA/ΔX(t), i.e. up to 3 % more strain than at build.
+ * elongation x, k·(8·x⁺ + 12·x + 6·x⁻ + x⁻⁻)/27 (derived here, docs/
+ * physics.md §14): its weights are (λ + ½)³'s coefficients over their sum,
+ * so they sum to 1 and are centred on t (8 − 6 − 2 = 0), and it stays
+ * second-order. On m·ẍ = −k·x with z = ωΔt its characteristic polynomial
+ * is λ(λ − 1)² + z²·(8λ³ + 12λ² + 6λ + 1)/27: for z → ∞ its roots are a
+ * triple −½ (amplification ½ per step), at z = 0.04 the mode's damping
+ * ratio is 1.2e-6, and its largest root stays within the unit circle for
+ * every z (sampled 0.04 … 10⁴). With the implicit k = EA/ΔX (at build)
+ * a fraction r of the element's tangent EA/ΔX(t) it stays so for
+ * r ≥ 0.97 (sampled), i.e. up to 3 % more strain than at build.
  * In speeds (x⁺ − x = Δt·Δv⁺, x⁻ − x⁻⁻ = Δt·Δv⁻⁻): the trapezoidal force
  * plus k·Δt·[(8/27 − 1/4)·Δv⁺ − (7/27 − 1/4)·Δv⁻ − Δv⁻⁻/27], booked as
  * numerical dissipation. With friction it is not used: on a drive's slip
@@ -101,24 +105,22 @@ static inline int unresolved(const bd_mn_model *mm, int e, double dt)
 
 /* the coefficients of this step: every element's at the first step (and
  * when the step changes), then a wrap element's rule as its nodes took
- * friction in the last step. The first step starts the four-level rule
- * from the speeds it has (Δv⁻⁻ = Δv⁻). */
+ * friction in the last step. (The rule's older speeds, vold, start as the
+ * speeds at rest: bd_mn_rest_velocities, run when the sim is built.) */
 static void coefs(bd_sim *sim, double dt)
 {
     bd_mn *mn = bd_mn_of(sim);
     const bd_mn_model *mm = bd_mn_model_of(sim);
     const int n = sim->model->n;
     const int all = mn->coef_dt != dt;
-    if (mn->coef_dt == 0.0)
-        for (int i = 0; i < n; i++)
-            mn->vold[i] = sim->vx[i];
     mn->coef_dt = dt;
     int four_level = 0;
     for (int e = 0; e < n; e++) {
-        if (!all && !unresolved(mm, e, dt))
+        int wrap = unresolved(mm, e, dt);
+        if (!all && !wrap)
             continue;
         double na = 0.0, nb = 0.0, nc = 0.0;
-        if (unresolved(mm, e, dt)) {
+        if (wrap) {
             int j = bd_node_next(e, n);
             double pass = fmax(fabs(sim->vx[e]), fabs(sim->vx[j])) * dt;
             if (mn->contact[e] != BD_MN_OFF || mn->contact[j] != BD_MN_OFF
