@@ -15,7 +15,7 @@ const char *bd_time_step_limit_name(bd_time_step_limit kind)
     case BD_LIMIT_USER: return "the time step given in the model";
     case BD_LIMIT_TRANSVERSE: return "transverse (string) motion of the span nodes";
     case BD_LIMIT_TRANSPORT: return "belt's passage through the shortest elements";
-    case BD_LIMIT_SHEAR: return "shear stiffness and rotary inertia of the rigid elements";
+    case BD_LIMIT_SHEAR: return "shear stiffness of the spring-damping elements";
     }
     return "?";
 }

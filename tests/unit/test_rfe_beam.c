@@ -24,6 +24,7 @@
  * and the relaxation stops with a residual speed below 1e-9 m/s. */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 
 #include "beltdyn/model.h"
 #include "beltdyn/sim.h"
@@ -59,10 +60,20 @@ static double deflection(bd_sim *sim, int first)
     double fastest = 1.0;
     long step;
     /* held: no speed (the start at rest gave the elements their half-step
-     * speeds from the forces of the layout) */
-    for (int i = 0; i < n; i++)
+     * speeds from the forces of the layout), no force, and turned back to
+     * where they were after each step (the implicit rotations,
+     * rotation_solve.c, turn every element the moments on its neighbours
+     * reach) */
+    double *c0 = malloc((size_t)n * sizeof *c0), *s0 = malloc((size_t)n * sizeof *s0);
+    CHECK(c0 != NULL && s0 != NULL);
+    if (!c0 || !s0)
+        return 0.0;
+    for (int i = 0; i < n; i++) {
+        c0[i] = R->ct[i];
+        s0[i] = R->st[i];
         if (i < first || i >= first + FREE)
             sim->vx[i] = sim->vy[i] = R->omega[i] = 0.0;
+    }
     for (step = 0; step < 2000000 && (step < 1000 || fastest > 1e-9); step++) {
         bd_rfe_forces(sim);
         sim->fy[mid] += LOAD;
@@ -73,6 +84,12 @@ static double deflection(bd_sim *sim, int first)
             }
         double ke, wnc;
         bd_rfe_integrate(sim, &ke, &wnc);
+        for (int i = 0; i < n; i++)
+            if (i < first || i >= first + FREE) {
+                R->omega[i] = 0.0;
+                R->ct[i] = c0[i];
+                R->st[i] = s0[i];
+            }
         fastest = 0.0;
         for (int i = first; i < first + FREE; i++) {
             sim->vx[i] *= keep;
@@ -81,6 +98,8 @@ static double deflection(bd_sim *sim, int first)
             fastest = fmax(fastest, hypot(sim->vx[i], sim->vy[i]));
         }
     }
+    free(c0);
+    free(s0);
     CHECK(fastest <= 1e-9);
     printf("  relaxed in %ld steps of %.3g s\n", step, dt);
     return sim->y[mid] - y0;

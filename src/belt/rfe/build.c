@@ -19,7 +19,8 @@ static const size_t RFE_DOUBLES[] = {
     offsetof(bd_rfe, tq),  offsetof(bd_rfe, tqn),   offsetof(bd_rfe, q),   offsetof(bd_rfe, qd),
     offsetof(bd_rfe, mb),  offsetof(bd_rfe, mbd),   offsetof(bd_rfe, thdot),
     offsetof(bd_rfe, px),  offsetof(bd_rfe, py),
-    offsetof(bd_rfe, h),   offsetof(bd_rfe, hd),    offsetof(bd_rfe, pw),  offsetof(bd_rfe, ek)};
+    offsetof(bd_rfe, h),   offsetof(bd_rfe, hd),    offsetof(bd_rfe, pw),  offsetof(bd_rfe, ek),
+    offsetof(bd_rfe, rinv), offsetof(bd_rfe, rcp),  offsetof(bd_rfe, rz),  offsetof(bd_rfe, rb)};
 #define COUNT(a) ((int)(sizeof a / sizeof a[0]))
 
 /* GA: model-format.md `shear_stiffness`, default 10·EA */
@@ -30,7 +31,9 @@ double bd_rfe_shear_stiffness(const bd_model_def *def)
 }
 
 /* the SDEs' constants from the belt's (seed 000 §2.3, a rectangular
- * section of thickness h): k_γ = GA·l0, k_β = EI/l0, J = m·(l0² + h²)/12;
+ * section of thickness h): k_γ = GA·l0, k_β = EI/l0, J = m·(l0² + h²)/12
+ * of the belt's own mass m (seed 000 §2.1 assumption i: the element is the
+ * belt; material on it adds to the mass its centre carries, not to J);
  * each dashpot the damping ratio ζ of the element's critical damping of
  * its own spring, c = 2ζ·√(k·J) for the rotations (the element's rotary
  * inertia is what they move) */
@@ -39,6 +42,7 @@ static void sde_constants(const bd_model_def *def, double l0, bd_rfe_model *RM)
     double m = def->belt.mass_per_length * l0, h = def->belt.thickness;
     double zeta = def->belt.damping_ratio;
     RM->gyration2 = (l0 * l0 + h * h) / 12.0;
+    RM->inertia = m * RM->gyration2;
     RM->k_shear = bd_rfe_shear_stiffness(def) * l0;
     RM->k_bend = def->belt.bending_stiffness / l0;
     RM->c_shear = 2.0 * zeta * sqrt(RM->k_shear * m * RM->gyration2);
@@ -228,22 +232,53 @@ void bd_rfe_clone(bd_sim *dst, const bd_sim *src)
                    (size_t)src->model->n);
 }
 
-/* Stable time step (laws/stable_step.h): the highest frequency of a
+/* Stable time step (laws/stable_step.h): the longest stable step of a
  * uniform straight chain of elements of mass m, rotary inertia J, SDE
  * constants k_a = EA/l0, k_γ, k_β and alignment k_ψ (the largest; the
- * estimate, before the layout, leaves it out: it is ~T/GA of k_γ). Along the belt ω² = 4k_a/m (the
- * lumped chain's). Across it, a wave of phase κ per element (s = sin κ/2,
- * c = cos κ/2) moves the centres by Y and turns the elements by Φ with
+ * estimate, before the layout, leaves it out: it is ~T/GA of k_γ). Along
+ * the belt ω² = 4k_a/m (the lumped chain's). Across it, a wave of phase κ
+ * per element (s = sin κ/2, c = cos κ/2) moves the centres by Y and turns
+ * the elements by Φ with
  *   K_YY = 4s²·(k_γ + k_ψ·c²)/l0²,  K_ΦΦ = k_γ·c² + 4k_β·s² + k_ψ,
- *   |K_YΦ| = 2s·c·(k_γ + k_ψ)/l0,
- * and det(K − λ·diag(m, J)) = 0 gives ω² = λ (derived here from forces.c's
- * energy). Its largest λ over κ (sampled) is that of the elements turning
- * together against the SDEs' shear, 12·GA/(m′·l0²) for J = m·l0²/12:
- * with the default GA = 10·EA, 30 times the axial ω², a step 5.5 times
- * the lumped belt's shorter. The dashpots damp these modes with
- * ζ ≈ 2ζ_e, as the lumped belt's axial one. m and J are the lightest
- * element's (no material). */
+ *   |K_YΦ| = 2s·c·(k_γ + k_ψ)/l0
+ * (derived here from forces.c's energy). The rotations are implicit
+ * (rotation_solve.c: K_ΦΦ at Φ + ¼Δt·ΔΦ̇), the rest explicit; for the
+ * wave, with w = (z − 1)²/z of the step's amplification z,
+ *   det([m·w + Δt²K_YY, Δt²K_YΦ; Δt²K_YΦ, J·w + Δt²K_ΦΦ·(1 + w/4)]) = 0,
+ * a quadratic in w with real negative roots; |z| ≤ 1 needs both ≥ −4, that
+ * is Δt²·λ ≤ 4 for the largest λ of det(K − λ·diag(m, J + ¼Δt²K_ΦΦ)) = 0.
+ * The largest such Δt is found by bisection below the zigzag's
+ * 2/√(K_YY(π)/m), which no Δt passes. Explicitly, the elements turning
+ * together against the shear set it, 12·GA/(m′·l0²) for J = m·l0²/12 (30
+ * times the axial ω² at GA = 10·EA, a step 5.5 times the lumped belt's
+ * shorter); now the centres' zigzag against the shear, 4·GA/(m′·l0²) with
+ * the rotations coupled in (3.5 times shorter on issue 10's loop). The
+ * dashpots damp these modes with ζ ≈ 2ζ_e, as the lumped belt's axial
+ * one. m and J are the lightest element's (no material). */
 #define KAPPA_SAMPLES 64
+#define STEP_BISECTIONS 50
+
+/* Δt²·λ_max over κ for the step dt (the stability measure above, ≤ 4) */
+static double cross_measure(double dt, double m, double J, double l0, double k_shear,
+                            double k_bend, double k_align)
+{
+    double worst = 0.0;
+    for (int k = 0; k <= KAPPA_SAMPLES; k++) {
+        double kappa = BD_PI * k / KAPPA_SAMPLES;
+        double s = sin(0.5 * kappa), c = cos(0.5 * kappa);
+        double kyy = 4.0 * s * s * (k_shear + k_align * c * c) / (l0 * l0);
+        double kpp = k_shear * c * c + 4.0 * k_bend * s * s + k_align;
+        double kyp = 2.0 * s * c * (k_shear + k_align) / l0;
+        double Jw = J + 0.25 * dt * dt * kpp;
+        /* m·J′·λ² − (K_YY·J′ + K_ΦΦ·m)·λ + (K_YY·K_ΦΦ − K_YΦ²) = 0 */
+        double b = kyy * Jw + kpp * m, d = kyy * kpp - kyp * kyp;
+        double disc = b * b - 4.0 * m * Jw * d;
+        double lam = (b + sqrt(disc > 0.0 ? disc : 0.0)) / (2.0 * m * Jw);
+        if (dt * dt * lam > worst)
+            worst = dt * dt * lam;
+    }
+    return worst;
+}
 
 static double stable_step_law(double m, double g2, double l0, double k_axial, double c_axial,
                               double k_shear, double k_bend, double k_align, double zeta_e,
@@ -251,20 +286,16 @@ static double stable_step_law(double m, double g2, double l0, double k_axial, do
 {
     double J = m * g2;
     double w_axial = 4.0 * k_axial / m;
-    double w_cross = 0.0;
-    for (int k = 0; k <= KAPPA_SAMPLES; k++) {
-        double kappa = BD_PI * k / KAPPA_SAMPLES;
-        double s = sin(0.5 * kappa), c = cos(0.5 * kappa);
-        double kyy = 4.0 * s * s * (k_shear + k_align * c * c) / (l0 * l0);
-        double kpp = k_shear * c * c + 4.0 * k_bend * s * s + k_align;
-        double kyp = 2.0 * s * c * (k_shear + k_align) / l0;
-        /* m·J·λ² − (K_YY·J + K_ΦΦ·m)·λ + (K_YY·K_ΦΦ − K_YΦ²) = 0 */
-        double b = kyy * J + kpp * m, d = kyy * kpp - kyp * kyp;
-        double disc = b * b - 4.0 * m * J * d;
-        double lam = (b + sqrt(disc > 0.0 ? disc : 0.0)) / (2.0 * m * J);
-        if (lam > w_cross)
-            w_cross = lam;
+    /* the zigzag (κ = π) alone: K_YY = 4k_γ/l0², uncoupled */
+    double lo = 0.0, hi = 2.0 / sqrt(4.0 * k_shear / (l0 * l0 * m));
+    for (int it = 0; it < STEP_BISECTIONS; it++) {
+        double mid = 0.5 * (lo + hi);
+        if (cross_measure(mid, m, J, l0, k_shear, k_bend, k_align) <= 4.0)
+            lo = mid;
+        else
+            hi = mid;
     }
+    double w_cross = 4.0 / (lo * lo);   /* the cross modes' ω² at that step */
     double omega;
     double zeta;
     if (w_cross > w_axial) {
@@ -289,9 +320,9 @@ double bd_rfe_stable_step(const bd_sim *sim, bd_time_step_limit *limit)
 }
 
 /* (element + idler)-steps per second: head_drive.yaml with rfe (1593
- * elements, 55 idlers, 792 711 steps with its stabilization) took 53.7 s
- * on the two-core machine this was written on */
-#define RFE_RATE 2.4e7
+ * elements, 55 idlers, 413 113 steps with its stabilization) took 42.8 s
+ * on the two-core machine this was written on (its other core busy) */
+#define RFE_RATE 1.6e7
 
 void bd_rfe_estimate(const bd_model_def *def, const bd_path *path, bd_belt_estimate *out)
 {

@@ -155,25 +155,24 @@ static inline void turn(double *c, double *s, double d)
 }
 
 /* rotations to t + Δt (φ) and t + Δt/2 (ω), as the centres move
- * (belt/lumped/forces.c advance): J = mass·gyration2, so Δt/J is
- * dt_per_mass/gyration2 and follows the material on the element */
+ * (belt/lumped/forces.c advance), by the implicit step's Δω
+ * (rotation_solve.c); the kinetic energy and the dashpots' work are
+ * booked at the mid-step rate ω + ½Δω, as the centres' are */
 void bd_rfe_integrate(bd_sim *sim, double *ke_out, double *w_nc_out)
 {
     bd_rfe *R = bd_rfe_of(sim);
     const int n = sim->model->n;
-    const double dt = sim->model->dt, g2 = bd_rfe_model_of(sim)->gyration2;
-    const double inv_g2 = 1.0 / g2;
+    const double dt = sim->model->dt, J = bd_rfe_model_of(sim)->inertia;
+    bd_rfe_rotation_implicit(sim);
     bd_lumped_integrate(sim, ke_out, w_nc_out);
-    const double *restrict dpm = sim->dt_per_mass, *restrict mass = sim->mass;
-    const double *restrict tq = R->tq, *restrict tqn = R->tqn;
+    const double *restrict dw = R->rb, *restrict tqn = R->tqn;
     double *restrict om = R->omega, *restrict ct = R->ct, *restrict st = R->st,
            *restrict pw = R->pw, *restrict ek = R->ek;
     for (int i = 0; i < n; i++) {
-        double a = tq[i] * dpm[i] * inv_g2;
-        double mid = om[i] + 0.5 * a;
+        double mid = om[i] + 0.5 * dw[i];
         pw[i] = tqn[i] * mid;
-        ek[i] = mass[i] * g2 * mid * mid;
-        om[i] += a;
+        ek[i] = mid * mid;
+        om[i] += dw[i];
         turn(&ct[i], &st[i], om[i] * dt);
     }
     double w_nc = 0.0, ke = 0.0;
@@ -182,17 +181,20 @@ void bd_rfe_integrate(bd_sim *sim, double *ke_out, double *w_nc_out)
         ke += ek[i];
     }
     *w_nc_out += w_nc * dt;
-    *ke_out += 0.5 * ke;
+    *ke_out += 0.5 * J * ke;
 }
 
 /* at rest at t (sim/step.c bd_sim_start_at_rest): the half-step angular
- * velocities −h·τ/J after the forces (h = Δt/2), or 0 (h = 0) */
+ * velocities −½Δω of the implicit step from the forces at t (h = Δt/2),
+ * or 0 (h = 0) */
 void bd_rfe_rest_velocities(bd_sim *sim, double h)
 {
     bd_rfe *R = bd_rfe_of(sim);
-    const double g2 = bd_rfe_model_of(sim)->gyration2;
-    for (int i = 0; i < sim->model->n; i++)
-        R->omega[i] = h > 0.0 ? -R->tq[i] / (sim->mass[i] * g2) * h : 0.0;
+    const int n = sim->model->n;
+    if (h > 0.0)
+        bd_rfe_rotation_implicit(sim);
+    for (int i = 0; i < n; i++)
+        R->omega[i] = h > 0.0 ? -h / sim->model->dt * R->rb[i] : 0.0;
 }
 
 /* SDE e's shear γ and bend β (into *bend) from the present positions,

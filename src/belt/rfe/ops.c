@@ -21,7 +21,8 @@ const bd_belt_ops bd_rfe_ops = {
     .integrate = bd_rfe_integrate,
     .rest_velocities = bd_rfe_rest_velocities,
     .after_parts = NULL,
-    .material = bd_rfe_material,
+    /* material adds to the centres' mass, not to J (build.c) */
+    .material = bd_lumped_material,
     .potential = bd_rfe_potential,
     .elastic_energy = bd_rfe_elastic_energy,
     /* the shell contacts' springs: bd_energy `springs` (pulley_contact.c) */

@@ -4,7 +4,7 @@
  * i), joined by spring–damping elements (SDE, Voigt) with axial, shear and
  * bending stiffness and damping (§2.3), moving by Lagrange's equations of
  * the second kind (§2.4), written here in absolute coordinates
- * (docs/physics.md §11 says why).
+ * (docs/physics.md §15 says why).
  *
  * It extends the lumped belt (belt/lumped): the elements' mass centres are
  * its nodes, and the SDE between elements i and i + 1 is its element i.
@@ -13,7 +13,8 @@
  * wrap_elements.c), and the centres meet pulleys and idlers through the
  * lumped belt's contacts, friction laws and material. What the rigid
  * elements add is in this folder: the orientations φ, the SDE's shear and
- * bending, the rotary inertia. */
+ * bending, the rotary inertia, and the rotations' implicit step
+ * (rotation_solve.c). */
 #ifndef BD_RFE_H
 #define BD_RFE_H
 
@@ -27,7 +28,9 @@ typedef struct bd_rfe_model {
     double c_shear;           /* N·m·s: its dashpot on dγ/dt */
     double k_bend;            /* N·m/rad = EI/l0 */
     double c_bend;            /* N·m·s/rad */
-    double gyration2;         /* m², J = mass·gyration2 = mass·(l0² + h²)/12 */
+    double gyration2;         /* m², (l0² + h²)/12 */
+    double inertia;           /* kg·m², an element's J = m′·l0·gyration2 (the
+                                 belt's section; material adds mass, not J) */
     double *k_align;          /* [n] N·m/rad: the tension's pull at element i's
                                  joints turning it into the line of the belt,
                                  l0·T of the belt at rest there (build.c) */
@@ -53,6 +56,13 @@ typedef struct bd_rfe {
     /* integrate: element i's rotation, power of its non-conservative
      * torque (W) and twice its kinetic energy (J) */
     double *pw, *ek;          /* [n] */
+    /* integrate: the implicit rotations' system (rotation_solve.c): its
+     * factors for the step rdt (0: none yet) — pivots' reciprocals,
+     * eliminated couplings, the response to element 0, row 0's Schur
+     * complement's reciprocal, the uniform coupling — and Δω */
+    double *rinv, *rcp, *rz;  /* [n] */
+    double rs0, ro, rdt;
+    double *rb;               /* [n] rad/s, Δω = ω⁺ − ω⁻ of the step */
 } bd_rfe;
 
 static inline bd_rfe *bd_rfe_of(const bd_sim *sim)
@@ -86,7 +96,10 @@ double bd_rfe_potential(const bd_sim *sim);
 double bd_rfe_sde_angles(const bd_sim *sim, int e, double *bend);
 double bd_rfe_align_angle(const bd_sim *sim, int i);
 
-/* material.c */
-void bd_rfe_material(bd_sim *sim);
+/* rotation_solve.c: the implicit rotation step's Δω into rb from the
+ * moments tq, and its dashpots' mid-step share into tqn (after the forces
+ * phase, before the elements turn) */
+void bd_rfe_rotation_implicit(bd_sim *sim);
+
 
 #endif

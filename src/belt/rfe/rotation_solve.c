@@ -1,0 +1,104 @@
+/* The elements' rotations taken implicitly (derived here; docs/physics.md
+ * §15, "Stable step").
+ *
+ * Explicitly, the elements turning together against the SDEs' shear set
+ * the rfe belt's step: ω² = 12·GA/(m′·l0²) with J = m·l0²/12, 30 times the
+ * axial ω² at the default GA = 10·EA. A rotation moves no mass centre, so
+ * no contact acts on it (the contacts hold the centres), and the
+ * rotations alone can be integrated implicitly without the contacts in
+ * the solve. Each element's rotation is coupled to its neighbours' only,
+ * through the SDEs' shear and bending (forces.c), and to itself through
+ * the tension's alignment, so with the rotational stiffness
+ *   K_φφ: SDE e (elements i, j = e + 1) adds k_γ/4 + k_β to (i, i) and
+ *         (j, j) and k_γ/4 − k_β to (i, j); element i's alignment adds
+ *         k_ψ,i to (i, i),
+ * and the damping C_φφ formed alike from the dashpots, Newmark's average
+ * acceleration on these terms (their moment at φ + ¼Δt·Δω and at the
+ * mid-step rate ω + ½Δω, Δω = ω⁺ − ω⁻) gives
+ *   (J + ¼Δt²·K_φφ + ½Δt·C_φφ)·Δω = Δt·τ,
+ * with τ every moment on the elements at t (forces.c). The matrix is
+ * cyclic tridiagonal, symmetric positive definite and constant while the
+ * step is: factored once, then two sweeps a step, no division. The
+ * coupling between the rotations and the centres (the shear's moment from
+ * the centres' motion, and its force from the rotations) stays explicit,
+ * and so does every force on the centres.
+ *
+ * What it buys: the highest mode left is the centres' zigzag across the
+ * belt against the shear, ω² = 4·GA/(m′·l0²) (10 times the axial ω² at
+ * GA = 10·EA), with the rotations coupled in; build.c's stable step finds
+ * the longest stable step of the straight chain with the rotation's
+ * inertia raised by ¼Δt²·K_φφ (from the scheme's characteristic
+ * equation). The translations' shear cannot be taken implicitly the same
+ * way: the contacts act on the centres, node by node, outside any solve,
+ * and with an implicit coupling between centres the wraps went unstable
+ * (physics.md §15). */
+#include "belt/rfe/rfe.h"
+
+/* The system's factors, for the step dt: its matrix is constant while the
+ * step is (the elements' rotary inertia is the belt's own, build.c; the
+ * material on an element adds to its mass, not to its J). The chain 1 … n−1
+ * by Thomas' algorithm (inv = the pivots' reciprocals, cp the eliminated
+ * couplings), its response z to the coupling with element 0, and the
+ * reciprocal of row 0's Schur complement (positive: the matrix is positive
+ * definite). n ≥ 8, the layout's least (belt/lumped/layout.c). */
+static void factor(bd_rfe *R, const bd_rfe_model *RM, int n, double dt)
+{
+    const double kq = 0.25 * dt * dt, cq = 0.5 * dt;
+    const double own = kq * (0.25 * RM->k_shear + RM->k_bend)
+                     + cq * (0.25 * RM->c_shear + RM->c_bend);
+    const double o = kq * (0.25 * RM->k_shear - RM->k_bend)
+                   + cq * (0.25 * RM->c_shear - RM->c_bend);
+    const double *ka = RM->k_align, *kc = RM->c_align;
+    double *inv = R->rinv, *cp = R->rcp, *z = R->rz;
+    const int last = n - 1;
+#define DIAG(i) (RM->inertia + 2.0 * own + kq * ka[i] + cq * kc[i])
+    inv[1] = 1.0 / DIAG(1);
+    cp[1] = o * inv[1];
+    z[1] = -o * inv[1];
+    for (int k = 2; k <= last; k++) {
+        inv[k] = 1.0 / (DIAG(k) - o * cp[k - 1]);
+        cp[k] = o * inv[k];
+        z[k] = ((k == last ? -o : 0.0) - o * z[k - 1]) * inv[k];
+    }
+    for (int k = last - 1; k >= 1; k--)
+        z[k] -= cp[k] * z[k + 1];
+    R->rs0 = 1.0 / (DIAG(0) + o * (z[1] + z[last]));
+#undef DIAG
+    R->rdt = dt;
+    R->ro = o;
+}
+
+/* Δω into R->rb for the moments tq at t (forces.c), and the dashpots'
+ * moment at the mid-step rate added to the non-conservative moment tqn:
+ * −½C_φφ·Δω */
+void bd_rfe_rotation_implicit(bd_sim *sim)
+{
+    bd_rfe *R = bd_rfe_of(sim);
+    const bd_rfe_model *RM = bd_rfe_model_of(sim);
+    const int n = sim->model->n, last = n - 1;
+    const double dt = sim->model->dt;
+    if (R->rdt != dt)
+        factor(R, RM, n, dt);
+    const double o = R->ro;
+    const double *restrict inv = R->rinv, *restrict cp = R->rcp, *restrict z = R->rz;
+    const double *restrict tq = R->tq;
+    double *restrict x = R->rb;
+    /* the chain 1 … n−1 for the right side Δt·τ */
+    x[1] = dt * tq[1] * inv[1];
+    for (int k = 2; k <= last; k++)
+        x[k] = (dt * tq[k] - o * x[k - 1]) * inv[k];
+    for (int k = last - 1; k >= 1; k--)
+        x[k] -= cp[k] * x[k + 1];
+    double s0 = (dt * tq[0] - o * (x[1] + x[last])) * R->rs0;
+    x[0] = s0;
+    for (int k = 1; k <= last; k++)
+        x[k] += s0 * z[k];
+    const double hc_own = 0.5 * (0.25 * RM->c_shear + RM->c_bend);
+    const double hc_cross = 0.5 * (0.25 * RM->c_shear - RM->c_bend);
+    const double *restrict kc = RM->c_align;
+    double *restrict tqn = R->tqn;
+    tqn[0] -= (2.0 * hc_own + 0.5 * kc[0]) * x[0] + hc_cross * (x[last] + x[1]);
+    for (int i = 1; i < last; i++)
+        tqn[i] -= (2.0 * hc_own + 0.5 * kc[i]) * x[i] + hc_cross * (x[i - 1] + x[i + 1]);
+    tqn[last] -= (2.0 * hc_own + 0.5 * kc[last]) * x[last] + hc_cross * (x[last - 1] + x[0]);
+}
