@@ -21,16 +21,21 @@
  * moving_node 0.0002 J, rfe 10⁻⁶ J), and balance its energy at the end
  * within 0.1 % of it (measured 0.0006, 0.0007, 0.0002 and 10⁻⁶ J). The
  * 0.1 % is the issue's; what it allows for here is the contacts' and the
- * transport's numerical work, which measures 10⁻⁶ of it. */
+ * transport's numerical work, which measures 10⁻⁶ of it. The rfe belt
+ * runs a second time at 0.999 of its stable step: what its limit promises
+ * must hold. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "belt/belt.h"
 #include "beltdyn/model.h"
 #include "beltdyn/sim.h"
 #include "testlib.h"
 
-static void run(const char *formulation)
+/* the loop on a belt, at its automatic step (fraction 0) or at that
+ * fraction of its stable step */
+static void run(const char *formulation, double fraction)
 {
     char *text = bd_test_read_data("loop_from_rest.yaml");
     char *ramped = text ? bd_test_replaced(text, "force: 20000,", "force: [[0, 0], [1, 20000]],")
@@ -46,6 +51,19 @@ static void run(const char *formulation)
     bd_model_def def;
     bd_sim *sim;
     bd_test_make_sim(model, &def, &sim);
+    if (fraction > 0.0) {
+        char step[96];
+        snprintf(step, sizeof step, "initial_state: rest, time_step: %.9g}",
+                 fraction * sim->model->dt_limit);
+        bd_sim_free(sim);
+        bd_model_def_free(&def);
+        char *fixed = bd_test_replaced(model, "initial_state: rest}", step);
+        free(model);
+        model = fixed;
+        CHECK(model != NULL && bd_test_make_sim(model, &def, &sim) == 0);
+        if (!model)
+            return;
+    }
     free(model);
     double err;
     int ok = bd_test_run_balanced(sim, 10.0, &err) == 0;
@@ -54,10 +72,10 @@ static void run(const char *formulation)
     /* the takeup's work is booked as input −∫q·dF: negative, its force
      * rising while the carriage stands out */
     double scale = fabs(en.input_J);
-    printf("%s: %s at t = %.3f s; takeup work %.1f J, dissipated %.4f J (%.2g %%), "
-           "balance %.2g J (%.2g %%)\n", formulation, ok ? "completed" : "failed",
-           bd_sim_time(sim), en.input_J, en.dissipated_J, 100.0 * en.dissipated_J / scale, err,
-           100.0 * err / scale);
+    printf("%s (step %.4g ms): %s at t = %.3f s; takeup work %.1f J, dissipated %.4f J "
+           "(%.2g %%), balance %.2g J (%.2g %%)\n", formulation, 1e3 * sim->model->dt,
+           ok ? "completed" : "failed", bd_sim_time(sim), en.input_J, en.dissipated_J,
+           100.0 * en.dissipated_J / scale, err, 100.0 * err / scale);
     CHECK(ok);
     CHECK(scale > 300.0);
     CHECK(fabs(en.dissipated_J) < 1e-3 * scale);
@@ -68,9 +86,15 @@ static void run(const char *formulation)
 
 int main(void)
 {
-    run("discrete");
-    run("axial");
-    run("moving_node");
-    run("rfe");
+    run("discrete", 0.0);
+    run("axial", 0.0);
+    run("moving_node", 0.0);
+    run("rfe", 0.0);
+    /* the rfe belt at 0.999 of the stable step its build derived for the
+     * implicit rotations (belt/rfe/build.c): a law that promised a longer
+     * step than the scheme takes would let the centres' zigzag grow.
+     * Measured: balance 2e-5 J of 424 J; with the law's step raised by 5 %
+     * the run diverged within 0.007 s */
+    run("rfe", 0.999);
     return bd_test_finish("loop_in_tension");
 }
