@@ -13,8 +13,11 @@
  *         (j, j) and k_γ/4 − k_β to (i, j); element i's alignment adds
  *         k_ψ,i to (i, i),
  * and the damping C_φφ formed alike from the dashpots, Newmark's average
- * acceleration on these terms (their moment at φ + ¼Δt·Δω and at the
- * mid-step rate ω + ½Δω, Δω = ω⁺ − ω⁻) gives
+ * acceleration on these terms (β = 1/4, γ = 1/2: unconditionally stable,
+ * no numerical damping; T. J. R. Hughes, The Finite Element Method, 2000,
+ * §9.1; in the leapfrog form the moving-node belt's axial step uses,
+ * moving_node/solve.c: their moment at φ + ¼Δt·Δω and at the mid-step
+ * rate ω + ½Δω, Δω = ω⁺ − ω⁻) gives
  *   (J + ¼Δt²·K_φφ + ½Δt·C_φφ)·Δω = Δt·τ,
  * with τ every moment on the elements at t (forces.c). The matrix is
  * cyclic tridiagonal, symmetric positive definite and constant while the
