@@ -245,7 +245,7 @@ typedef struct bd_model {
     bd_idler_model *idlers;           /* [idler_count] */
     int *idlers_per_set;              /* [def->idler_set_count] */
     double *idler_spacing;            /* [def->idler_set_count] m, actual spacing */
-    /* the discrete belt's turn over each idler set at rest, rad, and the
+    /* the discrete or rfe belt's turn over each idler set at rest, rad, and the
      * belt speed over its transverse wave speed there (belt/lumped/
      * idler_turn.c; NULL for other belts, 0 where not found) */
     double *idler_turn, *idler_turn_speed;   /* [def->idler_set_count] */

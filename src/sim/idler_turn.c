@@ -1,4 +1,4 @@
-/* The warning where the discrete belt turns sharply over its idlers at
+/* The warning where the discrete or rfe belt turns sharply over its idlers at
  * speed: φ and v/c of each idler set are the build's (belt/lumped/
  * idler_turn.c, which halves the default element for φ ≥ 0.05 rad). On
  * generated conveyors at the 30° element the running force ran above the
@@ -31,10 +31,11 @@ void bd_idler_turn_warn(bd_sim *sim)
         if (!bd_idler_turn(sim, k, &phi, &voc) || phi < TURN_WARN_RAD || voc < TURN_WARN_SPEED)
             continue;
         bd_sim_warn(sim, "the idlers of span '%s' turn the belt by %.2f rad at rest, at %.2f "
-                    "of its wave speed: the discrete belt without bending stiffness has drawn "
+                    "of its wave speed: the %s belt without bending stiffness has drawn "
                     "running force above its resistance law on such spans (docs/physics.md "
-                    "§10)%s; give belt.bending_stiffness, or use the axial or moving_node belt "
-                    "for the running force", def->pulleys[def->idler_sets[k].span].name, phi,
-                    voc, sim->model->element_refined ? ", also at the halved default element" : "");
+                    "§10, §15)%s; give belt.bending_stiffness, or use the axial or moving_node "
+                    "belt for the running force", def->pulleys[def->idler_sets[k].span].name,
+                    phi, voc, sim->model->belt->name,
+                    sim->model->element_refined ? ", also at the halved default element" : "");
     }
 }

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# `check` says, for the discrete belt without bending stiffness, by how
+# `check` says, for the discrete (and rfe) belt without bending stiffness, by how
 # much each idler set turns the belt at rest, φ = m'g·a·cos δ/(T − m'v²),
 # and how fast the belt runs against its wave speed √(T/m'), and warns
 # where φ ≥ 0.10 rad at v ≥ 0.2·c: on such spans that belt has drawn
@@ -11,8 +11,9 @@
 # different tensions (the sag stretches the belt, the pulleys' friction
 # holds the difference: the carry's angle reads 4 % under the count), so
 # each angle is held to 5 % of it. With bending stiffness, or on the
-# moving-node belt, nothing is said. `run` puts the same warning into
-# summary.json (and so into the report) for the return span alone.
+# moving-node belt, nothing is said; the rfe belt is counted as the
+# discrete one. `run` puts the same warning into summary.json (and so
+# into the report) for the return span alone.
 . "$(dirname "$0")/lib/setup.sh"
 cat >"$tmp/loop.yaml" <<'YAML'
 name: idler turn
@@ -61,6 +62,20 @@ if grep -q "the idlers of span 'head' turn the belt" "$tmp/run/summary.json" \
     ok "run: summary.json warns for the return span only"
 else
     bad "run's warnings" "$(grep -A3 '"warnings"' "$tmp/run/summary.json")"
+fi
+# the rfe belt's element centres meet the idlers as the discrete belt's
+# nodes do (docs/physics.md §15): the same angles, the same warning, and
+# its default element halved as the discrete belt's is (0.15 m, the 30°
+# chord of the 0.3 m pulleys, to 0.0776 m)
+sed 's/belt: {/belt: {formulation: rfe, /' "$tmp/loop.yaml" >"$tmp/rfe.yaml"
+"$BELTDYN" check "$tmp/rfe.yaml" >"$tmp/out_rfe" 2>"$tmp/err" || bad "check rfe" "$(cat "$tmp/err")"
+rret=$(grep "^  span head" "$tmp/out_rfe" | sed -n 's/.*turns \([0-9.]*\) rad.*/\1/p')
+if [ -n "$rret" ] && [ "$rret" = "$ret" ] \
+    && grep -q "^warning: the idlers of span 'head'" "$tmp/out_rfe" \
+    && grep -q "^belt elements: .*the default halved" "$tmp/out_rfe"; then
+    ok "rfe: return bays $rret rad, warned, default element halved"
+else
+    bad "rfe" "$(grep 'elements:\|turns\|^warning' "$tmp/out_rfe")"
 fi
 sed 's/initial_tension: 5000}/initial_tension: 5000, bending_stiffness: 20}/' \
     "$tmp/loop.yaml" >"$tmp/ei.yaml"

@@ -172,9 +172,9 @@ int bd_lumped_build_sized(bd_sim *sim, bd_diag *diag, size_t state_size, size_t 
         return 1;
     bd_lumped *L = bd_xcalloc(1, state_size);
     sim->belt_data = L;
-    /* the idlers' turn of the discrete belt at rest: the default element
-     * (idler_turn.c), `check` and the warning (sim/idler_turn.c) */
-    if (def->belt.formulation == BD_FORMULATION_DISCRETE && def->idler_set_count > 0) {
+    /* the idlers' turn of the discrete or rfe belt at rest: the default
+     * element (idler_turn.c), `check` and the warning (sim/idler_turn.c) */
+    if (bd_lumped_turns_refine(def) && def->idler_set_count > 0) {
         size_t sets = (size_t)def->idler_set_count;
         sim->own->idler_turn = bd_xcalloc(sets, sizeof *sim->own->idler_turn);
         sim->own->idler_turn_speed = bd_xcalloc(sets, sizeof *sim->own->idler_turn_speed);

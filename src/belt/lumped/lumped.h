@@ -131,11 +131,13 @@ void bd_lumped_free(bd_sim *sim);
 void bd_lumped_free_model(bd_model *model);
 void bd_lumped_clone(bd_sim *dst, const bd_sim *src);
 double bd_lumped_stable_step(const bd_sim *sim, bd_time_step_limit *limit);
-/* idler_turn.c: the chord of 30° of the smallest pulley; φ (rad) and v/c
- * of every idler set of the discrete belt without bending stiffness at
- * rest (0 where none; returns whether any was found); the default element
- * length, *refined when halved for the idlers' turn (phi may be NULL for
- * other belts) */
+/* idler_turn.c: whether the belt's default element is halved over
+ * sharply turning idlers (the node-based belts: discrete and rfe); the
+ * chord of 30° of the smallest pulley; φ (rad) and v/c of every idler
+ * set of such a belt without bending stiffness at rest (0 where none;
+ * returns whether any was found); the default element length, *refined
+ * when halved for the idlers' turn (phi may be NULL for other belts) */
+int bd_lumped_turns_refine(const bd_model_def *def);
 double bd_lumped_pulley_element(const bd_model_def *def);
 int bd_lumped_idler_turns(const bd_model_def *def, const bd_path *path, double *phi,
                           double *voc);
