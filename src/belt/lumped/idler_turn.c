@@ -40,9 +40,10 @@
 #define TURN_LAYOUT_MAX_NODES 1e5
 
 /* the rfe belt's elements meet the idlers through the same node chain
- * (belt/rfe/rfe.h) and turn at them as sharply: generated seeds 8, 9 and
- * 12 (φ ≥ 0.05) drew +6.9, +12.1 and +10.5 % above their law at the 30°
- * element, +2.6, +2.6 and +4.1 % at half of it (docs/physics.md §15) */
+ * (belt/rfe/rfe.h) and turn at them as sharply: generated seeds 8, 12 and
+ * 16 (φ ≥ 0.05, default elements) drew +6.9, +10.5 and +13.3 % above
+ * their law at the 30° element, +2.6, +4.1 and +1.8 % at half of it
+ * (docs/physics.md §15) */
 int bd_lumped_turns_refine(const bd_model_def *def)
 {
     return def->belt.formulation == BD_FORMULATION_DISCRETE
