@@ -156,6 +156,35 @@ typedef struct bd_run_result {
 
 void bd_sim_result(const bd_sim *sim, bd_run_result *r);
 
+/* Steady running against the model's own resistance law (sensors/
+ * running.c): the invariant issue 10 holds every generated conveyor to,
+ * kept on every run. The drives' force on the belt, Σ(τ − b·ω)/R, and the
+ * belt speed at the first drive's tight side are averaged (Hann-weighted)
+ * over the run's last windows: three of 3 s (6 s with a motor drive)
+ * must agree (force within a quarter of the tolerance, speed within
+ * 0.25 %) for the running to count as steady, and the mean over the last
+ * two is held to the law (bd_running_law) at the mean speed, plus the
+ * resistances design.secondary: individual adds (the pulleys' own from
+ * the live tensions, the skirts and the loading at its own speed). */
+typedef struct bd_running_check {
+    int checked;            /* 1: held to the law (the run ended steady) */
+    int pass;               /* checked and |error_rel| ≤ tolerance_rel */
+    char why[240];          /* not checked: why, in words */
+    double from_s, to_s;    /* the window force and speed are the means of */
+    double force_N;         /* the drives' mean force on the belt */
+    double law_N;           /* the law at speed_mps */
+    double scale_N;         /* the law's terms summed in magnitude */
+    double error_rel;       /* (force − law) / max(scale, 1 N) */
+    double tolerance_rel;   /* 0.03 (discrete, rfe: nodes pass the idlers)
+                               or 0.01 (axial, moving_node) */
+    double speed_mps;
+    double spread_N, spread_mps;  /* the three windows' means: largest less smallest */
+} bd_running_check;
+/* turn the averaging on for windows that end at end_s (bd_sim_run does,
+ * at simulation.duration); before the first step of the run */
+void bd_sim_running_start(bd_sim *sim, double end_s);
+void bd_sim_running_check(const bd_sim *sim, bd_running_check *out);
+
 /* Read-outs of the state now, for tests, tools and programs that step a
  * simulation themselves. They change nothing. */
 double bd_sim_time(const bd_sim *sim);           /* s */

@@ -18,7 +18,11 @@
  *     start (a brake's torque after a stop is not the drive's);
  *   - takeup travel against the takeup's travel limits, when given;
  *   - lift-off from the idlers (the 2D belts);
- *   - the run's energy balance (a trust check: 1 %). */
+ *   - the run's energy balance (a trust check: 1 %);
+ *   - the steady running force against the model's own resistance law,
+ *     when the run ends in steady running (a trust check: 3 % for the
+ *     discrete and rfe belts, 1 % for the axial and moving-node belts;
+ *     sensors/running.c). */
 #include "io/checks.h"
 
 #include "parts/parts.h"
@@ -35,10 +39,11 @@ const char *bd_check_rule_name(bd_check_rule rule)
 }
 
 /* four for the belt and the static design, one for lift-off, one for the
- * energy balance; per pulley three for a drive and two for a takeup */
+ * energy balance, one for the running force; per pulley three for a drive
+ * and two for a takeup */
 int bd_run_checks_max(const bd_sim *sim)
 {
-    return 6 + 5 * sim->model->pulley_count;
+    return 7 + 5 * sim->model->pulley_count;
 }
 
 static void add(bd_check *out, int *n, int max, const char *name, const char *unit, double value,
@@ -122,5 +127,12 @@ int bd_run_checks(const bd_sim *sim, const bd_static_result *st, bd_check *out, 
             BD_CHECK_AT_MOST);
     add(out, &n, max, "energy balance of the run", "-", sim->energy.balance_error_rel, 0.01,
         BD_CHECK_AT_MOST);
+    /* steady running against the model's own law, when the run ends steady
+     * (sensors/running.c) */
+    bd_running_check rc;
+    bd_sim_running_check(sim, &rc);
+    if (rc.checked)
+        add(out, &n, max, "running force against the model's own law", "%",
+            100.0 * fabs(rc.error_rel), 100.0 * rc.tolerance_rel, BD_CHECK_AT_MOST);
     return n;
 }

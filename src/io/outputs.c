@@ -459,6 +459,24 @@ static int write_summary(bd_outputs *o, const bd_sim *sim, double wall, const ch
     bd_json_add_number(en, "kinetic_final_J", sim->energy.kinetic);
     bd_json_add_number(en, "balance_error_rel", sim->energy.balance_error_rel);
     bd_json_add_number(en, "dissipation_fall_rel", sim->energy.dissipation_fall_rel);
+    /* steady running against the model's own law (sensors/running.c) */
+    bd_running_check rc;
+    bd_sim_running_check(sim, &rc);
+    cJSON *rf = cJSON_AddObjectToObject(root, "running_force");
+    cJSON_AddBoolToObject(rf, "checked", rc.checked);
+    if (rc.checked) {
+        cJSON_AddBoolToObject(rf, "pass", rc.pass);
+        bd_json_add_number(rf, "from_s", rc.from_s);
+        bd_json_add_number(rf, "to_s", rc.to_s);
+        bd_json_add_number(rf, "speed_mps", rc.speed_mps);
+        bd_json_add_number(rf, "force_N", rc.force_N);
+        bd_json_add_number(rf, "law_N", rc.law_N);
+        bd_json_add_number(rf, "law_scale_N", rc.scale_N);
+        bd_json_add_number(rf, "error_rel", rc.error_rel);
+        bd_json_add_number(rf, "tolerance_rel", rc.tolerance_rel);
+    } else {
+        cJSON_AddStringToObject(rf, "why", rc.why);
+    }
     if (def->simulation.stabilize) {
         cJSON *st = cJSON_AddObjectToObject(root, "stabilize");
         bd_json_add_number(st, "steps", (double)sim->stabilize_iterations);

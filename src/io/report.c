@@ -1211,6 +1211,22 @@ void bd_rep_run_cards(bd_rep *r, bd_strbuf *b)
         bd_rep_card(b, be > 0.01 ? "bad" : "ok", "energy balance error", v,
              "largest over the run, relative");
     }
+    /* steady running against the model's own law (sensors/running.c) */
+    const cJSON *rf = cJSON_GetObjectItemCaseSensitive(r->summary, "running_force");
+    if (rf) {
+        double e = bd_json_num(rf, "error_rel"), tol = bd_json_num(rf, "tolerance_rel");
+        if (cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(rf, "checked")) && isfinite(e)
+            && isfinite(tol)) {
+            char note[96];
+            snprintf(v, sizeof v, "%+.1f %%", 100.0 * e);
+            snprintf(note, sizeof note, "steady drive force against the model's own law "
+                     "(within %.0f %%)", 100.0 * tol);
+            bd_rep_card(b, fabs(e) > tol ? "bad" : "ok", "running force", v, note);
+        } else {
+            bd_rep_card(b, NULL, "running force", "not checked",
+                        "the run does not end in steady running (summary.json says why)");
+        }
+    }
     int nw = warning_count(r);
     snprintf(v, sizeof v, "%d", nw);
     bd_rep_card(b, nw ? "bad" : "ok", "warnings", v,

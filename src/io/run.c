@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "base/clock.h"
+#include "model/secondary.h"
 
 static void progress(const bd_run_options *opt, const bd_sim *sim, double duration, double wall,
                      int done)
@@ -83,6 +84,7 @@ int bd_sim_run(bd_sim *sim, const bd_run_options *opt, char *err, size_t errlen)
     }
     if (status == BD_RUN_OK) {
         energy_start(sim);
+        bd_sim_running_start(sim, duration);
         bd_outputs_row(&out, sim, sim->t);
     }
     /* the progress of the simulated time counts its own wall time (the
@@ -163,10 +165,26 @@ int bd_sim_run(bd_sim *sim, const bd_run_options *opt, char *err, size_t errlen)
         bd_sim_warn(sim, "the belt is in compression (lowest tension %.0f N at t = %.3f s, "
                     "s = %.2f m): raise the takeup force", sim->tension_min, sim->tension_min_t,
                     sim->tension_min_s);
+    const bd_model_def *def = sim->model->def;
+    /* steady running against the model's own law (sensors/running.c) */
+    bd_running_check rc;
+    bd_sim_running_check(sim, &rc);
+    if (rc.checked && !rc.pass && status == BD_RUN_OK)
+        bd_sim_warn(sim, "running force: in steady running (%.4g to %.4g s, %.3g m/s) the drives "
+                    "deliver %.1f N, %+.1f %% against the model's own resistance law's %.1f N "
+                    "(idler rolling resistance, lift, feed, bearings%s; tolerance %.0f %%): the "
+                    "belt model dissipates energy the model does not declare, so the running "
+                    "force, power and tensions carry that error (docs/physics.md section 10). "
+                    "Halve belt.element_length and compare%s",
+                    rc.from_s, rc.to_s, rc.speed_mps, rc.force_N, 100.0 * rc.error_rel,
+                    rc.law_N, bd_secondary_individual(def) ? ", design.secondary" : "",
+                    100.0 * rc.tolerance_rel,
+                    sim->model->EI > 0.0 ? "" : ", give the belt its bending stiffness "
+                    "(belt.bending_stiffness), or run the axial or moving_node belt for the "
+                    "running force");
     /* the peak against the allowable during starts and stops
      * (design.safety_factor.starting: DIN 22101's belt-strength check for
      * the non-steady states; model-format.md) */
-    const bd_model_def *def = sim->model->def;
     double allow = def->belt.rated_tension / def->design.safety_factor.starting;
     if (def->belt.rated_tension > 0.0 && sim->tension_max > allow && !stabilize_ended)
         bd_sim_warn(sim, "belt strength: peak tension %.0f N at t = %.3f s, s = %.2f m exceeds "

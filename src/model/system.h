@@ -269,6 +269,19 @@ typedef struct bd_model {
     struct bd_sim *initial;
 } bd_model;
 
+/* Steady running at the end of a run against the model's own resistance
+ * law (sensors/running.c): Hann-weighted sums of the drive force, the
+ * belt speed and the pulleys' own resistances over the run's last three
+ * windows of `window` s (k = 0..2, ending at `end`) and over the last two
+ * together (k = 3). O(drives) per step, no allocation; off (window 0)
+ * unless a run turned it on. All stats, written in the sensors phase. */
+typedef struct bd_running_window {
+    double window, end;            /* s */
+    int drive;                     /* the first drive pulley, or -1 */
+    double travel, travel0;        /* m its surface ran, in all and by the windows */
+    double f[4], v[4], r[4], w[4]; /* N, m/s, N, weights summed */
+} bd_running_window;
+
 /* A simulation: the compiled model and the state that the step loop
  * advances. */
 struct bd_sim {
@@ -312,6 +325,7 @@ struct bd_sim {
     /* stats */
     bd_energy energy;
     bd_lift_off lift;
+    bd_running_window running;
     double tension_max, tension_max_t, tension_max_s;
     double tension_min, tension_min_t, tension_min_s;
     long stabilize_iterations;

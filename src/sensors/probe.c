@@ -11,6 +11,7 @@ void bd_sensors_update(bd_sim *sim)
         if (sim->pulleys[i].m->def->has_drive)
             bd_monitor_update(sim, &sim->pulleys[i]);
     bd_lift_off_update(sim);
+    bd_running_update(sim);
 }
 
 void bd_probe_read(bd_sim *sim, bd_probe *pr)

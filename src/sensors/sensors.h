@@ -30,6 +30,9 @@ void bd_sensors_update(bd_sim *sim);
 void bd_lift_off_reset(bd_sim *sim);
 void bd_lift_off_update(bd_sim *sim);
 void bd_lift_off_report(bd_sim *sim);
+/* running.c: the steady running force's averages (bd_sim_running_start
+ * turns them on), every step */
+void bd_running_update(bd_sim *sim);
 /* a probe's reading now, into its record (output times) */
 void bd_probe_read(bd_sim *sim, bd_probe *pr);
 

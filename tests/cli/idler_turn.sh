@@ -15,27 +15,8 @@
 # discrete one. `run` puts the same warning into summary.json (and so
 # into the report) for the return span alone.
 . "$(dirname "$0")/lib/setup.sh"
-cat >"$tmp/loop.yaml" <<'YAML'
-name: idler turn
-gravity: 9.81
-belt: {mass_per_length: 30, axial_stiffness: 1.0e6, initial_tension: 5000}
-pulleys:
-  - name: head
-    x: 30
-    y: 0
-    radius: 0.3
-    wrap: cw
-    drive: {control: speed, speed: 6, start: {curve: linear, time: 3}}
-  - name: tail
-    x: 0
-    y: 0
-    radius: 0.3
-    wrap: cw
-idlers:
-  - {span: tail, spacing: 1.2, rolling_resistance: 0.01}
-  - {span: head, spacing: 3, rolling_resistance: 0.01}
-simulation: {duration: 1}
-YAML
+DATA="${TEST_DATA:-$(cd "$(dirname "$0")/../data" && pwd)}"
+cp "$DATA/idler_turn_loop.yaml" "$tmp/loop.yaml"
 "$BELTDYN" check "$tmp/loop.yaml" >"$tmp/out" 2>"$tmp/err" || bad "check" "$(cat "$tmp/err")"
 ret=$(grep "^  span head" "$tmp/out" | sed -n 's/.*turns \([0-9.]*\) rad.*/\1/p')
 if [ -n "$ret" ] && awk -v p="$ret" 'BEGIN { exit !(p > 0.225 * 0.95 && p < 0.225 * 1.05) }'; then
