@@ -1,8 +1,11 @@
 /* beltdyn: the command line (spec/cli.md). Only the public API is used. */
+#include <errno.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "beltdyn/boom.h"
@@ -71,6 +74,7 @@ static int usage(FILE *f)
             "usage: beltdyn check MODEL.yaml\n"
             "       beltdyn static MODEL.yaml [--json]\n"
             "       beltdyn run MODEL.yaml [-o DIR] [--quiet] [--hdf5] [--force]\n"
+            "                   [--mesh-check]\n"
             "       beltdyn report DIR\n"
             "       beltdyn study MODEL.yaml [-o DIR] [--curves LIST] [--times LIST]\n"
             "                     [--delays LIST] [--after S] [-j N] [--resume] [--force]\n"
@@ -87,7 +91,9 @@ static int usage(FILE *f)
             "          tension.csv and envelope.csv into DIR (default ./out);\n"
             "          --hdf5 also writes the tension field to DIR/tension.h5;\n"
             "          a DIR that is not empty must hold an earlier run (whose\n"
-            "          report and plots are then removed), else --force\n"
+            "          report and plots are then removed), else --force;\n"
+            "          --mesh-check runs it again on elements half as long and\n"
+            "          says in summary.json what moved by more than 2 %%\n"
             "  report  plots and report.html from a finished run's DIR, or the\n"
             "          comparison of a study's DIR (start curves, or a sweep's\n"
             "          outputs against its keys and their sensitivity ranking)\n"
@@ -302,7 +308,7 @@ static void print_boom_summary(const bd_boom *boom, const bd_boom_def *def, FILE
 
 typedef struct run_args {
     const char *path, *dir;
-    int quiet, hdf5, force;
+    int quiet, hdf5, force, mesh_check;
 } run_args;
 
 /* what every run does before it starts (cli.md): the output directory,
@@ -362,6 +368,70 @@ static int run_boom(const run_args *a)
     return rc;
 }
 
+/* the mesh check (io/mesh_check.c): the model run again on elements half
+ * as long into DIR/.mesh-check (its tension field thinned, removed after),
+ * the figures compared into DIR/summary.json. The run's exit code: 0, 1
+ * (the finer run failed or was interrupted), 2 (it cannot be built) */
+static const char *const mesh_files[] = {"summary.json", "history.csv", "tension.csv",
+                                         "envelope.csv", "parts.csv", "tension.h5"};
+
+static int mesh_check(const run_args *a, const bd_sim *coarse, bd_run_options *opt)
+{
+    bd_model_def def;
+    bd_diag diag;
+    bd_diag_init(&diag);
+    if (bd_model_load(a->path, &def, &diag))
+        return said(&diag, 1);
+    bd_mesh_check mc;
+    bd_mesh_refine(coarse, &def, &mc);
+    bd_sim *fine = NULL;
+    if (bd_sim_create(&def, &fine, &diag)) {
+        fprintf(stderr, "beltdyn: mesh check: the model on %s cannot be built:\n", mc.mesh);
+        bd_model_def_free(&def);
+        return said(&diag, 1);
+    }
+    bd_diag_free(&diag);
+    char tmp[1024], err[1200] = "";
+    int rc = BD_RUN_BAD_INPUT;
+    if (snprintf(tmp, sizeof tmp, "%s/.mesh-check", a->dir) >= (int)sizeof tmp
+        || (mkdir(tmp, 0777) != 0 && errno != EEXIST)) {
+        snprintf(err, sizeof err, "cannot make '%s'", tmp);
+    } else {
+        if (!a->quiet)
+            fprintf(stderr, "mesh check: the same run on %s\n", mc.mesh);
+        bd_run_options o = *opt;
+        o.out_dir = tmp;
+        o.hdf5 = 0;
+        struct timespec t0, t1;
+        clock_gettime(CLOCK_MONOTONIC, &t0);
+        rc = bd_sim_run(fine, &o, err, sizeof err);
+        clock_gettime(CLOCK_MONOTONIC, &t1);
+        mc.fine_wall_s = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
+        if (rc == BD_RUN_OK) {
+            bd_mesh_compare(coarse, fine, &mc);
+            rc = bd_mesh_check_write(a->dir, &mc, err, sizeof err) ? BD_RUN_FAILED : BD_RUN_OK;
+        }
+        for (size_t i = 0; i < sizeof mesh_files / sizeof mesh_files[0]; i++) {
+            char f[1100];
+            snprintf(f, sizeof f, "%s/%s", tmp, mesh_files[i]);
+            remove(f);
+        }
+        rmdir(tmp);
+    }
+    if (rc != BD_RUN_OK)
+        fprintf(stderr, "beltdyn: %smesh check: %s\n", rc == BD_RUN_FAILED ? "error: " : "", err);
+    else if (!a->quiet && isatty(STDOUT_FILENO)) {
+        printf("mesh check, %s: %s\n", mc.mesh, mc.converged ? "converged" : "NOT converged");
+        for (int i = 0; i < mc.count; i++)
+            printf("  %-28s %12.6g -> %-12.6g %s  %+.2f %%%s\n", mc.q[i].name, mc.q[i].coarse,
+                   mc.q[i].fine, mc.q[i].unit, 100.0 * mc.q[i].change_rel,
+                   mc.q[i].pass ? "" : "  (over 2 %)");
+    }
+    bd_sim_free(fine);
+    bd_model_def_free(&def);
+    return rc == BD_RUN_BAD_INPUT ? 2 : rc;
+}
+
 static int cmd_run(int argc, char **argv)
 {
     run_args a = {.dir = "out"};
@@ -374,6 +444,8 @@ static int cmd_run(int argc, char **argv)
             a.hdf5 = 1;
         else if (strcmp(argv[i], "--force") == 0)
             a.force = 1;
+        else if (strcmp(argv[i], "--mesh-check") == 0)
+            a.mesh_check = 1;
         else if (!a.path && argv[i][0] != '-')
             a.path = argv[i];
         else
@@ -381,6 +453,11 @@ static int cmd_run(int argc, char **argv)
     }
     if (!a.path)
         return usage(stderr);
+    if (bd_model_is_boom(a.path) && a.mesh_check) {
+        fprintf(stderr, "beltdyn: %s: --mesh-check halves a conveyor belt's elements; a boom "
+                "has none\n", a.path);
+        return 2;
+    }
     if (bd_model_is_boom(a.path))
         return run_boom(&a);
     bd_model_def def;
@@ -393,10 +470,13 @@ static int cmd_run(int argc, char **argv)
     if (rc == 0) {
         char err[1024] = "";
         rc = bd_sim_run(sim, &opt, err, sizeof err);
-        if (run_end(rc, err, &a)) {
+        int show = run_end(rc, err, &a);
+        if (show) {
             print_summary(sim, &def, stdout);
             bd_report_print_checks(a.dir, stdout);
         }
+        if (rc == BD_RUN_OK && a.mesh_check)
+            rc = mesh_check(&a, sim, &opt);
     }
     bd_sim_free(sim);
     bd_model_def_free(&def);

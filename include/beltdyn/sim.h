@@ -185,6 +185,39 @@ typedef struct bd_running_check {
 void bd_sim_running_start(bd_sim *sim, double end_s);
 void bd_sim_running_check(const bd_sim *sim, bd_running_check *out);
 
+/* The mesh check (`beltdyn run --mesh-check`, io/mesh_check.c): the same
+ * model run again on elements half as long, and the figures an engineer
+ * reads first compared. Each is judged within 2 % (issue 10: running
+ * force and peak tight-side tension must change by less than that when
+ * the element length halves). */
+#define BD_MESH_QUANTITIES 8
+typedef struct bd_mesh_quantity {
+    char name[64];
+    char unit[8];
+    double coarse, fine;   /* the run's, the finer run's */
+    double change_rel;     /* (fine − coarse)/|coarse| */
+    int pass;              /* |change_rel| ≤ tolerance_rel */
+} bd_mesh_quantity;
+typedef struct bd_mesh_check {
+    char mesh[160];        /* the two meshes in words */
+    int count;
+    bd_mesh_quantity q[BD_MESH_QUANTITIES];
+    double tolerance_rel;
+    int converged;         /* every quantity passed */
+    double fine_wall_s;
+} bd_mesh_check;
+/* set def's element keys to half of what `coarse` was built with (def
+ * loaded from the same file: element_length, or the moving-node belt's
+ * wrap_element_angle and span_element_length); the finer run writes only
+ * the first and last rows of its tension field. Says the meshes in
+ * mc->mesh. */
+void bd_mesh_refine(const bd_sim *coarse, bd_model_def *def, bd_mesh_check *mc);
+/* compare the two finished runs (mc->mesh and fine_wall_s kept) */
+void bd_mesh_compare(const bd_sim *coarse, const bd_sim *fine, bd_mesh_check *mc);
+/* add mc to DIR/summary.json as "mesh_check", and a warning when it did
+ * not converge (rewritten whole, by a temporary name). 0 ok */
+int bd_mesh_check_write(const char *dir, const bd_mesh_check *mc, char *err, size_t errlen);
+
 /* Read-outs of the state now, for tests, tools and programs that step a
  * simulation themselves. They change nothing. */
 double bd_sim_time(const bd_sim *sim);           /* s */

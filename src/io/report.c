@@ -1227,6 +1227,15 @@ void bd_rep_run_cards(bd_rep *r, bd_strbuf *b)
                         "the run does not end in steady running (summary.json says why)");
         }
     }
+    /* the mesh check (io/mesh_check.c; run --mesh-check) */
+    const cJSON *mc = cJSON_GetObjectItemCaseSensitive(r->summary, "mesh_check");
+    const cJSON *conv = cJSON_GetObjectItemCaseSensitive(mc, "converged");
+    if (cJSON_IsBool(conv)) {
+        const cJSON *mesh = cJSON_GetObjectItemCaseSensitive(mc, "mesh");
+        bd_rep_card(b, cJSON_IsTrue(conv) ? "ok" : "bad", "mesh check",
+                    cJSON_IsTrue(conv) ? "converged" : "not converged",
+                    cJSON_IsString(mesh) ? mesh->valuestring : "");
+    }
     int nw = warning_count(r);
     snprintf(v, sizeof v, "%d", nw);
     bd_rep_card(b, nw ? "bad" : "ok", "warnings", v,

@@ -70,12 +70,6 @@ elif want == "individual":
           rf)
 PY
 }
-judge() {   # name, verdict line
-    case "$2" in
-        ok*) ok "$1: ${2:0:160}" ;;
-        *) bad "$1" "$2" ;;
-    esac
-}
 for f in axial moving_node discrete; do
     sed "s/belt: {/belt: {formulation: $f, /" "$tmp/loop.yaml" >"$tmp/$f.yaml"
     "$BELTDYN" run "$tmp/$f.yaml" -o "$tmp/$f" --quiet >/dev/null 2>"$tmp/err" \
