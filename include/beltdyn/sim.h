@@ -169,7 +169,7 @@ void bd_sim_result(const bd_sim *sim, bd_run_result *r);
 typedef struct bd_running_check {
     int checked;            /* 1: held to the law (the run ended steady) */
     int pass;               /* checked and |error_rel| ≤ tolerance_rel */
-    char why[240];          /* not checked: why, in words */
+    char why[400];          /* not checked: why, in words */
     double from_s, to_s;    /* the window force and speed are the means of */
     double force_N;         /* the drives' mean force on the belt */
     double law_N;           /* the law at speed_mps */

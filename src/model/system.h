@@ -121,6 +121,10 @@ typedef struct bd_pulley_body {
     /* stats */
     double torque_max_abs;  /* N·m largest |drive torque| */
     double travel_min, travel_max;  /* m */
+    /* m, N: a movable carriage's travel at the start of each of the
+     * running check's windows and now, and its largest pull over them
+     * (sensors/running.c) */
+    double swing_q[4], swing_pull;
     bd_drive_monitor mon;   /* drive pulleys only */
 } bd_pulley_body;
 
@@ -280,6 +284,7 @@ typedef struct bd_running_window {
     int drive;                     /* the first drive pulley, or -1 */
     double travel, travel0;        /* m its surface ran, in all and by the windows */
     double f[4], v[4], r[4], w[4]; /* N, m/s, N, weights summed */
+    int window_at;                 /* the window the last step was in, -1 before */
 } bd_running_window;
 
 /* A simulation: the compiled model and the state that the step loop

@@ -28,6 +28,7 @@
 #include "laws/secondary_resistance.h"
 #include "model/path.h"
 #include "model/secondary.h"
+#include "parts/parts.h"
 
 #define PI 3.14159265358979323846
 /* s, each window; a motor drive's swing with the takeup is slower */
@@ -66,6 +67,7 @@ void bd_sim_running_start(bd_sim *sim, double end_s)
     r->window = has_motor(sim->model->def) ? WINDOW_MOTOR : WINDOW;
     r->end = end_s;
     r->drive = first_drive(sim);
+    r->window_at = -1;
 }
 
 static void add(bd_running_window *r, int k, double w, double f, double v, double res)
@@ -103,6 +105,19 @@ void bd_running_update(bd_sim *sim)
     /* the three windows, and the last two as one */
     double u = (t - (r->end - 3.0 * W)) / W;
     int k = u >= 3.0 ? 2 : (int)u;
+    /* the takeup carriages' travel as each window starts, and now */
+    const int starts = k != r->window_at, first = r->window_at < 0;
+    r->window_at = k;
+    for (int i = 0; i < sim->model->pulley_count; i++) {
+        bd_pulley_body *p = &sim->pulleys[i];
+        if (!p->m->movable)
+            continue;
+        double Mc, pull = fabs(bd_pulley_carriage(sim, p, &Mc));
+        if (starts)
+            p->swing_q[k] = p->q;
+        p->swing_q[3] = p->q;
+        p->swing_pull = first ? pull : fmax(p->swing_pull, pull);
+    }
     double s = sin(PI * (u - k));
     add(r, k, s * s, F, v, res);
     if (u > 1.0) {
@@ -212,18 +227,48 @@ void bd_sim_running_check(const bd_sim *sim, bd_running_check *out)
                  "longer run is checked", W, out->spread_mps, vtol);
         return;
     }
-    /* a verdict every window agrees with: a drive force still swinging
-     * across the tolerance's edge is said, not judged */
-    int within = 0, above = 0, below = 0;
-    double e[3];
+    /* a takeup carriage still moving trades energy with the drives over
+     * periods the windows need not average: its pull times its travel
+     * within a window, spread over the belt's travel in it, against a
+     * quarter of the tolerance. Generated seed 3037 (ζ = 0, from rest)
+     * swings its 11 kN carriage through 166 mm for ever: its three 3 s
+     * means read +5.9 % above its law where torture's 30 s mean reads
+     * +0.04 % */
+    for (int i = 0; i < sim->model->pulley_count; i++) {
+        const bd_pulley_body *p = &sim->pulleys[i];
+        if (!p->m->movable)
+            continue;
+        double moved = 0.0;
+        for (int k = 0; k < 3; k++)
+            moved = fmax(moved, fabs(p->swing_q[k + 1] - p->swing_q[k]));
+        double worth = p->swing_pull * moved / (fabs(vm) * W);
+        if (worth > 0.25 * tol * fscale) {
+            snprintf(out->why, sizeof out->why,
+                     "takeup '%s' still moves at the end of the run: by up to %.3g mm in one of "
+                     "the last three %.3g s windows at %.3g N, worth %.3g N of drive force "
+                     "against the %.3g N the check bears; a longer or better damped run is "
+                     "checked", p->m->def->name, 1e3 * moved, W, p->swing_pull, worth,
+                     0.25 * tol * fscale);
+            return;
+        }
+    }
+    /* a verdict every window agrees with: a pass when each window's mean
+     * is within the tolerance; a failure when each is beyond it on one
+     * side by more than the windows' spread, so that no swing the windows
+     * still hold could carry them there. Else the force still swings
+     * across the tolerance's edge: said, not judged */
+    int within = 0;
+    double e[3], e_lo = INFINITY, e_hi = -INFINITY;
     for (int k = 0; k < 3; k++) {
         e[k] = (f[k] - out->law_N) / fscale;
         within += fabs(e[k]) <= tol;
-        above += e[k] > tol;
-        below += e[k] < -tol;
+        e_lo = fmin(e_lo, e[k]);
+        e_hi = fmax(e_hi, e[k]);
     }
+    const double scatter = e_hi - e_lo;
+    int above = e_lo - tol > scatter, below = -tol - e_hi > scatter;
     out->error_rel = (out->force_N - out->law_N) / fscale;
-    if (within != 3 && above != 3 && below != 3) {
+    if (within != 3 && !above && !below) {
         snprintf(out->why, sizeof out->why,
                  "the drive force still swings across the tolerance at the end of the run: "
                  "its means over the last three %.3g s windows are %+.2f, %+.2f and %+.2f %% "

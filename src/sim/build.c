@@ -133,6 +133,7 @@ static int create(const bd_model_def *def, bd_sim *volatile *out, bd_diag *diag)
     /* a failure of its forces shows again, with its message, in the first step */
     (void)bd_sim_start_at_rest(sim);
     bd_idler_turn_warn(sim);
+    bd_sag_compliance_warn(sim);
     bd_sim_records_restart(sim);
     return 0;
 }

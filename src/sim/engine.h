@@ -38,6 +38,9 @@ int bd_cost_estimate(bd_sim *sim, bd_diag *diag);
  * or no such span); the warning where φ and v/c are large */
 int bd_idler_turn(const bd_sim *sim, int k, double *phi, double *v_over_c);
 void bd_idler_turn_warn(bd_sim *sim);
+/* sag_compliance.c: warned where the belt's elements leave out much of the
+ * sag that its idler bays add to its axial compliance */
+void bd_sag_compliance_warn(bd_sim *sim);
 /* the same estimate of a definition over `duration` s, from its path and
  * its formulation's `estimate`, without a simulation: counts, step, bytes,
  * seconds (not the memory available; the study orders its cases by it).

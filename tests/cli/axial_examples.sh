@@ -40,7 +40,14 @@ def check(cond, what):
 for name, s in (("overland", ov), ("vbelt", vb)):
     check(s["status"] == "completed", name + " completed")
     check(s["energy"]["balance_error_rel"] < 0.01, "%s energy balance within 1 percent (%.2g)" % (name, s["energy"]["balance_error_rel"]))
-    check(s["warnings"] == [], name + " has no warnings")
+    # vbelt's short fabric belt sags 70-76 % of its axial compliance into its
+    # idler bays, none of which the axial belt holds: warned, and true (its
+    # start peaks 25 % higher on the discrete belt, docs/physics.md section
+    # 14); any other warning fails
+    other = [w for w in s["warnings"] if "sag between its idlers" not in w]
+    sag = len(s["warnings"]) - len(other)
+    check(other == [] and sag == (2 if name == "vbelt" else 0),
+          "%s has no warnings but %d on its sag (%s)" % (name, sag, other))
 head = vb["pulleys"]["head"]
 check(head.get("transmission_slip_max_mps", 0) > 0.5, "the V belt slips during the DOL start (%.2f m/s)" % head.get("transmission_slip_max_mps", 0))
 check(head["omega_final_rad_s"] * 0.25 > 3.0, "the conveyor reaches its speed (%.2f m/s)" % (head["omega_final_rad_s"] * 0.25))

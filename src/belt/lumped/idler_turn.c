@@ -59,9 +59,10 @@ double bd_lumped_pulley_element(const bd_model_def *def)
     return 2.0 * r * sin(BD_PI / 12.0);
 }
 
-/* φ and v/c of idler set k on the laid belt; 0 when it has none */
-static int set_turn(const bd_model_def *def, const bd_layout *lay, int k, double v,
-                    double *phi, double *voc)
+/* idler set k's span on the laid belt: its mean tension, its mass per
+ * metre (belt and load at rest), the cosine of its slope and the
+ * spacing; 0 when it has no idlers */
+static int set_rest(const bd_model_def *def, const bd_layout *lay, int k, bd_span_rest *out)
 {
     const bd_path *path = &lay->path;
     const bd_path_segment *sp = bd_path_span(path, def->idler_sets[k].span);
@@ -77,23 +78,19 @@ static int set_turn(const bd_model_def *def, const bd_layout *lay, int k, double
         }
     if (count == 0)
         return 0;
-    T /= count;
     bd_rest_load load = bd_layout_rest_load(def, path);
-    double mpl = bd_rest_mass(path, &load, sp->s0, sp->s0 + sp->length) / sp->length;
-    double tc = T - mpl * v * v;
-    if (tc <= 0.0 || mpl <= 0.0)
-        return 0;
-    *phi = mpl * def->gravity * a * fabs(sp->dir[0]) / tc;
-    *voc = v / sqrt(T / mpl);
-    return 1;
+    out->tension = T / count;
+    out->mass_per_length = bd_rest_mass(path, &load, sp->s0, sp->s0 + sp->length) / sp->length;
+    out->cos_slope = fabs(sp->dir[0]);
+    out->spacing = a;
+    return out->mass_per_length > 0.0;
 }
 
-int bd_lumped_idler_turns(const bd_model_def *def, const bd_path *path, double *phi,
-                          double *voc)
+int bd_lumped_span_rest(const bd_model_def *def, const bd_path *path, bd_span_rest *out)
 {
     for (int k = 0; k < def->idler_set_count; k++)
-        phi[k] = voc[k] = 0.0;
-    if (def->idler_set_count == 0 || def->belt.bending_stiffness > 0.0)
+        out[k] = (bd_span_rest){0};
+    if (def->idler_set_count == 0)
         return 0;
     /* the tension at rest on the supports, whatever the start */
     bd_model_def laid = *def;
@@ -104,11 +101,34 @@ int bd_lumped_idler_turns(const bd_model_def *def, const bd_path *path, double *
     bd_layout_request req = {path, l};
     if (bd_layout_belt(&laid, &req, &lay, err, sizeof err))
         return 0;
-    double v = bd_drives_reference_speed(def);
     int found = 0;
     for (int k = 0; k < def->idler_set_count; k++)
-        found |= set_turn(def, &lay, k, v, &phi[k], &voc[k]);
+        found |= set_rest(def, &lay, k, &out[k]);
     bd_layout_free(&lay);
+    return found;
+}
+
+int bd_lumped_idler_turns(const bd_model_def *def, const bd_path *path, double *phi,
+                          double *voc)
+{
+    for (int k = 0; k < def->idler_set_count; k++)
+        phi[k] = voc[k] = 0.0;
+    if (def->idler_set_count == 0 || def->belt.bending_stiffness > 0.0)
+        return 0;
+    bd_span_rest *rest = bd_xcalloc((size_t)def->idler_set_count, sizeof *rest);
+    bd_lumped_span_rest(def, path, rest);
+    double v = bd_drives_reference_speed(def);
+    int found = 0;
+    for (int k = 0; k < def->idler_set_count; k++) {
+        const bd_span_rest *r = &rest[k];
+        double tc = r->tension - r->mass_per_length * v * v;
+        if (r->mass_per_length <= 0.0 || tc <= 0.0)
+            continue;
+        phi[k] = r->mass_per_length * def->gravity * r->spacing * r->cos_slope / tc;
+        voc[k] = v / sqrt(r->tension / r->mass_per_length);
+        found = 1;
+    }
+    free(rest);
     return found;
 }
 

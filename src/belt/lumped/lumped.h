@@ -138,6 +138,14 @@ double bd_lumped_stable_step(const bd_sim *sim, bd_time_step_limit *limit);
  * returns whether any was found); the default element length, *refined
  * when halved for the idlers' turn (phi may be NULL for other belts) */
 int bd_lumped_turns_refine(const bd_model_def *def);
+/* each idler set's span at rest on its supports (the `static` layout of
+ * the string, whatever the start and the formulation): the mean tension,
+ * N; belt and load, kg/m; cos of its slope; the idlers' spacing, m. All 0
+ * for a set without idlers; returns whether any was found */
+typedef struct bd_span_rest {
+    double tension, mass_per_length, cos_slope, spacing;
+} bd_span_rest;
+int bd_lumped_span_rest(const bd_model_def *def, const bd_path *path, bd_span_rest *out);
 double bd_lumped_pulley_element(const bd_model_def *def);
 int bd_lumped_idler_turns(const bd_model_def *def, const bd_path *path, double *phi,
                           double *voc);
