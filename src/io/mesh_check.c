@@ -19,6 +19,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/constants.h"
 #include "base/file.h"
 #include "base/json_util.h"
 
@@ -42,8 +43,8 @@ void bd_mesh_refine(const bd_sim *coarse, bd_model_def *def, bd_mesh_check *mc)
         }
         snprintf(mc->mesh, sizeof mc->mesh,
                  "wrap elements of %.3g° and span elements of %.4g m at most, against %.3g° "
-                 "and %s", arc * 180.0 / 3.14159265358979323846, 0.5 * span,
-                 b->wrap_element_angle * 180.0 / 3.14159265358979323846,
+                 "and %s", arc * 180.0 / BD_PI, 0.5 * span,
+                 b->wrap_element_angle * 180.0 / BD_PI,
                  b->span_element_length > 0.0 ? "the given span elements"
                                               : "the idler spacing");
         b->wrap_element_angle = arc;

@@ -25,12 +25,12 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "base/constants.h"
 #include "laws/secondary_resistance.h"
 #include "model/path.h"
 #include "model/secondary.h"
 #include "parts/parts.h"
 
-#define PI 3.14159265358979323846
 /* s, each window; a motor drive's swing with the takeup is slower */
 #define WINDOW 3.0
 #define WINDOW_MOTOR 6.0
@@ -118,10 +118,10 @@ void bd_running_update(bd_sim *sim)
         p->swing_q[3] = p->q;
         p->swing_pull = first ? pull : fmax(p->swing_pull, pull);
     }
-    double s = sin(PI * (u - k));
+    double s = sin(BD_PI * (u - k));
     add(r, k, s * s, F, v, res);
     if (u > 1.0) {
-        double s2 = sin(PI * 0.5 * (u - 1.0));
+        double s2 = sin(BD_PI * 0.5 * (u - 1.0));
         add(r, 3, s2 * s2, F, v, res);
     }
 }
