@@ -229,11 +229,15 @@ void bd_sim_running_check(const bd_sim *sim, bd_running_check *out)
     }
     /* a takeup carriage still moving trades energy with the drives over
      * periods the windows need not average: its pull times its travel
-     * within a window, spread over the belt's travel in it, against a
-     * quarter of the tolerance. Generated seed 3037 (ζ = 0, from rest)
-     * swings its 11 kN carriage through 166 mm for ever: its three 3 s
-     * means read +5.9 % above its law where torture's 30 s mean reads
+     * within a window, spread over the belt's travel in it, is what that
+     * can shift a window's mean force by. Generated seed 3037 (ζ = 0, from
+     * rest) swings its 11 kN carriage through 166 mm for ever: its three
+     * 3 s means read −67, −77 and −50 % of its law, the last two as one
+     * +5.9 % (its swing worth 9 %), where torture's 30 s mean reads
      * +0.04 % */
+    double worth = 0.0;
+    const char *moving = NULL;
+    double moved_most = 0.0;
     for (int i = 0; i < sim->model->pulley_count; i++) {
         const bd_pulley_body *p = &sim->pulleys[i];
         if (!p->m->movable)
@@ -241,22 +245,19 @@ void bd_sim_running_check(const bd_sim *sim, bd_running_check *out)
         double moved = 0.0;
         for (int k = 0; k < 3; k++)
             moved = fmax(moved, fabs(p->swing_q[k + 1] - p->swing_q[k]));
-        double worth = p->swing_pull * moved / (fabs(vm) * W);
-        if (worth > 0.25 * tol * fscale) {
-            snprintf(out->why, sizeof out->why,
-                     "takeup '%s' still moves at the end of the run: by up to %.3g mm in one of "
-                     "the last three %.3g s windows at %.3g N, worth %.3g N of drive force "
-                     "against the %.3g N the check bears; a longer or better damped run is "
-                     "checked", p->m->def->name, 1e3 * moved, W, p->swing_pull, worth,
-                     0.25 * tol * fscale);
-            return;
+        double w = p->swing_pull * moved / (fabs(vm) * W) / fscale;
+        if (w > worth) {
+            worth = w;
+            moving = p->m->def->name;
+            moved_most = moved;
         }
     }
-    /* a verdict every window agrees with: a pass when each window's mean
-     * is within the tolerance; a failure when each is beyond it on one
-     * side by more than the windows' spread, so that no swing the windows
-     * still hold could carry them there. Else the force still swings
-     * across the tolerance's edge: said, not judged */
+    /* a verdict every window agrees with, beyond what the swings left can
+     * explain: a pass when each window's mean is within the tolerance and
+     * the takeups move by less than a quarter of it; a failure when the
+     * windows agree within the tolerance and each is beyond it on one side
+     * by more than their spread and the takeups' worth. Else said, not
+     * judged */
     int within = 0;
     double e[3], e_lo = INFINITY, e_hi = -INFINITY;
     for (int k = 0; k < 3; k++) {
@@ -265,17 +266,31 @@ void bd_sim_running_check(const bd_sim *sim, bd_running_check *out)
         e_lo = fmin(e_lo, e[k]);
         e_hi = fmax(e_hi, e[k]);
     }
-    const double scatter = e_hi - e_lo;
-    int above = e_lo - tol > scatter, below = -tol - e_hi > scatter;
+    /* windows that disagree by more than the tolerance do not hold a mean
+     * to judge (3037's swing of ±1400 N about its law's 842 N reads −67,
+     * −77 and −50 % in its three windows) */
+    const double scatter = e_hi - e_lo, doubt = fmax(scatter, worth);
+    int pass = within == 3 && worth <= 0.25 * tol;
+    int above = scatter <= tol && e_lo - tol > doubt;
+    int below = scatter <= tol && -tol - e_hi > doubt;
     out->error_rel = (out->force_N - out->law_N) / fscale;
-    if (within != 3 && !above && !below) {
-        snprintf(out->why, sizeof out->why,
-                 "the drive force still swings across the tolerance at the end of the run: "
-                 "its means over the last three %.3g s windows are %+.2f, %+.2f and %+.2f %% "
-                 "of the law's %.4g N (tolerance %.0f %%); a longer run is checked",
-                 W, 100.0 * e[0], 100.0 * e[1], 100.0 * e[2], out->law_N, 100.0 * tol);
+    if (!pass && !above && !below) {
+        if (moving && worth > 0.25 * tol)
+            snprintf(out->why, sizeof out->why,
+                     "takeup '%s' still moves at the end of the run: by up to %.3g mm in one of "
+                     "the last three %.3g s windows, which can shift the drive force by %.2g %% "
+                     "of the law's %.4g N; the windows read %+.2f, %+.2f and %+.2f %% (tolerance "
+                     "%.0f %%); a longer or better damped run is checked", moving,
+                     1e3 * moved_most, W, 100.0 * worth, out->law_N, 100.0 * e[0],
+                     100.0 * e[1], 100.0 * e[2], 100.0 * tol);
+        else
+            snprintf(out->why, sizeof out->why,
+                     "the drive force still swings across the tolerance at the end of the run: "
+                     "its means over the last three %.3g s windows are %+.2f, %+.2f and "
+                     "%+.2f %% of the law's %.4g N (tolerance %.0f %%); a longer run is checked",
+                     W, 100.0 * e[0], 100.0 * e[1], 100.0 * e[2], out->law_N, 100.0 * tol);
         return;
     }
     out->checked = 1;
-    out->pass = within == 3;
+    out->pass = pass;
 }
