@@ -411,12 +411,17 @@ static int mesh_check(const run_args *a, const bd_sim *coarse, bd_run_options *o
             bd_mesh_compare(coarse, fine, &mc);
             rc = bd_mesh_check_write(a->dir, &mc, err, sizeof err) ? BD_RUN_FAILED : BD_RUN_OK;
         }
+        /* the finer run's files, and those it writes by a temporary name
+         * (.NAME.part) should it have stopped before renaming them */
         for (size_t i = 0; i < sizeof mesh_files / sizeof mesh_files[0]; i++) {
             char f[1100];
             snprintf(f, sizeof f, "%s/%s", tmp, mesh_files[i]);
             remove(f);
+            snprintf(f, sizeof f, "%s/.%s.part", tmp, mesh_files[i]);
+            remove(f);
         }
-        rmdir(tmp);
+        if (rmdir(tmp) != 0 && errno != ENOENT)
+            fprintf(stderr, "beltdyn: mesh check: could not remove '%s'\n", tmp);
     }
     if (rc != BD_RUN_OK)
         fprintf(stderr, "beltdyn: %smesh check: %s\n", rc == BD_RUN_FAILED ? "error: " : "", err);
@@ -426,6 +431,8 @@ static int mesh_check(const run_args *a, const bd_sim *coarse, bd_run_options *o
             printf("  %-28s %12.6g -> %-12.6g %s  %+.2f %%%s\n", mc.q[i].name, mc.q[i].coarse,
                    mc.q[i].fine, mc.q[i].unit, 100.0 * mc.q[i].change_rel,
                    mc.q[i].pass ? "" : "  (over 2 %)");
+        if (mc.running_force_why[0])
+            printf("  steady running force not compared: %s\n", mc.running_force_why);
     }
     bd_sim_free(fine);
     bd_model_def_free(&def);

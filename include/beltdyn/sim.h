@@ -160,17 +160,19 @@ void bd_sim_result(const bd_sim *sim, bd_run_result *r);
  * running.c): the invariant issue 10 holds every generated conveyor to,
  * kept on every run. The drives' force on the belt, Σ(τ − b·ω)/R, and the
  * belt speed at the first drive's tight side are averaged (Hann-weighted)
- * over the run's last windows: three of 3 s (6 s with a motor drive)
- * must agree (force within a quarter of the tolerance, speed within
- * 0.25 %) for the running to count as steady, and the mean over the last
- * two is held to the law (bd_running_law) at the mean speed, plus the
- * resistances design.secondary: individual adds (the pulleys' own from
- * the live tensions, the skirts and the loading at its own speed). */
+ * over each of the run's last three windows of 3 s (6 s with a motor
+ * drive), and held to the law (bd_running_law) at the mean speed, plus
+ * the resistances design.secondary: individual adds (the pulleys' own
+ * from the live tensions, the skirts and the loading at its own speed).
+ * Judged when the speed is steady (the windows within 0.25 %) and every
+ * window agrees with the verdict beyond the windows' spread and what a
+ * takeup still moving could shift them by; force_N and error_rel are the
+ * three windows' mean, so that pass ⇔ |error_rel| ≤ tolerance_rel. */
 typedef struct bd_running_check {
     int checked;            /* 1: held to the law (the run ended steady) */
     int pass;               /* checked and |error_rel| ≤ tolerance_rel */
     char why[400];          /* not checked: why, in words */
-    double from_s, to_s;    /* the window force and speed are the means of */
+    double from_s, to_s;    /* the three windows force and speed are the means of */
     double force_N;         /* the drives' mean force on the belt */
     double law_N;           /* the law at speed_mps */
     double scale_N;         /* the law's terms summed in magnitude */
@@ -178,7 +180,7 @@ typedef struct bd_running_check {
     double tolerance_rel;   /* 0.03 (discrete, rfe: nodes pass the idlers)
                                or 0.01 (axial, moving_node) */
     double speed_mps;
-    double spread_N, spread_mps;  /* the three windows' means: largest less smallest */
+    double spread_mps;      /* the three windows' speeds: largest less smallest */
 } bd_running_check;
 /* turn the averaging on for windows that end at end_s (bd_sim_run does,
  * at simulation.duration); before the first step of the run */
@@ -203,8 +205,11 @@ typedef struct bd_mesh_check {
     int count;
     bd_mesh_quantity q[BD_MESH_QUANTITIES];
     double tolerance_rel;
-    int converged;         /* every quantity passed */
+    int converged;         /* every quantity compared passed */
     double fine_wall_s;
+    /* the steady running force not compared: why (a run did not judge
+     * it, sensors/running.c); "" when compared */
+    char running_force_why[440];
 } bd_mesh_check;
 /* set def's element keys to half of what `coarse` was built with (def
  * loaded from the same file: element_length, or the moving-node belt's

@@ -60,8 +60,11 @@ void bd_mesh_refine(const bd_sim *coarse, bd_model_def *def, bd_mesh_check *mc)
     def->simulation.tension_interval = fmax(def->simulation.duration, def->simulation.output_interval);
 }
 
+/* a figure of both runs; its change over |coarse|, or over `scale` where
+ * that is larger (a slack side near 0 N is judged against the tensions
+ * in play, not against itself) */
 static void quantity(bd_mesh_check *mc, const char *name, const char *unit, double coarse,
-                     double fine)
+                     double fine, double scale)
 {
     if (mc->count >= BD_MESH_QUANTITIES || !isfinite(coarse) || !isfinite(fine))
         return;
@@ -70,7 +73,7 @@ static void quantity(bd_mesh_check *mc, const char *name, const char *unit, doub
     snprintf(q->unit, sizeof q->unit, "%s", unit);
     q->coarse = coarse;
     q->fine = fine;
-    q->change_rel = (fine - coarse) / fmax(fabs(coarse), 1e-12);
+    q->change_rel = (fine - coarse) / fmax(fmax(fabs(coarse), scale), 1e-12);
     q->pass = fabs(q->change_rel) <= mc->tolerance_rel;
 }
 
@@ -80,19 +83,26 @@ void bd_mesh_compare(const bd_sim *coarse, const bd_sim *fine, bd_mesh_check *mc
     bd_run_result a, b;
     bd_sim_result(coarse, &a);
     bd_sim_result(fine, &b);
-    quantity(mc, "peak belt tension", "N", a.tension_max_N, b.tension_max_N);
+    /* tensions against a tenth of the peak at least */
+    const double ts = 0.1 * fabs(a.tension_max_N);
+    quantity(mc, "peak belt tension", "N", a.tension_max_N, b.tension_max_N, 0.0);
     if (a.drives > 0 && b.drives > 0) {
-        quantity(mc, "peak tight-side tension", "N", a.tight_max_N, b.tight_max_N);
-        quantity(mc, "lowest slack-side tension", "N", a.slack_min_N, b.slack_min_N);
-        quantity(mc, "peak drive torque", "N·m", a.torque_max_Nm, b.torque_max_Nm);
+        quantity(mc, "peak tight-side tension", "N", a.tight_max_N, b.tight_max_N, ts);
+        quantity(mc, "lowest slack-side tension", "N", a.slack_min_N, b.slack_min_N, ts);
+        quantity(mc, "peak drive torque", "N·m", a.torque_max_Nm, b.torque_max_Nm, 0.0);
     }
     if (a.travel_range_m > 0.0)
-        quantity(mc, "takeup travel range", "m", a.travel_range_m, b.travel_range_m);
+        quantity(mc, "takeup travel range", "m", a.travel_range_m, b.travel_range_m, 0.0);
+    /* the running force where both runs judged it, else why not */
     bd_running_check ra, rb;
     bd_sim_running_check(coarse, &ra);
     bd_sim_running_check(fine, &rb);
+    mc->running_force_why[0] = '\0';
     if (ra.checked && rb.checked)
-        quantity(mc, "steady running force", "N", ra.force_N, rb.force_N);
+        quantity(mc, "steady running force", "N", ra.force_N, rb.force_N, 0.0);
+    else
+        snprintf(mc->running_force_why, sizeof mc->running_force_why, "%s run: %s",
+                 ra.checked ? "the finer" : "the", ra.checked ? rb.why : ra.why);
     mc->converged = 1;
     for (int i = 0; i < mc->count; i++)
         mc->converged &= mc->q[i].pass;
@@ -121,6 +131,8 @@ int bd_mesh_check_write(const char *dir, const bd_mesh_check *mc, char *err, siz
     cJSON_AddStringToObject(m, "mesh", mc->mesh);
     bd_json_add_number(m, "tolerance_rel", mc->tolerance_rel);
     cJSON_AddBoolToObject(m, "converged", mc->converged);
+    if (mc->running_force_why[0])
+        cJSON_AddStringToObject(m, "running_force_not_compared", mc->running_force_why);
     bd_json_add_number(m, "fine_wall_time_s", mc->fine_wall_s);
     cJSON *qs = cJSON_AddArrayToObject(m, "quantities");
     char off[1024] = "";

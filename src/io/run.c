@@ -169,19 +169,36 @@ int bd_sim_run(bd_sim *sim, const bd_run_options *opt, char *err, size_t errlen)
     /* steady running against the model's own law (sensors/running.c) */
     bd_running_check rc;
     bd_sim_running_check(sim, &rc);
-    if (rc.checked && !rc.pass && status == BD_RUN_OK)
+    if (rc.checked && !rc.pass && status == BD_RUN_OK) {
+        /* above the law: the belt model dissipates what the model does not
+         * declare (physics.md §10); below it: a declared resistance does
+         * not act in full (the belt off its idlers, a load not all there),
+         * or energy enters that the model does not declare */
+        const int above = rc.error_rel > 0.0;
+        const bd_formulation fm = def->belt.formulation;
+        const char *refine = fm == BD_FORMULATION_MOVING_NODE
+                           ? "halve belt.span_element_length and wrap_element_angle_deg"
+                           : "halve belt.element_length";
         bd_sim_warn(sim, "running force: in steady running (%.4g to %.4g s, %.3g m/s) the drives "
                     "deliver %.1f N, %+.1f %% against the model's own resistance law's %.1f N "
-                    "(idler rolling resistance, lift, feed, bearings%s; tolerance %.0f %%): the "
-                    "belt model dissipates energy the model does not declare, so the running "
-                    "force, power and tensions carry that error (docs/physics.md section 10). "
-                    "Halve belt.element_length and compare%s",
+                    "(idler rolling resistance, lift, feed, bearings%s; tolerance %.0f %%): %s. "
+                    "The running force, power and tensions carry that error: %s and compare "
+                    "(beltdyn run --mesh-check)%s",
                     rc.from_s, rc.to_s, rc.speed_mps, rc.force_N, 100.0 * rc.error_rel,
                     rc.law_N, bd_secondary_individual(def) ? ", design.secondary" : "",
                     100.0 * rc.tolerance_rel,
-                    sim->model->EI > 0.0 ? "" : ", give the belt its bending stiffness "
-                    "(belt.bending_stiffness), or run the axial or moving_node belt for the "
-                    "running force");
+                    above ? "the belt model dissipates energy the model does not declare "
+                            "(docs/physics.md section 10)"
+                          : "some declared resistance does not act in full (the belt lifted "
+                            "off its idlers, material not all on the belt) or energy enters "
+                            "that the model does not declare",
+                    refine,
+                    above && sim->model->EI <= 0.0
+                        && (fm == BD_FORMULATION_DISCRETE || fm == BD_FORMULATION_RFE)
+                        ? ", give the belt its bending stiffness (belt.bending_stiffness), "
+                          "or run the axial or moving_node belt for the running force"
+                        : "");
+    }
     /* the peak against the allowable during starts and stops
      * (design.safety_factor.starting: DIN 22101's belt-strength check for
      * the non-steady states; model-format.md) */

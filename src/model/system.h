@@ -121,10 +121,10 @@ typedef struct bd_pulley_body {
     /* stats */
     double torque_max_abs;  /* N·m largest |drive torque| */
     double travel_min, travel_max;  /* m */
-    /* m, N: a movable carriage's travel at the start of each of the
-     * running check's windows and now, and its largest pull over them
+    /* m, N: a movable carriage's least and largest travel in each of the
+     * running check's three windows, and its largest pull over them
      * (sensors/running.c) */
-    double swing_q[4], swing_pull;
+    double swing_lo[3], swing_hi[3], swing_pull;
     bd_drive_monitor mon;   /* drive pulleys only */
 } bd_pulley_body;
 
@@ -275,15 +275,14 @@ typedef struct bd_model {
 
 /* Steady running at the end of a run against the model's own resistance
  * law (sensors/running.c): Hann-weighted sums of the drive force, the
- * belt speed and the pulleys' own resistances over the run's last three
- * windows of `window` s (k = 0..2, ending at `end`) and over the last two
- * together (k = 3). O(drives) per step, no allocation; off (window 0)
+ * belt speed and the pulleys' own resistances over each of the run's last
+ * three windows of `window` s (k = 0..2, ending at `end`). O(drives) per step, no allocation; off (window 0)
  * unless a run turned it on. All stats, written in the sensors phase. */
 typedef struct bd_running_window {
     double window, end;            /* s */
     int drive;                     /* the first drive pulley, or -1 */
     double travel, travel0;        /* m its surface ran, in all and by the windows */
-    double f[4], v[4], r[4], w[4]; /* N, m/s, N, weights summed */
+    double f[3], v[3], r[3], w[3]; /* N, m/s, N, weights summed */
     int window_at;                 /* the window the last step was in, -1 before */
 } bd_running_window;
 

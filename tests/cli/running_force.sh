@@ -53,7 +53,7 @@ elif want == "excess":
     good = (rf["checked"] and not rf["pass"] and rf["error_rel"] > 0.03
             and abs(rf["law_N"] - law_hand) <= 1e-6 * law_hand
             and len(rows) == 1 and not rows[0]["pass"] and len(warned) == 1
-            and "Halve belt.element_length" in warned[0]
+            and "halve belt.element_length" in warned[0]
             and "bending stiffness" in warned[0] and "moving_node" in warned[0])
     print("ok" if good else "bad", "error %+.1f %%" % (100 * rf["error_rel"]), rf, rows,
           warned)
