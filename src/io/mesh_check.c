@@ -22,6 +22,7 @@
 #include "base/constants.h"
 #include "base/file.h"
 #include "base/json_util.h"
+#include "io/html.h"
 
 #define MESH_TOLERANCE 0.02
 
@@ -110,7 +111,7 @@ void bd_mesh_compare(const bd_sim *coarse, const bd_sim *fine, bd_mesh_check *mc
 
 int bd_mesh_check_write(const char *dir, const bd_mesh_check *mc, char *err, size_t errlen)
 {
-    char path[2048], part[2100];
+    char path[2048];
     if (bd_path_join(path, sizeof path, dir, "summary.json")) {
         snprintf(err, errlen, "'%s': path too long", dir);
         return 1;
@@ -165,20 +166,16 @@ int bd_mesh_check_write(const char *dir, const bd_mesh_check *mc, char *err, siz
         if (cJSON_IsArray(w))
             cJSON_AddItemToArray(w, cJSON_CreateString(line));
     }
+    /* written whole by a temporary name (io/html.c bd_html_write) */
     char *out = cJSON_Print(root);
     cJSON_Delete(root);
-    snprintf(part, sizeof part, "%s.part", path);
-    FILE *f = out ? fopen(part, "w") : NULL;
-    int bad = !f;
-    if (f) {
-        bad |= fputs(out, f) < 0 || fputc('\n', f) == EOF;
-        bad |= fclose(f) != 0;
-    }
-    free(out);
-    if (bad || rename(part, path) != 0) {
-        remove(part);
-        snprintf(err, errlen, "cannot write '%s'", path);
+    if (!out) {
+        snprintf(err, errlen, "%s: out of memory", path);
         return 1;
     }
-    return 0;
+    bd_strbuf b = {0};
+    bd_sb_puts(&b, out);
+    bd_sb_puts(&b, "\n");
+    free(out);
+    return bd_html_write(&b, path, err, errlen) != 0;
 }
