@@ -57,6 +57,15 @@ typedef struct bd_belt_estimate {
     char element_advice[64]; /* what to change ("a larger wrap_element_angle_deg"), or "" */
 } bd_belt_estimate;
 
+/* what a belt whose topology varies (belt/rfe: long sections) did */
+typedef struct bd_belt_topology {
+    int windows;              /* where long sections may stand */
+    double window_length;     /* m, their length together */
+    int dof_now, dof_min, dof_max;   /* the belt's degrees of freedom */
+    long joined, left;        /* elements tied into a section, freed from one */
+    double lost_J, gained_J;  /* the energy tying booked as dissipated, as input */
+} bd_belt_topology;
+
 typedef struct bd_belt_ops {
     const char *name;          /* as model-format.md `belt.formulation` */
     const char *description;   /* for `beltdyn check` */
@@ -116,6 +125,8 @@ typedef struct bd_belt_ops {
 
     /* events the formulation recorded in the step, said after the run */
     void (*report_events)(bd_sim *sim);
+    /* its variable topology so far; NULL: it has none */
+    void (*topology)(const bd_sim *sim, bd_belt_topology *out);
     /* it notes idler stations the belt lifts off (bd_lift_off_note) */
     int records_lift_off;
 } bd_belt_ops;

@@ -165,7 +165,11 @@ int bd_outputs_open(bd_outputs *o, const bd_sim *sim, const char *dir, int hdf5,
                 def->simulation.probes[i].name);
     pulley_columns(o->history, def, sim->model->pulley_count, "omega_rad_s", "torque_Nm",
                    "travel_m");
-    fprintf(o->history, ",kinetic_J,potential_J,dissipated_J,input_J\n");
+    fprintf(o->history, ",kinetic_J,potential_J,dissipated_J,input_J");
+    /* a belt whose topology varies: its degrees of freedom (belt.h) */
+    if (sim->model->belt->topology)
+        fprintf(o->history, ",belt_dof");
+    fputc('\n', o->history);
     fprintf(o->tension, "t_s,s_m,x_m,y_m,tension_N,speed_mps\n");
     if (o->parts) {
         fprintf(o->parts, "t_s");
@@ -215,7 +219,13 @@ void bd_outputs_row(bd_outputs *o, bd_sim *sim, double t)
     const bd_energy *en = &sim->energy;
     double dissipated, input;
     bd_energy_at_t(en, &dissipated, &input);
-    fprintf(h, ",%.9g,%.9g,%.9g,%.9g\n", en->kinetic, en->potential, dissipated, input);
+    fprintf(h, ",%.9g,%.9g,%.9g,%.9g", en->kinetic, en->potential, dissipated, input);
+    if (sim->model->belt->topology) {
+        bd_belt_topology top;
+        sim->model->belt->topology(sim, &top);
+        fprintf(h, ",%d", top.dof_now);
+    }
+    fputc('\n', h);
     if (o->parts)
         parts_row(o, sim, t);
 
@@ -459,6 +469,22 @@ static int write_summary(bd_outputs *o, const bd_sim *sim, double wall, const ch
     bd_json_add_number(en, "kinetic_final_J", sim->energy.kinetic);
     bd_json_add_number(en, "balance_error_rel", sim->energy.balance_error_rel);
     bd_json_add_number(en, "dissipation_fall_rel", sim->energy.dissipation_fall_rel);
+    /* long sections (belt.h bd_belt_topology) */
+    if (sim->model->belt->topology) {
+        bd_belt_topology top;
+        sim->model->belt->topology(sim, &top);
+        cJSON *vt = cJSON_AddObjectToObject(root, "variable_topology");
+        cJSON_AddBoolToObject(vt, "enabled", def->belt.group_sections);
+        cJSON_AddNumberToObject(vt, "windows", top.windows);
+        bd_json_add_number(vt, "window_length_m", top.window_length);
+        cJSON_AddNumberToObject(vt, "belt_dof_min", top.dof_min);
+        cJSON_AddNumberToObject(vt, "belt_dof_max", top.dof_max);
+        cJSON_AddNumberToObject(vt, "belt_dof_final", top.dof_now);
+        cJSON_AddNumberToObject(vt, "elements_joined", (double)top.joined);
+        cJSON_AddNumberToObject(vt, "elements_left", (double)top.left);
+        bd_json_add_number(vt, "energy_booked_dissipated_J", top.lost_J);
+        bd_json_add_number(vt, "energy_booked_input_J", top.gained_J);
+    }
     /* steady running against the model's own law (sensors/running.c) */
     bd_running_check rc;
     bd_sim_running_check(sim, &rc);

@@ -948,6 +948,29 @@ static int plot_history(bd_rep *r, char *err, size_t errlen)
             goto done;
     }
 
+    /* a belt whose topology varies (the rfe belt's long sections): its
+     * degrees of freedom */
+    int cdof = bd_csv_find(&h, "belt_dof");
+    if (cdof >= 0 && h.nrows > 0) {
+        bd_plot_figure f;
+        char *t = bd_rep_label(r);
+        bd_rep_set_title(r, t, BD_REP_LABEL_LEN, "belt degrees of freedom");
+        bd_plot_figure_init(&f, t, BD_REP_FIG_W, BD_REP_FIG_H);
+        f.subtitle = "free elements (3 each) and long sections (2 each), as the belt flows "
+                     "through the sections' windows";
+        f.npanels = 1;
+        f.panel[0].ylabel = "Belt degrees of freedom";
+        f.panel[0].xlabel = "Time t [s]";
+        f.panel[0].include_zero = 1;
+        bd_plot_add_series(&f.panel[0], h.col[0], h.col[cdof], h.nrows, "belt", bd_plot_palette(0));
+        if ((rc = bd_rep_write_plot(r, &f, "topology",
+                                    "The belt's active degrees of freedom against time: 3 per "
+                                    "free rigid element (x, y, φ), 2 per long section (its two "
+                                    "ends along its line; docs/physics.md §15).",
+                                    err, errlen)))
+            goto done;
+    }
+
     /* energy: changes from t = 0 and the balance error */
     if ((rc = bd_rep_plot_energy(r, &h, "input (drive work)", err, errlen)))
         goto done;

@@ -168,6 +168,15 @@ static void advance(int n, double dt, const double *restrict mass,
     }
 }
 
+void bd_lumped_advance_range(bd_sim *sim, int first, int count)
+{
+    bd_lumped *L = bd_lumped_of(sim);
+    const int f = first;
+    advance(count, sim->model->dt, sim->mass + f, sim->dt_per_mass + f, sim->fx + f, sim->fy + f,
+            sim->fnx + f, sim->fny + f, sim->x + f, sim->y + f, sim->vx + f, sim->vy + f,
+            L->pw + f, L->ek + f);
+}
+
 /* the update vectorizes; the two sums stay in node order, so the energy
  * account is the same to the bit as one fused loop's */
 void bd_lumped_integrate(bd_sim *sim, double *ke_out, double *w_nc_out)

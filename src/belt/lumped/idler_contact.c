@@ -289,18 +289,38 @@ static void idler_contact(bd_sim *sim, bd_idler *id, const bd_idler_touch *pc)
 
 /* the supports phase: every idler, after the wraps; where each touches
  * the belt first (positions only: the idlers' iterations overlap), then
- * the forces */
-void bd_lumped_idlers(bd_sim *sim)
+ * the forces; an idler whose carried[i] is 0 or more has none (with
+ * carried, the caller has updated the others' trackers) */
+static inline void idlers(bd_sim *sim, const int *carried)
 {
     bd_idler_touch *touch = bd_lumped_of(sim)->touch;
     const int count = sim->model->idler_count;
     /* three passes of short bodies, so that the processor overlaps the
      * idlers' independent division and square-root chains */
+    if (!carried)
+        for (int i = 0; i < count; i++)
+            bd_tracker_update(sim, &sim->idlers[i].tr);
     for (int i = 0; i < count; i++)
-        bd_tracker_update(sim, &sim->idlers[i].tr);
-    for (int i = 0; i < count; i++)
-        nearest_point(sim, &sim->idlers[i], &touch[i]);
-    for (int i = 0; i < count; i++)
-        idler_contact(sim, &sim->idlers[i], &touch[i]);
+        if (!carried || carried[i] < 0)
+            nearest_point(sim, &sim->idlers[i], &touch[i]);
+    for (int i = 0; i < count; i++) {
+        if (!carried || carried[i] < 0) {
+            idler_contact(sim, &sim->idlers[i], &touch[i]);
+        } else {
+            sim->idlers[i].alpha = 0.0;
+            sim->idlers[i].torque = 0.0;
+            spring_energy(sim, &sim->idlers[i], 0.0);
+        }
+    }
+}
+
+void bd_lumped_idlers(bd_sim *sim)
+{
+    idlers(sim, NULL);
+}
+
+void bd_lumped_idlers_except(bd_sim *sim, const int *carried)
+{
+    idlers(sim, carried);
 }
 

@@ -159,6 +159,10 @@ double bd_lumped_support_inertia(const bd_sim *sim, double R, double J);
 /* forces.c: elastic, damping, bending, gravity forces on nodes; energy */
 void bd_lumped_forces(bd_sim *sim);
 void bd_lumped_integrate(bd_sim *sim, double *ke, double *w_nc);
+/* nodes first .. first + count − 1 (no wrap round the loop) to t + Δt as
+ * bd_lumped_integrate moves them, each node's mid-step power and twice its
+ * kinetic energy into pw[i] and ek[i] (not summed) */
+void bd_lumped_advance_range(bd_sim *sim, int first, int count);
 double bd_lumped_elastic_energy(const bd_sim *sim);
 double bd_lumped_potential(const bd_sim *sim);
 
@@ -175,6 +179,11 @@ int bd_lumped_find_sector(const bd_sim *sim, const bd_pulley_body *p, const bd_w
 int bd_lumped_in_sector(const bd_sim *sim, const bd_pulley_body *p, int k);
 void bd_lumped_wrap(bd_sim *sim, bd_pulley_body *p, double external_torque);
 void bd_lumped_idlers(bd_sim *sim);
+/* the same for the idlers whose carried[i] is negative; the others have
+ * no contact this step (their spring is let go, alpha and torque 0): the
+ * belt formulation moves them itself (belt/rfe/sections.c) and has
+ * updated the other idlers' trackers */
+void bd_lumped_idlers_except(bd_sim *sim, const int *carried);
 
 /* material.c: feed and discharge */
 void bd_lumped_material(bd_sim *sim);

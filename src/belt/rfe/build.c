@@ -63,7 +63,10 @@ static void orient(bd_sim *sim)
 }
 
 /* The orientations of least shear, alignment and bending energy with
- * the centres where the layout put them. Along the path's tangent the
+ * the centres where they are, of the free elements first .. first +
+ * count − 1 (all of them: the whole loop) with the others held; the
+ * build's on the layout, and where a section's end meets the free belt
+ * (sections.c). Along the path's tangent the
  * elements stand askew where the belt's curvature jumps (a tangent point:
  * the line between two centres there leans by up to l0/(8R) from their
  * tangents), and the stiff shear held up to 2 kJ there on a 40 m conveyor
@@ -74,48 +77,76 @@ static void orient(bd_sim *sim)
  * SOR_FACTOR) until no δ changes by RELAX_TOL rad; the alignment or the
  * bending makes it positive definite (forces.c) */
 #define SOR_FACTOR 1.8
+#define RELAX_STACK 64
 #define RELAX_TOL 1e-13
 #define RELAX_SWEEPS 20000
 
-static void relax_orientations(bd_sim *sim, const bd_rfe_model *RM)
+void bd_rfe_relax_turns(bd_sim *sim, int first, int count)
 {
-    const int n = sim->model->n;
-    double *g = bd_xcalloc((size_t)n, sizeof *g);     /* γ_e at δ = 0 */
-    double *bt = bd_xcalloc((size_t)n, sizeof *bt);   /* β_e */
-    double *p = bd_xcalloc((size_t)n, sizeof *p);     /* ψ_i */
-    double *d = bd_xcalloc((size_t)n, sizeof *d);     /* δ_i */
-    for (int e = 0; e < n; e++) {
-        g[e] = bd_rfe_sde_angles(sim, e, &bt[e]);
-        p[e] = bd_rfe_align_angle(sim, e);
+    bd_rfe *R = bd_rfe_of(sim);
+    const bd_rfe_model *RM = bd_rfe_model_of(sim);
+    const int n = sim->model->n, loop = count >= n;
+    if (loop)
+        count = n;
+    /* SDE q − 1 + ... : local SDE k (k = 0 .. count) is the one before
+     * local element k; the whole loop has count of them */
+    const int sdes = loop ? n : count + 1;
+    /* a few elements (a section's end, in the step) on the stack, the
+     * whole loop (the build) on the heap */
+    double small[5 * (RELAX_STACK + 2)];
+    double *heap = count > RELAX_STACK ? bd_xcalloc(5 * ((size_t)sdes + 2), sizeof *heap) : NULL;
+    double *base = heap ? heap : small;
+    const size_t stride = heap ? (size_t)sdes + 2 : RELAX_STACK + 2;
+    double *g = base, *bt = base + stride, *S = base + 2 * stride;   /* γ at δ = 0, β, k_γ */
+    double *p = base + 3 * stride, *d = base + 4 * stride;           /* ψ; δ with the fixed ends */
+    for (size_t k = 0; k < 5 * stride; k++)
+        base[k] = 0.0;
+    for (int k = 0; k < sdes; k++) {
+        int e = ((first - 1 + k) % n + n) % n;
+        if (loop)
+            e = (first + k + n - 1) % n;
+        g[k] = bd_rfe_sde_angles(sim, e, &bt[k]);
+        S[k] = R->sec[e] >= 0 && R->sec[bd_node_next(e, n)] >= 0 ? 0.0 : RM->k_shear;
     }
-    const double S = RM->k_shear, kb = RM->k_bend;
+    for (int k = 0; k < count; k++)
+        p[k] = bd_rfe_align_angle(sim, (first + k) % n);
+    const double kb = RM->k_bend;
+    /* δ of local element k is d[k + 1]; d[0] and d[count + 1] the fixed
+     * neighbours' (0), or, round the whole loop, the other end's */
     for (int sweep = 0; sweep < RELAX_SWEEPS; sweep++) {
         double most = 0.0;
-        for (int i = 0; i < n; i++) {
-            int b = bd_node_prev(i, n), a = bd_node_next(i, n);
+        if (loop) {
+            d[0] = d[count];
+            d[count + 1] = d[1];
+        }
+        for (int k = 0; k < count; k++) {
+            int i = (first + k) % n;
+            if (R->sec[i] >= 0)
+                continue;
+            int sb = k, sa = loop ? (k + 1) % n : k + 1;
             double kh = RM->k_align[i];
-            double coef = 0.5 * S + kh + 2.0 * kb;   /* > 0: GA > 0 */
-            double c = -0.5 * S * (g[b] - 0.5 * d[b]) - 0.5 * S * (g[i] - 0.5 * d[a]) + kh * p[i]
-                     - kb * (bt[i] + d[a]) + kb * (bt[b] - d[b]);
-            double step = -c / coef - d[i];
-            d[i] += SOR_FACTOR * step;
+            double coef = 0.25 * (S[sb] + S[sa]) + kh + 2.0 * kb;
+            if (coef <= 0.0)
+                continue;
+            double db = d[k], da = d[k + 2];
+            double c = -0.5 * S[sb] * (g[sb] - 0.5 * db) - 0.5 * S[sa] * (g[sa] - 0.5 * da)
+                     + kh * p[k] - kb * (bt[sa] + da) + kb * (bt[sb] - db);
+            double step = -c / coef - d[k + 1];
+            d[k + 1] += SOR_FACTOR * step;
             if (fabs(step) > most)
                 most = fabs(step);
         }
         if (most < RELAX_TOL)
             break;
     }
-    bd_rfe *R = bd_rfe_of(sim);
-    for (int i = 0; i < n; i++) {
-        double c = cos(d[i]), s = sin(d[i]);
+    for (int k = 0; k < count; k++) {
+        int i = (first + k) % n;
+        double c = cos(d[k + 1]), s = sin(d[k + 1]);
         double c1 = R->ct[i] * c - R->st[i] * s, s1 = R->st[i] * c + R->ct[i] * s;
         R->ct[i] = c1;
         R->st[i] = s1;
     }
-    free(g);
-    free(bt);
-    free(p);
-    free(d);
+    free(heap);
 }
 
 /* The tension the alignment is linearized about, per element (SDE e's):
@@ -199,10 +230,9 @@ int bd_rfe_build(bd_sim *sim, bd_diag *diag)
     bd_doubles_alloc(bd_rfe_of(sim), RFE_DOUBLES, COUNT(RFE_DOUBLES), (size_t)sim->model->n);
     orient(sim);
     align_constants(sim, RM);
-    relax_orientations(sim, RM);
-    if (sim->model->def->belt.group_sections)
-        bd_sim_warn(sim, "belt.variable_topology: grouping free sections into long sections is "
-                         "not built yet; every element of the rfe belt is free (issue 14)");
+    bd_rfe_sections_build(sim, RM);
+    bd_rfe_sections_alloc(sim);
+    bd_rfe_relax_turns(sim, 0, sim->model->n);
     return 0;
 }
 
@@ -212,6 +242,7 @@ void bd_rfe_free_model(bd_model *model)
     if (RM) {
         free(RM->k_align);
         free(RM->c_align);
+        bd_rfe_sections_free_model(RM);
     }
     bd_lumped_free_model(model);
 }
@@ -222,6 +253,7 @@ void bd_rfe_free(bd_sim *sim)
     if (!R)
         return;
     bd_doubles_free(R, RFE_DOUBLES, COUNT(RFE_DOUBLES));
+    bd_rfe_sections_free(R);
     bd_lumped_free(sim);
 }
 
@@ -230,6 +262,7 @@ void bd_rfe_clone(bd_sim *dst, const bd_sim *src)
     bd_lumped_clone_sized(dst, src, sizeof(bd_rfe));
     bd_doubles_dup(bd_rfe_of(dst), bd_rfe_of(src), RFE_DOUBLES, COUNT(RFE_DOUBLES),
                    (size_t)src->model->n);
+    bd_rfe_sections_clone(dst, src);
 }
 
 /* Stable time step (laws/stable_step.h): the longest stable step of a

@@ -77,10 +77,14 @@ static void sde(bd_sim *sim, int e, int j)
     double gdot = thdot - 0.5 * (R->omega[i] + R->omega[j]);
     double qd = RM->c_shear * gdot, mbd = RM->c_bend * (R->omega[j] - R->omega[i]);
     R->thdot[e] = thdot;
-    R->qd[e] = qd;
-    R->q[e] = RM->k_shear * gam + qd;
-    R->mbd[e] = mbd;
-    R->mb[e] = RM->k_bend * bend + mbd;
+    /* between two tied elements (inside a section or joining two) the
+     * sections' lines hold both across and in their turn: no shear or
+     * bending (sections.c) */
+    double on = R->sec[i] >= 0 && R->sec[j] >= 0 ? 0.0 : 1.0;
+    R->qd[e] = on * qd;
+    R->q[e] = on * (RM->k_shear * gam + qd);
+    R->mbd[e] = on * mbd;
+    R->mb[e] = on * (RM->k_bend * bend + mbd);
 }
 
 /* element i's angle to the line of the belt, the bisector of the lines
@@ -94,6 +98,9 @@ static void align(bd_sim *sim, int i, int b)
     double wx = L->ux[i] + L->ux[b], wy = L->uy[i] + L->uy[b];
     double psi = angle_of(wx * R->st[i] - wy * R->ct[i], wx * R->ct[i] + wy * R->st[i]);
     double hd = RM->c_align[i] * (R->omega[i] - 0.5 * (R->thdot[i] + R->thdot[b]));
+    /* a tied element's turn is its section's line's (sections.c) */
+    if (R->sec[i] >= 0)
+        hd = psi = 0.0;
     R->hd[i] = hd;
     R->h[i] = RM->k_align[i] * psi + hd;
 }
@@ -120,16 +127,33 @@ static void body(bd_sim *sim, int i, int b, int a)
 void bd_rfe_forces(bd_sim *sim)
 {
     const int n = sim->model->n;
+    const bd_rfe *R = bd_rfe_of(sim);
     bd_lumped_forces(sim);
-    for (int e = 0; e + 1 < n; e++)
-        sde(sim, e, e + 1);
-    sde(sim, n - 1, 0);
-    align(sim, 0, n - 1);
-    for (int i = 1; i < n; i++)
-        align(sim, i, i - 1);
-    body(sim, 0, n - 1, 1 % n);
-    for (int i = 1; i < n; i++)
-        body(sim, i, i - 1, bd_node_next(i, n));
+    if (!bd_rfe_some_tied(sim)) {
+        for (int e = 0; e + 1 < n; e++)
+            sde(sim, e, e + 1);
+        sde(sim, n - 1, 0);
+        align(sim, 0, n - 1);
+        for (int i = 1; i < n; i++)
+            align(sim, i, i - 1);
+        body(sim, 0, n - 1, 1 % n);
+        for (int i = 1; i < n; i++)
+            body(sim, i, i - 1, bd_node_next(i, n));
+        return;
+    }
+    /* with sections (sections.c): the SDEs with a free element, the free
+     * elements' alignment, and the free elements and the sections' ends
+     * they pull; inside a section all of it is 0 (kept so from when its
+     * elements were tied) */
+    for (int r = 0; r < R->run_n; r++) {
+        const int f = R->run_first[r], c = R->run_count[r];
+        for (int q = -1, e = bd_node_prev(f, n); q < c; q++, e = bd_node_next(e, n))
+            sde(sim, e, bd_node_next(e, n));
+        for (int q = 0, i = f; q < c; q++, i = bd_node_next(i, n))
+            align(sim, i, bd_node_prev(i, n));
+        for (int q = -1, i = bd_node_prev(f, n); q <= c; q++, i = bd_node_next(i, n))
+            body(sim, i, bd_node_prev(i, n), bd_node_next(i, n));
+    }
 }
 
 /* (c, s) = (cos φ, sin φ) turned by d rad: cos d and sin d by their
@@ -164,24 +188,60 @@ void bd_rfe_integrate(bd_sim *sim, double *ke_out, double *w_nc_out)
     const int n = sim->model->n;
     const double dt = sim->model->dt, J = bd_rfe_model_of(sim)->inertia;
     bd_rfe_rotation_implicit(sim);
-    bd_lumped_integrate(sim, ke_out, w_nc_out);
+    if (!R->tied) {
+        bd_lumped_integrate(sim, ke_out, w_nc_out);
+    } else {
+        /* the free elements as the lumped belt's nodes, the sections
+         * each as one body (sections.c) */
+        const double *restrict lpw = R->lumped.pw, *restrict lek = R->lumped.ek;
+        double w = 0.0, k = 0.0;
+        for (int r = 0; r < R->run_n; r++) {
+            /* a run round the loop's end in two pieces */
+            int f = R->run_first[r], c = R->run_count[r];
+            int c0 = f + c <= n ? c : n - f;
+            bd_lumped_advance_range(sim, f, c0);
+            if (c0 < c)
+                bd_lumped_advance_range(sim, 0, c - c0);
+            for (int q = 0, i = f; q < c; q++, i = bd_node_next(i, n)) {
+                w += lpw[i];
+                k += lek[i];
+            }
+        }
+        *w_nc_out = w * dt;
+        *ke_out = 0.5 * k;
+        bd_rfe_sections_move(sim, ke_out, w_nc_out);
+    }
     const double *restrict dw = R->rb, *restrict tqn = R->tqn;
     double *restrict om = R->omega, *restrict ct = R->ct, *restrict st = R->st,
            *restrict pw = R->pw, *restrict ek = R->ek;
-    for (int i = 0; i < n; i++) {
-        double mid = om[i] + 0.5 * dw[i];
-        pw[i] = tqn[i] * mid;
-        ek[i] = mid * mid;
-        om[i] += dw[i];
-        turn(&ct[i], &st[i], om[i] * dt);
-    }
     double w_nc = 0.0, ke = 0.0;
-    for (int i = 0; i < n; i++) {
-        w_nc += pw[i];
-        ke += ek[i];
+    if (!bd_rfe_some_tied(sim)) {
+        for (int i = 0; i < n; i++) {
+            double mid = om[i] + 0.5 * dw[i];
+            pw[i] = tqn[i] * mid;
+            ek[i] = mid * mid;
+            om[i] += dw[i];
+            turn(&ct[i], &st[i], om[i] * dt);
+        }
+        for (int i = 0; i < n; i++) {
+            w_nc += pw[i];
+            ke += ek[i];
+        }
+    } else {
+        /* a tied element does not turn */
+        for (int r = 0; r < R->run_n; r++)
+            for (int q = 0, i = R->run_first[r]; q < R->run_count[r]; q++, i = bd_node_next(i, n)) {
+                double mid = om[i] + 0.5 * dw[i];
+                w_nc += tqn[i] * mid;
+                ke += mid * mid;
+                om[i] += dw[i];
+                turn(&ct[i], &st[i], om[i] * dt);
+            }
     }
     *w_nc_out += w_nc * dt;
     *ke_out += 0.5 * J * ke;
+    /* variable topology: sections released and tied for the next step */
+    bd_rfe_sections_regroup(sim);
 }
 
 /* at rest at t (sim/step.c bd_sim_start_at_rest): the half-step angular
@@ -225,16 +285,43 @@ double bd_rfe_align_angle(const bd_sim *sim, int i)
     return atan2(wx * R->st[i] - wy * R->ct[i], wx * R->ct[i] + wy * R->st[i]);
 }
 
+double bd_rfe_sde_energy(const bd_sim *sim, int e)
+{
+    const bd_rfe_model *RM = bd_rfe_model_of(sim);
+    const bd_rfe *R = bd_rfe_of(sim);
+    const int j = bd_node_next(e, sim->model->n);
+    double x = hypot(sim->x[j] - sim->x[e], sim->y[j] - sim->y[e]) - sim->model->l0;
+    double v = 0.5 * RM->lumped.k_axial * x * x;
+    /* between two tied elements a section's line holds them: no shear or
+     * bending (sde above) */
+    if (R->sec[e] < 0 || R->sec[j] < 0) {
+        double bend, gam = bd_rfe_sde_angles(sim, e, &bend);
+        v += 0.5 * RM->k_shear * gam * gam + 0.5 * RM->k_bend * bend * bend;
+    }
+    return v;
+}
+
+double bd_rfe_align_energy(const bd_sim *sim, int i)
+{
+    if (bd_rfe_of(sim)->sec[i] >= 0)
+        return 0.0;
+    double psi = bd_rfe_align_angle(sim, i);
+    return 0.5 * bd_rfe_model_of(sim)->k_align[i] * psi * psi;
+}
+
 /* the SDEs' shear and bending energy and the alignment's */
 static double sde_energy(const bd_sim *sim)
 {
     const bd_rfe_model *RM = bd_rfe_model_of(sim);
+    const bd_rfe *R = bd_rfe_of(sim);
     double e = 0.0;
     for (int i = 0; i < sim->model->n; i++) {
         double bend, gam = bd_rfe_sde_angles(sim, i, &bend);
         double psi = bd_rfe_align_angle(sim, i);
-        e += 0.5 * RM->k_shear * gam * gam + 0.5 * RM->k_bend * bend * bend
-           + 0.5 * RM->k_align[i] * psi * psi;
+        if (R->sec[i] < 0 || R->sec[bd_node_next(i, sim->model->n)] < 0)
+            e += 0.5 * RM->k_shear * gam * gam + 0.5 * RM->k_bend * bend * bend;
+        if (R->sec[i] < 0)
+            e += 0.5 * RM->k_align[i] * psi * psi;
     }
     return e;
 }

@@ -17,12 +17,12 @@ const bd_belt_ops bd_rfe_ops = {
     .estimate = bd_rfe_estimate,
     .forces = bd_rfe_forces,
     .wrap = bd_lumped_wrap,
-    .supports = bd_lumped_idlers,
+    .supports = bd_rfe_supports,
     .integrate = bd_rfe_integrate,
     .rest_velocities = bd_rfe_rest_velocities,
     .after_parts = NULL,
     /* material adds to the centres' mass, not to J (build.c) */
-    .material = bd_lumped_material,
+    .material = bd_rfe_material,
     .potential = bd_rfe_potential,
     .elastic_energy = bd_rfe_elastic_energy,
     /* the shell contacts' springs: bd_energy `springs` (pulley_contact.c) */
@@ -37,4 +37,5 @@ const bd_belt_ops bd_rfe_ops = {
     .element_strain = bd_lumped_element_strain,
     .node_speed = bd_lumped_node_speed,
     .report_events = NULL,
+    .topology = bd_rfe_topology,
 };

@@ -20,6 +20,34 @@
 
 #include "belt/lumped/lumped.h"
 
+/* Variable topology (seed 000 §3.1; sections.c): a long section stands
+ * on a window of a straight span on its idlers, fixed on the path, from
+ * the middle of one bay to the middle of another, clear of pulleys and
+ * idler curves by a margin; the belt flows through it */
+typedef struct bd_rfe_window {
+    double p0[2], d[2];       /* m, the span's start; unit direction of travel */
+    double cos_slope;         /* |d_x|: the weight's share normal to the span */
+    double a, b;              /* m along d from p0: where the window begins and ends */
+    double bay;               /* m, its idlers' spacing */
+    int before, after;        /* the window that ends where it begins, and the one
+                                 that begins where it ends, or −1 */
+    int idler_first, idler_count;  /* the idlers it carries (model idler_list) */
+} bd_rfe_window;
+
+/* the long section on window w now: elements first .. first + count − 1
+ * (round the loop), on the window's line, evenly spaced between its two
+ * ends, whose places along the line and speeds are its two degrees of
+ * freedom (sections.c) */
+typedef struct bd_rfe_section {
+    int first, count;         /* count 0: not tied yet */
+    double s1, s2;            /* m along the line: its first and last element */
+    double v1, v2;            /* m/s along the line, at the half step */
+    /* step (supports): what the idlers it carries add, at t − Δt/2: their
+     * rolls' inertia as mass at its ends (K, kg), their momentum (P,
+     * kg·m/s) and their rolling resistance (F, N) */
+    double k11, k12, k22, p1, p2, f1, f2;
+} bd_rfe_section;
+
 /* compiled data (behind model->belt_model) */
 typedef struct bd_rfe_model {
     bd_lumped_model lumped;   /* first: the centres' chain and its contacts
@@ -36,6 +64,13 @@ typedef struct bd_rfe_model {
                                  l0·T of the belt at rest there (build.c) */
     double *c_align;          /* [n] N·m·s/rad, its dashpot */
     double k_align_max;       /* N·m/rad, the largest (stable step) */
+    /* variable topology (sections.c): none when off or nowhere */
+    bd_rfe_window *windows;   /* [window_count] */
+    int window_count;
+    int *idler_list;          /* the idlers the windows carry, window by window */
+    int *idler_window;        /* [idler_count] the window carrying idler i, or −1 */
+    double *idler_share;      /* [idler_count] m of the span each idler carries
+                                 (sim/running_law.c's rule) */
 } bd_rfe_model;
 
 /* state (behind sim->belt_data) */
@@ -63,6 +98,18 @@ typedef struct bd_rfe {
     double *rinv, *rcp, *rz;  /* [n] */
     double rs0, ro, rdt;
     double *rb;               /* [n] rad/s, Δω = ω⁺ − ω⁻ of the step */
+    /* variable topology (sections.c): node i's window (−1: free), the
+     * sections, the free nodes' runs for the step */
+    int *sec;                 /* [n] */
+    bd_rfe_section *sections; /* [window_count] */
+    int *carried;             /* [idler_count] step: the section carrying idler i, or −1 */
+    int tied;                 /* the sections have been tied */
+    int *run_first, *run_count;   /* [n] */
+    int run_n;
+    /* what the topology did (summary.json) */
+    long joined, left;
+    double booked_lost, booked_gained;   /* J, the events' energy change */
+    int belt_dof_min, belt_dof_max;
 } bd_rfe;
 
 static inline bd_rfe *bd_rfe_of(const bd_sim *sim)
@@ -75,8 +122,20 @@ static inline const bd_rfe_model *bd_rfe_model_of(const bd_sim *sim)
     return (const bd_rfe_model *)sim->model->belt_model;
 }
 
+/* whether any element is tied into a section now (sections.c): the step
+ * then works on the free runs only */
+static inline int bd_rfe_some_tied(const bd_sim *sim)
+{
+    const bd_rfe *R = bd_rfe_of(sim);
+    return R->tied && !(R->run_n == 1 && R->run_count[0] == sim->model->n);
+}
+
 /* build.c */
 int bd_rfe_build(bd_sim *sim, bd_diag *diag);
+/* the free elements first .. first + count − 1 (count ≥ n: the whole
+ * loop) turned to the least shear, alignment and bending energy with
+ * every centre held */
+void bd_rfe_relax_turns(bd_sim *sim, int first, int count);
 /* GA, N: belt.shear_stiffness, default 10·EA */
 double bd_rfe_shear_stiffness(const bd_model_def *def);
 void bd_rfe_free(bd_sim *sim);
@@ -95,6 +154,28 @@ double bd_rfe_potential(const bd_sim *sim);
  * element i's angle ψ to the line of the belt, rad */
 double bd_rfe_sde_angles(const bd_sim *sim, int e, double *bend);
 double bd_rfe_align_angle(const bd_sim *sim, int i);
+
+/* sections.c: variable topology */
+void bd_rfe_sections_build(bd_sim *sim, bd_rfe_model *RM);
+void bd_rfe_sections_alloc(bd_sim *sim);
+void bd_rfe_sections_free(bd_rfe *R);
+void bd_rfe_sections_free_model(bd_rfe_model *RM);
+void bd_rfe_sections_clone(bd_sim *dst, const bd_sim *src);
+/* the supports phase: the idlers the sections carry, the others' contacts */
+void bd_rfe_supports(bd_sim *sim);
+/* the integrate phase for the sections and the idlers they carry */
+void bd_rfe_sections_move(bd_sim *sim, double *ke, double *w_nc);
+/* after it: elements join and leave the sections (the first time, every
+ * section is tied) */
+void bd_rfe_sections_regroup(bd_sim *sim);
+void bd_rfe_material(bd_sim *sim);
+/* the belt's degrees of freedom now: 3 per free element, 2 per section */
+int bd_rfe_belt_dof(const bd_sim *sim);
+void bd_rfe_topology(const bd_sim *sim, bd_belt_topology *out);
+/* forces.c: SDE e's energy (axial, and shear and bending unless both its
+ * elements are tied) and element i's alignment's (none when tied) */
+double bd_rfe_sde_energy(const bd_sim *sim, int e);
+double bd_rfe_align_energy(const bd_sim *sim, int i);
 
 /* rotation_solve.c: the implicit rotation step's Δω into rb from the
  * moments tq, and its dashpots' mid-step share into tqn (after the forces

@@ -66,10 +66,54 @@ static void factor(bd_rfe *R, const bd_rfe_model *RM, int n, double dt)
     for (int k = last - 1; k >= 1; k--)
         z[k] -= cp[k] * z[k + 1];
     R->rs0 = 1.0 / (DIAG(0) + o * (z[1] + z[last]));
-#undef DIAG
     R->rdt = dt;
     R->ro = o;
 }
+
+/* With sections (sections.c) a tied element does not turn: each run of
+ * free elements between two tied ones is a chain of its own, held at both
+ * ends, by Thomas' algorithm (factors into the same arrays, by element) */
+static void factor_runs(bd_rfe *R, const bd_rfe_model *RM, int n, double dt)
+{
+    const double kq = 0.25 * dt * dt, cq = 0.5 * dt;
+    const double own = kq * (0.25 * RM->k_shear + RM->k_bend)
+                     + cq * (0.25 * RM->c_shear + RM->c_bend);
+    const double o = kq * (0.25 * RM->k_shear - RM->k_bend)
+                   + cq * (0.25 * RM->c_shear - RM->c_bend);
+    const double *ka = RM->k_align, *kc = RM->c_align;
+    for (int r = 0; r < R->run_n; r++) {
+        double cp = 0.0;
+        for (int q = 0, k = R->run_first[r]; q < R->run_count[r]; q++, k = bd_node_next(k, n)) {
+            R->rinv[k] = 1.0 / (DIAG(k) - o * cp);
+            cp = R->rcp[k] = o * R->rinv[k];
+        }
+    }
+    R->rdt = dt;
+    R->ro = o;
+}
+
+static void solve_runs(bd_rfe *R, int n, double dt)
+{
+    const double o = R->ro;
+    double *x = R->rb;
+    for (int r = 0; r < R->run_n; r++) {
+        const int f = R->run_first[r], c = R->run_count[r];
+        double prev = 0.0;
+        int k = f;
+        for (int q = 0; q < c; q++, k = bd_node_next(k, n)) {
+            x[k] = (dt * R->tq[k] - o * prev) * R->rinv[k];
+            prev = x[k];
+        }
+        /* k is one past the run's last: back from the last */
+        k = bd_node_prev(k, n);
+        for (int q = c - 2; q >= 0; q--) {
+            int j = bd_node_prev(k, n);
+            x[j] -= R->rcp[j] * x[k];
+            k = j;
+        }
+    }
+}
+#undef DIAG
 
 /* Δω into R->rb for the moments tq at t (forces.c), and the dashpots'
  * moment at the mid-step rate added to the non-conservative moment tqn:
@@ -80,6 +124,18 @@ void bd_rfe_rotation_implicit(bd_sim *sim)
     const bd_rfe_model *RM = bd_rfe_model_of(sim);
     const int n = sim->model->n, last = n - 1;
     const double dt = sim->model->dt;
+    if (bd_rfe_some_tied(sim)) {
+        if (R->rdt != dt)
+            factor_runs(R, RM, n, dt);
+        solve_runs(R, n, dt);
+        const double hc_own = 0.5 * (0.25 * RM->c_shear + RM->c_bend);
+        const double hc_cross = 0.5 * (0.25 * RM->c_shear - RM->c_bend);
+        for (int r = 0; r < R->run_n; r++)
+            for (int q = 0, i = R->run_first[r]; q < R->run_count[r]; q++, i = bd_node_next(i, n))
+                R->tqn[i] -= (2.0 * hc_own + 0.5 * RM->c_align[i]) * R->rb[i]
+                           + hc_cross * (R->rb[bd_node_prev(i, n)] + R->rb[bd_node_next(i, n)]);
+        return;
+    }
     if (R->rdt != dt)
         factor(R, RM, n, dt);
     const double o = R->ro;
@@ -96,6 +152,7 @@ void bd_rfe_rotation_implicit(bd_sim *sim)
     x[0] = s0;
     for (int k = 1; k <= last; k++)
         x[k] += s0 * z[k];
+
     const double hc_own = 0.5 * (0.25 * RM->c_shear + RM->c_bend);
     const double hc_cross = 0.5 * (0.25 * RM->c_shear - RM->c_bend);
     const double *restrict kc = RM->c_align;

@@ -1,0 +1,947 @@
+/* Variable topology (seed 000 §3.1): the rfe belt's free stretches tied
+ * into long sections, released before they reach a pulley or an idler
+ * curve.
+ *
+ * Seed 000 ties the belt sections out of contact with the pulleys by
+ * fixed constraints into long sections, releases them before they can
+ * touch a pulley and carries their idlers as running resistance. Here the
+ * long sections stand on windows fixed on the path: stretches of a
+ * straight span on its idlers, each from the middle of one bay to the
+ * middle of another, up to `group_length` long, at least `margin` clear
+ * of the span's pulleys and idler curves. The belt flows through a
+ * window: an element is tied as it enters it and free again as it leaves
+ * (at the window's end it is then still a margin from the pulley). Two
+ * windows may meet; an element then passes from one section to the next.
+ *
+ * **A section is one belt element of many nodes.** Its elements stand on
+ * the line through the idlers' tops, turned along it, evenly spaced from
+ * its first to its last: its two degrees of freedom are their places
+ * along the line, s1 and s2, and every element between moves with
+ * weight ξ = j/(count − 1) (the linear shape function of a two-node
+ * element). It keeps the belt's mass (each element's, with its material)
+ * and its elasticity: the SDEs inside it are stretched evenly, ½k·x² each
+ * as on the free belt, so its stiffness is the series stiffness of the
+ * SDEs it stands for, and the tension inside it is theirs. Lagrange's
+ * equations in (s1, s2) give the 2×2 mass matrix M = Σ m_j·N_j·N_jᵀ,
+ * N_j = (1 − ξ_j, ξ_j), and the forces Σ N_j·(f_j·d) of every force on
+ * its elements along the line; across the line and in rotation the
+ * idlers hold it (no work). The SDEs between two tied elements have no
+ * shear or bending (forces.c), the tied elements no alignment.
+ * Waves cross it at √(EA/m′) when long against it (a two-node element's
+ * dispersion, as the axial belt's); group_length sets where that stops.
+ *
+ * **The idlers it carries** (those inside the window: the window ends
+ * mid-bay, half a bay from any idler, so no idler ever passes from
+ * contact to being carried or back) turn with the belt (stuck) and
+ * resist it by rr·N, N the weight of belt and load they carry normal to
+ * the span (sim/running_law.c's share): the model's own law. With the
+ * rolls' inertia in the step (central differences, the stick impulse in
+ * it),
+ *   (M + K)·V⁺ = M·V⁻ + P + Δt·(F − F_rr(V⁻)),
+ * K = Σ I/R²·N_k·N_kᵀ, P = Σ (I·ω_k/R)·N_k, each roll then at ω⁺ = v_k⁺/R;
+ * the friction that turns it is booked as the contact's friction is (on
+ * the belt at v_k, on the roll at ω·R: no work while they roll together).
+ *
+ * **Joining and leaving.** An element leaving at an end keeps its place
+ * and velocity, and the section's others keep theirs: nothing changes.
+ * An element joining is put on the line where its SDE to the free belt
+ * keeps its length, the section's elements are spaced evenly again and
+ * its speeds taken from their momentum; what that changes in the
+ * mechanical energy (the joining element lifted out of its sag by about
+ * a millimetre, its speed across the line) is measured over the section
+ * and the SDEs at its ends and booked: a loss as dissipated, a gain as
+ * input (as the moving-node belt books its material's reload). The free
+ * belt's end bay is held by the section's end at the height of the idler
+ * tops, a support in mid-bay: that bay's half sags as a half bay. */
+#include "belt/rfe/rfe.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/alloc.h"
+#include "laws/rolling.h"
+
+/* free elements beside a section's end whose turns are relaxed when it is
+ * first tied (build.c bd_rfe_relax_turns) */
+#define RELAX_AROUND 24
+#define RELAX_JOIN 8
+/* an element leaves a section this many elements beyond its window's end */
+#define LEAVE_BEYOND 0.5
+
+/* ------------------------------------------------------------------ */
+/* build                                                              */
+
+/* the idlers' shares of their span, as sim/running_law.c takes them:
+ * idler i of count at i·spacing carries from the midpoint to the one
+ * before to the midpoint to the next (the span's end after the last) */
+static void idler_shares(bd_sim *sim, bd_rfe_model *RM)
+{
+    const bd_model_def *def = sim->model->def;
+    RM->idler_share = bd_xcalloc((size_t)sim->model->idler_count + 1, sizeof *RM->idler_share);
+    int at = 0;
+    for (int k = 0; k < def->idler_set_count; k++) {
+        int count = sim->model->idlers_per_set[k];
+        double sp = sim->model->idler_spacing[k];
+        double p0[2], p1[2];
+        bd_sim_span_ends(sim, def->idler_sets[k].span, p0, p1);
+        double Ls = hypot(p1[0] - p0[0], p1[1] - p0[1]);
+        for (int i = 1; i <= count; i++) {
+            double next = i == count ? Ls : (i + 1) * sp;
+            RM->idler_share[at++] = 0.5 * (i * sp + next) - (i - 0.5) * sp;
+        }
+    }
+}
+
+/* a point's place along window w's line and above it (the normal to d
+ * on the side of positive y) */
+static inline double along(const bd_rfe_window *w, double x, double y)
+{
+    return (x - w->p0[0]) * w->d[0] + (y - w->p0[1]) * w->d[1];
+}
+
+/* the windows of idler set k's span: its stretches between idler
+ * curves, each less `margin` at both ends and cut to whole bays from
+ * mid-bay to mid-bay, in windows of at most group_length */
+static int set_windows(bd_sim *sim, int k, bd_rfe_window *out, int room)
+{
+    const bd_model_def *def = sim->model->def;
+    const bd_idler_set_def *set = &def->idler_sets[k];
+    const int span = set->span;
+    const double bay = sim->model->idler_spacing[k], l0 = sim->model->l0;
+    if (bd_span_vertical(&sim->model->path, span) || sim->model->idlers_per_set[k] == 0)
+        return 0;
+    /* one row of idlers on the span (a second set there: no windows) */
+    for (int q = 0; q < def->idler_set_count; q++)
+        if (q != k && def->idler_sets[q].span == span)
+            return 0;
+    /* half a bay must keep the idlers clear of an element at a window's
+     * end, and a window hold a few elements */
+    if (bay < 4.0 * l0)
+        return 0;
+    double p0[2], p1[2];
+    bd_sim_span_ends(sim, span, p0, p1);
+    double Ls = hypot(p1[0] - p0[0], p1[1] - p0[1]);
+    /* clear of a pulley or a curve by two bays and five elements: the
+     * free belt settles into its sag on at least two bays */
+    const double margin = 2.0 * bay + 5.0 * l0;
+    double from = 0.0, to = Ls;
+    if (set->has_curve) {
+        /* the longer of the stretches before and after the curve */
+        double c0 = set->curve_from * Ls, c1 = set->curve_to * Ls;
+        if (c0 >= Ls - c1)
+            to = c0;
+        else
+            from = c1;
+    }
+    /* mid-bay points (i + ½)·bay inside [from + margin, to − margin] */
+    int i0 = (int)ceil((from + margin) / bay - 0.5), i1 = (int)floor((to - margin) / bay - 0.5);
+    int per = (int)floor(def->belt.group_length / bay + 1e-9);
+    if (per < 1)
+        per = 1;
+    int made = 0;
+    for (int i = i0; i + 1 <= i1 && made < room;) {
+        int j = i + per <= i1 ? i + per : i1;
+        bd_rfe_window *w = &out[made];
+        /* indices within `out`; made absolute by the caller */
+        w->before = made > 0 ? made - 1 : -1;
+        w->after = -1;
+        if (made > 0)
+            out[made - 1].after = made;
+        made++;
+        w->p0[0] = p0[0];
+        w->p0[1] = p0[1];
+        w->d[0] = (p1[0] - p0[0]) / Ls;
+        w->d[1] = (p1[1] - p0[1]) / Ls;
+        w->cos_slope = fabs(w->d[0]);
+        w->a = (i + 0.5) * bay;
+        w->bay = bay;
+        w->b = (j + 0.5) * bay;
+        i = j;
+    }
+    return made;
+}
+
+void bd_rfe_sections_build(bd_sim *sim, bd_rfe_model *RM)
+{
+    const bd_model_def *def = sim->model->def;
+    const int ni = sim->model->idler_count;
+    idler_shares(sim, RM);
+    RM->window_count = 0;
+    RM->windows = NULL;
+    RM->idler_window = bd_xcalloc((size_t)ni + 1, sizeof *RM->idler_window);
+    RM->idler_list = bd_xcalloc((size_t)ni + 1, sizeof *RM->idler_list);
+    for (int i = 0; i < ni; i++)
+        RM->idler_window[i] = -1;
+    if (!def->belt.group_sections || def->belt.group_length <= 0.0)
+        return;
+    /* at most a window per idler */
+    RM->windows = bd_xcalloc((size_t)ni + 1, sizeof *RM->windows);
+    for (int k = 0; k < def->idler_set_count; k++) {
+        int base = RM->window_count;
+        int made = set_windows(sim, k, RM->windows + base, ni - base);
+        for (int w = base; w < base + made; w++) {
+            bd_rfe_window *W = &RM->windows[w];
+            W->before = W->before >= 0 ? W->before + base : -1;
+            W->after = W->after >= 0 ? W->after + base : -1;
+        }
+        RM->window_count += made;
+    }
+    /* the idlers inside each window, in their order along it */
+    int listed = 0;
+    for (int w = 0; w < RM->window_count; w++) {
+        bd_rfe_window *W = &RM->windows[w];
+        W->idler_first = listed;
+        for (int i = 0; i < ni; i++) {
+            const bd_idler *id = &sim->idlers[i];
+            double a = along(W, id->tr.p[0], id->tr.p[1]);
+            double off = (id->tr.p[1] - W->p0[1]) * W->d[0] - (id->tr.p[0] - W->p0[0]) * W->d[1];
+            if (a > W->a && a < W->b && fabs(off) < 1e-6 * (1.0 + W->b) && RM->idler_window[i] < 0) {
+                RM->idler_window[i] = w;
+                RM->idler_list[listed++] = i;
+            }
+        }
+        W->idler_count = listed - W->idler_first;
+    }
+}
+
+void bd_rfe_sections_alloc(bd_sim *sim)
+{
+    bd_rfe *R = bd_rfe_of(sim);
+    const bd_rfe_model *RM = bd_rfe_model_of(sim);
+    const size_t n = (size_t)sim->model->n;
+    R->sec = bd_xcalloc(n, sizeof *R->sec);
+    for (size_t i = 0; i < n; i++)
+        R->sec[i] = -1;
+    R->sections = bd_xcalloc((size_t)RM->window_count + 1, sizeof *R->sections);
+    R->carried = bd_xcalloc((size_t)sim->model->idler_count + 1, sizeof *R->carried);
+    for (int i = 0; i < sim->model->idler_count; i++)
+        R->carried[i] = -1;
+    R->run_first = bd_xcalloc(n, sizeof *R->run_first);
+    R->run_count = bd_xcalloc(n, sizeof *R->run_count);
+    R->run_first[0] = 0;
+    R->run_count[0] = (int)n;
+    R->run_n = 1;
+    R->belt_dof_min = R->belt_dof_max = 3 * (int)n;
+}
+
+void bd_rfe_sections_free(bd_rfe *R)
+{
+    free(R->sec);
+    free(R->sections);
+    free(R->carried);
+    free(R->run_first);
+    free(R->run_count);
+}
+
+void bd_rfe_sections_free_model(bd_rfe_model *RM)
+{
+    free(RM->windows);
+    free(RM->idler_list);
+    free(RM->idler_window);
+    free(RM->idler_share);
+}
+
+void bd_rfe_sections_clone(bd_sim *dst, const bd_sim *src)
+{
+    bd_rfe *D = bd_rfe_of(dst);
+    const bd_rfe *S = bd_rfe_of(src);
+    const size_t n = (size_t)src->model->n;
+    D->sec = bd_xdup(S->sec, n, sizeof *D->sec);
+    D->sections = bd_xdup(S->sections, (size_t)bd_rfe_model_of(src)->window_count + 1,
+                          sizeof *D->sections);
+    D->carried = bd_xdup(S->carried, (size_t)src->model->idler_count + 1, sizeof *D->carried);
+    D->run_first = bd_xdup(S->run_first, n, sizeof *D->run_first);
+    D->run_count = bd_xdup(S->run_count, n, sizeof *D->run_count);
+    D->tied = S->tied;
+    D->run_n = S->run_n;
+    D->joined = S->joined;
+    D->left = S->left;
+    D->booked_lost = S->booked_lost;
+    D->booked_gained = S->booked_gained;
+    D->belt_dof_min = S->belt_dof_min;
+    D->belt_dof_max = S->belt_dof_max;
+}
+
+/* ------------------------------------------------------------------ */
+/* the step                                                           */
+
+static inline int last_of(const bd_rfe_section *S, int n)
+{
+    int l = S->first + S->count - 1;
+    return l >= n ? l - n : l;
+}
+
+/* an idler's weight ξ in its section: where it stands between the
+ * section's first and last element */
+static inline double idler_xi(const bd_sim *sim, const bd_rfe_window *W,
+                              const bd_rfe_section *S, int i)
+{
+    const bd_idler *id = &sim->idlers[i];
+    return (along(W, id->tr.p[0], id->tr.p[1]) - S->s1) / (S->s2 - S->s1);
+}
+
+/* the supports phase: the idlers a section carries (their sums for the
+ * step), every other idler pressing on the belt as on the lumped belt. A
+ * section carries the idlers of its window with two elements of it on
+ * either side: all of them while its ends stand where the window's are
+ * (in mid-bay, half a bay from the nearest idler); should the belt not
+ * join it (an element too far off the line, sections.c join), the idlers
+ * beyond its ends press on the free belt again. */
+void bd_rfe_supports(bd_sim *sim)
+{
+    bd_rfe *R = bd_rfe_of(sim);
+    if (!R->tied) {
+        bd_lumped_idlers(sim);
+        return;
+    }
+    const bd_rfe_model *RM = bd_rfe_model_of(sim);
+    const int n = sim->model->n;
+    const double g = sim->model->gravity, l0 = sim->model->l0, inv_l0 = 1.0 / l0;
+    for (int i = 0; i < sim->model->idler_count; i++)
+        R->carried[i] = -1;
+    for (int w = 0; w < RM->window_count; w++) {
+        const bd_rfe_window *W = &RM->windows[w];
+        bd_rfe_section *S = &R->sections[w];
+        S->k11 = S->k12 = S->k22 = S->p1 = S->p2 = S->f1 = S->f2 = 0.0;
+        if (S->count < 2)
+            continue;
+        const double inner = 2.0 * l0 / (S->s2 - S->s1);
+        for (int q = 0; q < W->idler_count; q++) {
+            int i = RM->idler_list[W->idler_first + q];
+            bd_idler *id = &sim->idlers[i];
+            const bd_idler_model *im = id->m;
+            double xi = idler_xi(sim, W, S, i), xj = 1.0 - xi;
+            if (xi < inner || xj < inner)
+                continue;
+            R->carried[i] = w;
+            /* its tracker: the element over it, from the section */
+            double at = xi * (S->count - 1);
+            int j = (int)at;
+            id->tr.element = (S->first + j) % n;
+            id->tr.gamma = at - j;
+            /* the belt and load over it */
+            double m = sim->mass[id->tr.element] * inv_l0;
+            double N = g * W->cos_slope * m * RM->idler_share[i];
+            double v = xj * S->v1 + xi * S->v2;
+            double sat = v * (1.0 / BD_ROLLING_SPEED);
+            sat = sat > 1.0 ? 1.0 : sat < -1.0 ? -1.0 : sat;
+            double fr = im->rolling * N * sat;
+            double kr = im->inertia / (im->radius * im->radius);
+            double pr = im->inertia * id->omega / im->radius;
+            S->f1 += xj * fr;
+            S->f2 += xi * fr;
+            S->k11 += kr * xj * xj;
+            S->k12 += kr * xj * xi;
+            S->k22 += kr * xi * xi;
+            S->p1 += pr * xj;
+            S->p2 += pr * xi;
+        }
+    }
+    for (int i = 0; i < sim->model->idler_count; i++)
+        if (R->carried[i] < 0)
+            bd_tracker_update(sim, &sim->idlers[i].tr);
+    bd_lumped_idlers_except(sim, R->carried);
+}
+
+/* the sections' mass matrix: Σ m_j·N_j·N_jᵀ */
+static void mass_matrix(const bd_sim *sim, const bd_rfe_section *S, double *m11, double *m12,
+                        double *m22)
+{
+    const int n = sim->model->n;
+    const double inv = 1.0 / (S->count - 1);
+    double a = 0.0, b = 0.0, c = 0.0;
+    for (int q = 0, i = S->first; q < S->count; q++, i = bd_node_next(i, n)) {
+        double xi = q * inv, xj = 1.0 - xi, m = sim->mass[i];
+        a += m * xj * xj;
+        b += m * xj * xi;
+        c += m * xi * xi;
+    }
+    *m11 = a;
+    *m12 = b;
+    *m22 = c;
+}
+
+/* the section's elements where its ends are, at their velocities */
+static void place(bd_sim *sim, const bd_rfe_window *W, const bd_rfe_section *S)
+{
+    const int n = sim->model->n;
+    const double inv = 1.0 / (S->count - 1), ds = S->s2 - S->s1, dv = S->v2 - S->v1;
+    const double dx = W->d[0], dy = W->d[1];
+    for (int q = 0, i = S->first; q < S->count; q++, i = bd_node_next(i, n)) {
+        double xi = q * inv, s = S->s1 + xi * ds, v = S->v1 + xi * dv;
+        sim->x[i] = W->p0[0] + s * dx;
+        sim->y[i] = W->p0[1] + s * dy;
+        sim->vx[i] = v * dx;
+        sim->vy[i] = v * dy;
+    }
+}
+
+/* the integrate phase for the sections: each to t + Δt/2 with its rolls
+ * (above), its elements with it; twice its kinetic energy into *ke and the
+ * work of its non-conservative forces into *w_nc (both summed by the
+ * caller) */
+void bd_rfe_sections_move(bd_sim *sim, double *ke_out, double *w_nc_out)
+{
+    bd_rfe *R = bd_rfe_of(sim);
+    const bd_rfe_model *RM = bd_rfe_model_of(sim);
+    const int n = sim->model->n;
+    const double dt = sim->model->dt;
+    double ke = 0.0, w_nc = 0.0;
+    for (int w = 0; w < RM->window_count; w++) {
+        const bd_rfe_window *W = &RM->windows[w];
+        bd_rfe_section *S = &R->sections[w];
+        if (S->count < 2)
+            continue;
+        const double dx = W->d[0], dy = W->d[1], inv = 1.0 / (S->count - 1);
+        double F1 = 0.0, F2 = 0.0, N1 = 0.0, N2 = 0.0, m11 = 0.0, m12 = 0.0, m22 = 0.0;
+        for (int q = 0, i = S->first; q < S->count; q++, i = bd_node_next(i, n)) {
+            double xi = q * inv, xj = 1.0 - xi, m = sim->mass[i];
+            double f = sim->fx[i] * dx + sim->fy[i] * dy;
+            double fn = sim->fnx[i] * dx + sim->fny[i] * dy;
+            F1 += xj * f;
+            F2 += xi * f;
+            N1 += xj * fn;
+            N2 += xi * fn;
+            m11 += m * xj * xj;
+            m12 += m * xj * xi;
+            m22 += m * xi * xi;
+        }
+        /* (M + K)·V⁺ = M·V⁻ + P + Δt·(F − F_rr) */
+        double a11 = m11 + S->k11, a12 = m12 + S->k12, a22 = m22 + S->k22;
+        double r1 = m11 * S->v1 + m12 * S->v2 + S->p1 + dt * (F1 - S->f1);
+        double r2 = m12 * S->v1 + m22 * S->v2 + S->p2 + dt * (F2 - S->f2);
+        double det = a11 * a22 - a12 * a12;
+        double u1 = (a22 * r1 - a12 * r2) / det, u2 = (a11 * r2 - a12 * r1) / det;
+        double h1 = 0.5 * (S->v1 + u1), h2 = 0.5 * (S->v2 + u2);
+        ke += m11 * h1 * h1 + 2.0 * m12 * h1 * h2 + m22 * h2 * h2;
+        w_nc += (N1 - S->f1) * h1 + (N2 - S->f2) * h2;
+        /* the rolls' stick: the torque that brings each to v_k⁺/R (idler.c
+         * advances it and books its work at ω), its friction on the belt
+         * against it at v_k */
+        for (int q = 0; q < W->idler_count; q++) {
+            int i = RM->idler_list[W->idler_first + q];
+            if (R->carried[i] != w)
+                continue;
+            bd_idler *id = &sim->idlers[i];
+            double xi = idler_xi(sim, W, S, i), xj = 1.0 - xi;
+            double Rr = id->m->radius;
+            double torque = id->m->inertia * ((xj * u1 + xi * u2) / Rr - id->omega) / dt;
+            id->torque = torque;
+            id->alpha = torque * id->m->inv_inertia;
+            w_nc -= torque / Rr * (xj * h1 + xi * h2);
+        }
+        S->v1 = u1;
+        S->v2 = u2;
+        S->s1 += u1 * dt;
+        S->s2 += u2 * dt;
+        place(sim, W, S);
+    }
+    *ke_out += 0.5 * ke;
+    *w_nc_out += w_nc * dt;
+}
+
+/* ------------------------------------------------------------------ */
+/* joining and leaving                                                */
+
+/* the free nodes' runs round the loop (the step moves them), each
+ * between two tied elements; all of it one run when none is tied */
+static void free_runs(bd_rfe *R, int n)
+{
+    R->run_n = 0;
+    int t0 = -1;
+    for (int i = 0; i < n && t0 < 0; i++)
+        if (R->sec[i] >= 0)
+            t0 = i;
+    if (t0 < 0) {
+        R->run_first[0] = 0;
+        R->run_count[0] = n;
+        R->run_n = 1;
+        return;
+    }
+    for (int q = 1; q <= n;) {
+        int i = (t0 + q) % n;
+        if (R->sec[i] >= 0) {
+            q++;
+            continue;
+        }
+        int c = 0;
+        while (q + c <= n && R->sec[(t0 + q + c) % n] < 0)
+            c++;
+        R->run_first[R->run_n] = i;
+        R->run_count[R->run_n++] = c;
+        q += c;
+    }
+}
+
+/* the mechanical energy of nodes from .. to (round the loop) and of the
+ * SDEs from the one before `from` to the one after `to`: kinetic
+ * (translation at the half step, rotation), gravity, elastic */
+static double local_energy(const bd_sim *sim, int from, int to)
+{
+    const bd_rfe *R = bd_rfe_of(sim);
+    const int n = sim->model->n;
+    const double g = sim->model->gravity, J = bd_rfe_model_of(sim)->inertia;
+    double e = 0.0;
+    for (int i = from;; i = bd_node_next(i, n)) {
+        e += 0.5 * sim->mass[i] * (sim->vx[i] * sim->vx[i] + sim->vy[i] * sim->vy[i])
+           + 0.5 * J * R->omega[i] * R->omega[i] + sim->mass[i] * g * sim->y[i]
+           + bd_rfe_align_energy(sim, i);
+        if (i == to)
+            break;
+    }
+    for (int e0 = bd_node_prev(from, n);; e0 = bd_node_next(e0, n)) {
+        e += bd_rfe_sde_energy(sim, e0);
+        if (e0 == to)
+            break;
+    }
+    /* the alignments beside: their angles follow the ends */
+    e += bd_rfe_align_energy(sim, bd_node_prev(from, n))
+       + bd_rfe_align_energy(sim, bd_node_next(to, n));
+    return e;
+}
+
+static void book(bd_sim *sim, double lost)
+{
+    bd_rfe *R = bd_rfe_of(sim);
+    if (lost >= 0.0) {
+        sim->energy.dissipated += lost;
+        R->booked_lost += lost;
+    } else {
+        sim->energy.input -= lost;
+        R->booked_gained -= lost;
+    }
+}
+
+/* the section's speeds from its elements' momentum along its line (the
+ * least change of their kinetic energy), its elements then where and as
+ * fast as it says */
+static void take_momentum(bd_sim *sim, const bd_rfe_window *W, bd_rfe_section *S)
+{
+    const int n = sim->model->n;
+    const double inv = 1.0 / (S->count - 1);
+    double p1 = 0.0, p2 = 0.0, m11, m12, m22;
+    for (int q = 0, i = S->first; q < S->count; q++, i = bd_node_next(i, n)) {
+        double xi = q * inv, p = sim->mass[i] * (sim->vx[i] * W->d[0] + sim->vy[i] * W->d[1]);
+        p1 += (1.0 - xi) * p;
+        p2 += xi * p;
+    }
+    mass_matrix(sim, S, &m11, &m12, &m22);
+    double det = m11 * m22 - m12 * m12;
+    S->v1 = (m22 * p1 - m12 * p2) / det;
+    S->v2 = (m11 * p2 - m12 * p1) / det;
+    place(sim, W, S);
+}
+
+/* node i tied into section w: not turning, moved only with the section
+ * (a contact beside it sees it held) */
+static void tie_node(bd_sim *sim, int i, int w)
+{
+    bd_rfe *R = bd_rfe_of(sim);
+    const int n = sim->model->n;
+    R->sec[i] = w;
+    R->omega[i] = 0.0;
+    R->rb[i] = 0.0;
+    sim->dt_per_mass[i] = 0.0;
+    /* what the forces phase no longer writes for it (forces.c) */
+    R->h[i] = R->hd[i] = R->tq[i] = R->tqn[i] = 0.0;
+    int es[2] = {bd_node_prev(i, n), i};
+    for (int k = 0; k < 2; k++) {
+        int e = es[k];
+        if (R->sec[e] >= 0 && R->sec[bd_node_next(e, n)] >= 0)
+            R->q[e] = R->qd[e] = R->mb[e] = R->mbd[e] = 0.0;
+    }
+}
+
+/* a tied element turned along its section's line: one inside it, whose
+ * turn counts for nothing (its SDEs are both to tied elements). A
+ * section's end keeps the turn it had, so that its SDE to the free belt
+ * does not jump; inside, turned along the line, it leaves as it would
+ * stand there */
+static void along_line(bd_sim *sim, int i, const bd_rfe_window *W)
+{
+    bd_rfe *R = bd_rfe_of(sim);
+    R->ct[i] = W->d[0];
+    R->st[i] = W->d[1];
+}
+
+static void free_node(bd_sim *sim, int i)
+{
+    bd_rfe_of(sim)->sec[i] = -1;
+    bd_node_mass_changed(sim, i);
+}
+
+/* the place along W's line at the chord L from point (px, py), ahead of
+ * it (dir +1) or behind (−1) */
+static double chord_from(const bd_rfe_window *W, double px, double py, double L, double dir)
+{
+    double a = along(W, px, py);
+    double c = (py - W->p0[1]) * W->d[0] - (px - W->p0[0]) * W->d[1];
+    double h = L * L - c * c;
+    return a + dir * (h > 0.0 ? sqrt(h) : 0.0);
+}
+
+/* a section's end p turned so that its SDE to q has no shear: t_p the
+ * reflection of t_q about the SDE's line, γ = θ_u − ½(φ_p + φ_q) = 0 */
+static void reflect_turn(bd_sim *sim, int p, int q)
+{
+    bd_rfe *R = bd_rfe_of(sim);
+    double ux = sim->x[q] - sim->x[p], uy = sim->y[q] - sim->y[p];
+    double inv = 1.0 / hypot(ux, uy);
+    ux *= inv;
+    uy *= inv;
+    double c = R->ct[q] * ux + R->st[q] * uy;
+    double tx = 2.0 * c * ux - R->ct[q], ty = 2.0 * c * uy - R->st[q];
+    double tn = 1.0 / hypot(tx, ty);
+    R->ct[p] = tx * tn;
+    R->st[p] = ty * tn;
+}
+
+/* the free node next to section w's first element (end 0) or last (end
+ * 1) joins it; returns the energy the section's elements and the SDEs at
+ * its ends lost by it */
+static double join(bd_sim *sim, int w, int end)
+{
+    bd_rfe *R = bd_rfe_of(sim);
+    const bd_rfe_window *W = &bd_rfe_model_of(sim)->windows[w];
+    bd_rfe_section *S = &R->sections[w];
+    const int n = sim->model->n;
+    int p = end == 0 ? bd_node_prev(S->first, n) : bd_node_next(last_of(S, n), n);
+    int q = end == 0 ? bd_node_prev(p, n) : bd_node_next(p, n);   /* its free neighbour */
+    /* the section, the joining element and the free ones whose turns
+     * relax (below) */
+    int from = end == 0 ? (p - RELAX_JOIN + n) % n : S->first;
+    int to = end == 0 ? last_of(S, n) : (p + RELAX_JOIN) % n;
+    double e0 = local_energy(sim, from, to);
+    double L = hypot(sim->x[p] - sim->x[q], sim->y[p] - sim->y[q]);
+    double s = chord_from(W, sim->x[q], sim->y[q], L, end == 0 ? 1.0 : -1.0);
+    tie_node(sim, p, w);
+    if (end == 0) {
+        along_line(sim, S->first, W);
+        S->first = p;
+        S->s1 = s;
+    } else {
+        along_line(sim, last_of(S, n), W);
+        S->s2 = s;
+    }
+    S->count++;
+    take_momentum(sim, W, S);
+    /* the new end turned so that its SDE to the free belt has no shear
+     * (its SDE inside the section has none, whatever its turn), then the
+     * free belt's turns beside it relaxed to it */
+    reflect_turn(sim, p, q);
+    if (end == 0)
+        bd_rfe_relax_turns(sim, (p - RELAX_JOIN + n) % n, RELAX_JOIN);
+    else
+        bd_rfe_relax_turns(sim, bd_node_next(p, n), RELAX_JOIN);
+    R->joined++;
+    return e0 - local_energy(sim, from, to);
+}
+
+/* the first (end 0) or last (end 1) element of section w leaves it where
+ * it is, as fast as it is: the others stay on the same even spacing */
+static double leave(bd_sim *sim, int w, int end)
+{
+    bd_rfe *R = bd_rfe_of(sim);
+    bd_rfe_section *S = &R->sections[w];
+    const int n = sim->model->n;
+    double r = 1.0 / (S->count - 1);
+    /* its SDE to the section and its alignment count again (a section's
+     * end keeps the turn it had when it joined) */
+    int k = end == 0 ? S->first : last_of(S, n);
+    int from = bd_node_prev(bd_node_prev(k, n), n), to = bd_node_next(bd_node_next(k, n), n);
+    double e0 = local_energy(sim, from, to);
+    if (end == 0) {
+        free_node(sim, S->first);
+        S->first = bd_node_next(S->first, n);
+        S->s1 += r * (S->s2 - S->s1);
+        S->v1 += r * (S->v2 - S->v1);
+    } else {
+        free_node(sim, last_of(S, n));
+        S->s2 -= r * (S->s2 - S->s1);
+        S->v2 -= r * (S->v2 - S->v1);
+    }
+    S->count--;
+    /* the new end turned so that its SDE to the element that left has no
+     * shear (as join turns a new end) */
+    int e = end == 0 ? S->first : last_of(S, n);
+    reflect_turn(sim, e, k);
+    R->left++;
+    return e0 - local_energy(sim, from, to);
+}
+
+/* whether node i stands in window W no further than `off` from its line
+ * (not another strand passing near; not the belt lifted off its idlers) */
+static int inside(const bd_sim *sim, const bd_rfe_window *W, int i, double off)
+{
+    double a = along(W, sim->x[i], sim->y[i]);
+    double c = (sim->y[i] - W->p0[1]) * W->d[0] - (sim->x[i] - W->p0[0]) * W->d[1];
+    return a >= W->a && a < W->b && fabs(c) <= off;
+}
+
+/* how far off its line an element may be to be tied: the first time, a
+ * sag of 10 % of a bay; joining a section's end, which it leaves a slope
+ * of at most ¼ rad from, a quarter element (it is put on the line with
+ * its SDE to the free belt kept, and an element further off has lifted
+ * or swings: it joins later or not at all, the section ending short of
+ * its window and its end idlers pressing on the free belt) */
+static double tie_off(const bd_rfe_window *W)
+{
+    return 0.1 * W->bay + 0.02;
+}
+
+static double join_off(const bd_sim *sim)
+{
+    return 0.25 * sim->model->l0 + 0.002;
+}
+
+/* the belt's whole mechanical energy, as local_energy counts it */
+static double belt_energy(const bd_sim *sim)
+{
+    const bd_rfe *R = bd_rfe_of(sim);
+    const double g = sim->model->gravity, J = bd_rfe_model_of(sim)->inertia;
+    double e = 0.0;
+    for (int i = 0; i < sim->model->n; i++)
+        e += 0.5 * sim->mass[i] * (sim->vx[i] * sim->vx[i] + sim->vy[i] * sim->vy[i])
+           + 0.5 * J * R->omega[i] * R->omega[i] + sim->mass[i] * g * sim->y[i]
+           + bd_rfe_align_energy(sim, i) + bd_rfe_sde_energy(sim, i);
+    return e;
+}
+
+/* a point's offset from W's line, up */
+static inline double offset(const bd_rfe_window *W, double x, double y)
+{
+    double c = (y - W->p0[1]) * W->d[0] - (x - W->p0[0]) * W->d[1];
+    return W->d[0] >= 0.0 ? c : -c;
+}
+
+static inline void at_offset(const bd_rfe_window *W, double s, double off, double *x, double *y)
+{
+    double up0 = W->d[0] >= 0.0 ? -W->d[1] : W->d[1], up1 = W->d[0] >= 0.0 ? W->d[0] : -W->d[0];
+    *x = W->p0[0] + s * W->d[0] + off * up0;
+    *y = W->p0[1] + s * W->d[1] + off * up1;
+}
+
+/* The free bay beside a window's end (dir −1: before its first element;
+ * +1: after its last), from the idler outside it to the window's end in
+ * mid-bay, laid as a half bay: the end of a section holds the belt at the
+ * idlers' height there, so the bay's full sag (its deepest point at the
+ * window's end) becomes the half bay's, the same parabola less the line
+ * from the idler to the end, −κ·(σ − σ_I)·(σ_end − σ). Each element keeps
+ * its SDE's length (the tension does not jump), walked from the element
+ * at the idler; returns the window end element's place along the line. */
+static double lay_half_bay(bd_sim *sim, const bd_rfe_window *W, int end_node, int dir)
+{
+    const int n = sim->model->n;
+    const double s_idler = dir < 0 ? W->a - 0.5 * W->bay : W->b + 0.5 * W->bay;
+    const double s_end = dir < 0 ? W->a : W->b;
+    /* κ of the bay's present sag at the window's end element */
+    double se = along(W, sim->x[end_node], sim->y[end_node]);
+    double oe = offset(W, sim->x[end_node], sim->y[end_node]);
+    double q = (se - s_idler) * (s_idler - dir * W->bay - se);
+    double kappa = q != 0.0 ? -oe / q : 0.0;
+    /* the element nearest the idler, walking out from the end */
+    int k0 = end_node;
+    for (int guard = 0; guard < n; guard++) {
+        int nb = dir < 0 ? bd_node_prev(k0, n) : bd_node_next(k0, n);
+        double a0 = along(W, sim->x[k0], sim->y[k0]), a1 = along(W, sim->x[nb], sim->y[nb]);
+        if (fabs(a1 - s_idler) >= fabs(a0 - s_idler))
+            break;
+        k0 = nb;
+    }
+    double sp = along(W, sim->x[k0], sim->y[k0]), op = offset(W, sim->x[k0], sim->y[k0]);
+    /* where the element last walked stood before it moved */
+    double kx = sim->x[k0], ky = sim->y[k0];
+    for (int k = k0; k != end_node;) {
+        int nx = dir < 0 ? bd_node_next(k, n) : bd_node_prev(k, n);
+        double L = hypot(sim->x[nx] - kx, sim->y[nx] - ky);
+        kx = sim->x[nx];
+        ky = sim->y[nx];
+        double s = along(W, sim->x[nx], sim->y[nx]), o = 0.0;
+        for (int it = 0; it < 4; it++) {
+            o = (s - s_end) * dir > 0.0 ? -kappa * (s - s_idler) * (s_end - s) : 0.0;
+            double h = L * L - (o - op) * (o - op);
+            s = sp - dir * (h > 0.0 ? sqrt(h) : 0.0);
+        }
+        at_offset(W, s, o, &sim->x[nx], &sim->y[nx]);
+        sp = s;
+        op = o;
+        k = nx;
+    }
+    return sp;
+}
+
+/* the first time: every element inside a window tied into its section,
+ * put on the line (its place along it kept for the ends, the others
+ * spaced evenly between); the energy that changes booked */
+static void tie_all(bd_sim *sim)
+{
+    bd_rfe *R = bd_rfe_of(sim);
+    const bd_rfe_model *RM = bd_rfe_model_of(sim);
+    const int n = sim->model->n;
+    double e0 = belt_energy(sim);
+    for (int w = 0; w < RM->window_count; w++) {
+        const bd_rfe_window *W = &RM->windows[w];
+        bd_rfe_section *S = &R->sections[w];
+        /* the run inside it that starts after a node outside it */
+        int first = -1;
+        for (int i = 0; i < n && first < 0; i++)
+            if (inside(sim, W, i, tie_off(W)) && !inside(sim, W, bd_node_prev(i, n), tie_off(W)))
+                first = i;
+        if (first < 0)
+            continue;
+        int count = 0;
+        for (int i = first; count < n && inside(sim, W, i, tie_off(W)) && R->sec[i] < 0;
+             i = bd_node_next(i, n))
+            count++;
+        if (count < 2)
+            continue;
+        S->first = first;
+        S->count = count;
+        int last = last_of(S, n);
+        /* where it meets the window before it, the element there (tied
+         * by that window, on the line) keeps its SDE's length */
+        /* where two windows meet, in mid-bay (the sag's slope 0 there),
+         * the elements on either side are put on the line as they are:
+         * their SDE keeps its length to the second order of the slope */
+        S->s1 = W->before >= 0 ? along(W, sim->x[first], sim->y[first])
+                               : lay_half_bay(sim, W, first, -1);
+        S->s2 = W->after >= 0 ? along(W, sim->x[last], sim->y[last])
+                              : lay_half_bay(sim, W, last, 1);
+        for (int q = 0, i = first; q < count; q++, i = bd_node_next(i, n)) {
+            tie_node(sim, i, w);
+            along_line(sim, i, W);
+        }
+        take_momentum(sim, W, S);
+    }
+    /* the free belt beside each end turned to meet it with the least
+     * energy */
+    for (int w = 0; w < RM->window_count; w++) {
+        const bd_rfe_section *S = &R->sections[w];
+        if (S->count < 2)
+            continue;
+        bd_rfe_relax_turns(sim, (S->first - RELAX_AROUND + n) % n, RELAX_AROUND);
+        bd_rfe_relax_turns(sim, bd_node_next(last_of(S, n), n), RELAX_AROUND);
+    }
+    book(sim, e0 - belt_energy(sim));
+    R->tied = 1;
+}
+
+int bd_rfe_belt_dof(const bd_sim *sim)
+{
+    const bd_rfe *R = bd_rfe_of(sim);
+    const int windows = bd_rfe_model_of(sim)->window_count;
+    int tied = 0, sections = 0;
+    for (int w = 0; w < windows; w++)
+        if (R->sections[w].count >= 2) {
+            tied += R->sections[w].count;
+            sections++;
+        }
+    return 3 * (sim->model->n - tied) + 2 * sections;
+}
+
+/* after the integrate phase: the elements that left a window leave its
+ * section, those that entered one join it (the first time, every section
+ * is tied; none while stabilizing, whose time stands still) */
+void bd_rfe_sections_regroup(bd_sim *sim)
+{
+    bd_rfe *R = bd_rfe_of(sim);
+    const bd_rfe_model *RM = bd_rfe_model_of(sim);
+    if (RM->window_count == 0 || sim->stabilizing)
+        return;
+    const int n = sim->model->n;
+    int changed = 0;
+    if (!R->tied) {
+        tie_all(sim);
+        changed = 1;
+    }
+    double lost = 0.0;
+    for (int w = 0; w < RM->window_count; w++) {
+        bd_rfe_section *S = &R->sections[w];
+        /* an element joins inside [a, b] and leaves outside [a − h, b + h]
+         * (put on the line as it joins, it may land a little outside) */
+        const double a = RM->windows[w].a - LEAVE_BEYOND * sim->model->l0;
+        const double b = RM->windows[w].b + LEAVE_BEYOND * sim->model->l0;
+        while (S->count > 2 && (S->s2 >= b || S->s1 < a)) {
+            lost += leave(sim, w, S->s2 >= b ? 1 : 0);
+            changed = 1;
+        }
+    }
+    for (int w = 0; w < RM->window_count; w++) {
+        const bd_rfe_window *W = &RM->windows[w];
+        bd_rfe_section *S = &R->sections[w];
+        if (S->count < 2)
+            continue;
+        for (;;) {
+            int p = bd_node_prev(S->first, n), q = bd_node_next(last_of(S, n), n);
+            if (R->sec[p] < 0 && inside(sim, W, p, join_off(sim)))
+                lost += join(sim, w, 0);
+            else if (R->sec[q] < 0 && inside(sim, W, q, join_off(sim)))
+                lost += join(sim, w, 1);
+            else
+                break;
+            changed = 1;
+        }
+    }
+    if (!changed)
+        return;
+    if (lost != 0.0)
+        book(sim, lost);
+    free_runs(R, n);
+    /* the rotations' system changes with the tied elements */
+    R->rdt = 0.0;
+    int dof = bd_rfe_belt_dof(sim);
+    if (dof < R->belt_dof_min)
+        R->belt_dof_min = dof;
+    if (dof > R->belt_dof_max)
+        R->belt_dof_max = dof;
+}
+
+/* material lands on the elements at the feed point (lumped/material.c);
+ * on a section, the section takes their momentum (what that costs in
+ * kinetic energy booked as dissipated) */
+static void retake(bd_sim *sim, int w)
+{
+    const bd_rfe_window *W = &bd_rfe_model_of(sim)->windows[w];
+    bd_rfe_section *S = &bd_rfe_of(sim)->sections[w];
+    const int n = sim->model->n;
+    double ke = 0.0;
+    for (int q = 0, i = S->first; q < S->count; q++, i = bd_node_next(i, n))
+        ke += sim->mass[i] * (sim->vx[i] * sim->vx[i] + sim->vy[i] * sim->vy[i]);
+    take_momentum(sim, W, S);
+    for (int q = 0, i = S->first; q < S->count; q++, i = bd_node_next(i, n)) {
+        ke -= sim->mass[i] * (sim->vx[i] * sim->vx[i] + sim->vy[i] * sim->vy[i]);
+        sim->dt_per_mass[i] = 0.0;
+    }
+    sim->energy.dissipated += 0.5 * ke;
+}
+
+void bd_rfe_material(bd_sim *sim)
+{
+    bd_lumped_material(sim);
+    bd_rfe *R = bd_rfe_of(sim);
+    if (!R->tied || !sim->has_feed)
+        return;
+    int e = sim->feed.element, j = bd_node_next(e, sim->model->n);
+    if (R->sec[e] >= 0)
+        retake(sim, R->sec[e]);
+    if (R->sec[j] >= 0 && R->sec[j] != R->sec[e])
+        retake(sim, R->sec[j]);
+}
+
+void bd_rfe_topology(const bd_sim *sim, bd_belt_topology *out)
+{
+    const bd_rfe *R = bd_rfe_of(sim);
+    const bd_rfe_model *RM = bd_rfe_model_of(sim);
+    out->windows = RM->window_count;
+    out->window_length = 0.0;
+    for (int w = 0; w < RM->window_count; w++)
+        out->window_length += RM->windows[w].b - RM->windows[w].a;
+    out->dof_now = bd_rfe_belt_dof(sim);
+    out->dof_min = R->belt_dof_min < out->dof_now ? R->belt_dof_min : out->dof_now;
+    out->dof_max = R->belt_dof_max > out->dof_now ? R->belt_dof_max : out->dof_now;
+    out->joined = R->joined;
+    out->left = R->left;
+    out->lost_J = R->booked_lost;
+    out->gained_J = R->booked_gained;
+}
