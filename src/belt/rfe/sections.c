@@ -649,7 +649,8 @@ static double leave(bd_sim *sim, int w, int end)
     /* its SDE to the section and its alignment count again (a section's
      * end keeps the turn it had when it joined) */
     int k = end == 0 ? S->first : last_of(S, n);
-    int from = bd_node_prev(bd_node_prev(k, n), n), to = bd_node_next(bd_node_next(k, n), n);
+    int from = end == 0 ? (k - RELAX_JOIN - 1 + n) % n : bd_node_prev(bd_node_prev(k, n), n);
+    int to = end == 0 ? bd_node_next(bd_node_next(k, n), n) : (k + RELAX_JOIN + 1) % n;
     double e0 = local_energy(sim, from, to);
     if (end == 0) {
         free_node(sim, S->first);
@@ -662,10 +663,14 @@ static double leave(bd_sim *sim, int w, int end)
         S->v2 -= r * (S->v2 - S->v1);
     }
     S->count--;
-    /* the new end turned so that its SDE to the element that left has no
-     * shear (as join turns a new end) */
-    int e = end == 0 ? S->first : last_of(S, n);
-    reflect_turn(sim, e, k);
+    /* the element that left, and the free belt beyond it, turned to the
+     * least energy with the section's new end (along its line, as inside
+     * it) held: a section's end that joined it from the free belt keeps
+     * the turn it came with, and carried off unrelaxed it would swing */
+    if (end == 0)
+        bd_rfe_relax_turns(sim, (k - RELAX_JOIN + 1 + n) % n, RELAX_JOIN);
+    else
+        bd_rfe_relax_turns(sim, k, RELAX_JOIN);
     R->left++;
     return e0 - local_energy(sim, from, to);
 }
