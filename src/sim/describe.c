@@ -141,6 +141,27 @@ void bd_sim_describe(const bd_sim *sim, FILE *f)
                 def->belt.shear_stiffness > 0.0 ? "" : " (10 EA)", sim->model->EI);
     }
     fprintf(f, "degrees of freedom: %d (%s)\n", dof, sim->model->belt->dof_text);
+    if (sim->model->belt->topology) {
+        /* the belt's long sections (belt.h): where they stand, what the
+         * belt's degrees of freedom fall to with every window full (an
+         * element 3, a section 2) */
+        bd_belt_topology top;
+        sim->model->belt->topology(sim, &top);
+        if (!def->belt.group_sections)
+            fprintf(f, "variable topology: off (belt.variable_topology.enabled: false)\n");
+        else if (top.windows == 0)
+            fprintf(f, "variable topology: no window for a long section (none on a straight "
+                       "span on its idlers, one row of idlers, bays of 4 elements or more, two "
+                       "bays and five elements clear of its pulleys and curves)\n");
+        else {
+            double tied = top.window_length / sim->model->l0;
+            fprintf(f, "variable topology: %d windows, %.1f m of the %.1f m belt in long "
+                       "sections of up to %.4g m; belt degrees of freedom about %.0f with "
+                       "them full\n",
+                    top.windows, top.window_length, sim->model->path.length,
+                    def->belt.group_length, 3.0 * (sim->model->n - tied) + 2.0 * top.windows);
+        }
+    }
     fprintf(f, "stable time step: %.4g s, limited by the %s\n", sim->model->dt_limit,
             bd_time_step_limit_name(sim->model->limit_kind));
     fprintf(f, "time step used: %.4g s (%s)\n", sim->model->dt,
