@@ -65,6 +65,9 @@
 /* free elements beside a section's end whose turns are relaxed when it is
  * first tied (build.c bd_rfe_relax_turns) */
 #define RELAX_AROUND 24
+/* elements beside an idler its contact reaches, kept as a window is
+ * first tied */
+#define IDLER_REACH 3
 #define RELAX_JOIN 8
 /* an element leaves a section this many elements beyond its window's end */
 #define LEAVE_BEYOND 0.5
@@ -754,6 +757,12 @@ static double lay_half_bay(bd_sim *sim, const bd_rfe_window *W, int end_node, in
             break;
         k0 = nb;
     }
+    /* the elements that the idler's contact reaches (2.5 elements from
+     * its roll, the smoothed line's pieces of idler_contact.c) kept where
+     * they are: moved, they sank into the roll, whose stiff contact threw
+     * them off (generated seed 5, 8 m/s) */
+    for (int r = 0; r < IDLER_REACH && k0 != end_node; r++)
+        k0 = dir < 0 ? bd_node_next(k0, n) : bd_node_prev(k0, n);
     double sp = along(W, sim->x[k0], sim->y[k0]), op = offset(W, sim->x[k0], sim->y[k0]);
     /* where the element last walked stood before it moved */
     double kx = sim->x[k0], ky = sim->y[k0];
