@@ -62,9 +62,9 @@
 #include "base/alloc.h"
 #include "laws/rolling.h"
 
-/* free elements beside a section's end whose turns are relaxed when it is
- * first tied (build.c bd_rfe_relax_turns) */
-#define RELAX_AROUND 24
+/* free elements beyond the half bay beside a section's end whose turns
+ * are relaxed when it is first tied (build.c bd_rfe_relax_turns) */
+#define RELAX_AROUND 8
 /* elements beside an idler its contact reaches, kept as a window is
  * first tied */
 #define IDLER_REACH 3
@@ -841,8 +841,11 @@ static void tie_all(bd_sim *sim)
         const bd_rfe_section *S = &R->sections[w];
         if (S->count < 2)
             continue;
-        bd_rfe_relax_turns(sim, (S->first - RELAX_AROUND + n) % n, RELAX_AROUND);
-        bd_rfe_relax_turns(sim, bd_node_next(last_of(S, n), n), RELAX_AROUND);
+        /* the whole half bay laid beside a free end, and a few beyond */
+        const bd_rfe_window *W = &RM->windows[w];
+        int around = (int)ceil(0.5 * W->bay / sim->model->l0) + RELAX_AROUND;
+        bd_rfe_relax_turns(sim, (S->first - around + n) % n, around);
+        bd_rfe_relax_turns(sim, bd_node_next(last_of(S, n), n), around);
     }
     book(sim, e0 - belt_energy(sim));
     R->tied = 1;
