@@ -207,6 +207,10 @@ typedef struct bd_energy {
      * force changing: −ΔF·q at the middle of the interval it changed
      * over), not taken back */
     double step_input_at_t;
+    /* J, what the step dissipated and put in that belongs to the state
+     * after it, t + Δt (a change of the belt's topology at the step's end,
+     * belt/rfe/sections.c): not counted at t, then wholly */
+    double step_dissipated_after, step_input_after;
     double initial;        /* E_kin + E_pot at t = 0 */
     /* J, what the contacts' penalty springs (the belt on pulley shells and
      * idlers) hold at t, written by the forces phase (0 for a belt that

@@ -67,8 +67,9 @@ void bd_energy_update_balance(bd_sim *sim)
 void bd_energy_at_t(const bd_energy *en, double *dissipated, double *input)
 {
     /* net of what the contacts' springs took in since t = 0 (bd_energy) */
-    *dissipated = en->dissipated - 0.5 * en->step_dissipated - (en->springs - en->springs0);
-    *input = en->input - 0.5 * en->step_input;
+    *dissipated = en->dissipated - 0.5 * en->step_dissipated - en->step_dissipated_after
+                - (en->springs - en->springs0);
+    *input = en->input - 0.5 * en->step_input - en->step_input_after;
 }
 
 double bd_element_s(const bd_sim *sim, int e)

@@ -152,6 +152,7 @@ int bd_step_once(bd_sim *sim)
 
     const double dissipated0 = en->dissipated, input0 = en->input;
     en->step_input_at_t = 0.0;
+    en->step_dissipated_after = en->step_input_after = 0.0;
     /* potential energy at t (positions before the update) when asked */
     if (sim->want_energy || sim->energy_every_step)
         en->potential = bd_energy_potential(sim);
@@ -187,8 +188,8 @@ int bd_step_once(bd_sim *sim)
     /* material lands, rides and leaves */
     if (sim->model->material_mpl > 0.0)
         belt->material(sim);
-    en->step_dissipated = en->dissipated - dissipated0;
-    en->step_input = en->input - input0 - en->step_input_at_t;
+    en->step_dissipated = en->dissipated - dissipated0 - en->step_dissipated_after;
+    en->step_input = en->input - input0 - en->step_input_at_t - en->step_input_after;
 
     /* time, then the sensors at the new time; held at 0 while stabilizing
      * (seed 001 §6.2: time is there an iteration parameter, stabilize.c) */

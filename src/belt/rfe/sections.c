@@ -504,14 +504,20 @@ static double local_energy(const bd_sim *sim, int from, int to)
     return e;
 }
 
+/* the energy a topology change took out (lost > 0) or put in: a change
+ * of the state the step ends in, counted from then on (not spread over
+ * the step as the forces' work is, sim/energy.c bd_energy_at_t) */
 static void book(bd_sim *sim, double lost)
 {
     bd_rfe *R = bd_rfe_of(sim);
+    bd_energy *en = &sim->energy;
     if (lost >= 0.0) {
-        sim->energy.dissipated += lost;
+        en->dissipated += lost;
+        en->step_dissipated_after += lost;
         R->booked_lost += lost;
     } else {
-        sim->energy.input -= lost;
+        en->input -= lost;
+        en->step_input_after -= lost;
         R->booked_gained -= lost;
     }
 }
@@ -771,6 +777,16 @@ static double lay_half_bay(bd_sim *sim, const bd_rfe_window *W, int end_node, in
     for (int r = 0; r < IDLER_REACH && k0 != end_node; r++)
         k0 = dir < 0 ? bd_node_next(k0, n) : bd_node_prev(k0, n);
     double sp = along(W, sim->x[k0], sim->y[k0]), op = offset(W, sim->x[k0], sim->y[k0]);
+    /* From there to the window's end a cubic (Hermite) that leaves the
+     * belt as it lies there (its offset and slope, the latter from the
+     * element behind) and reaches the line at the half bay's slope there,
+     * κ·(σ_end − σ_I): no kink where the laying begins (a parabola begun
+     * there kinked the belt by 7–20 mrad, and the stiff shear threw the
+     * elements off) */
+    int kb = dir < 0 ? bd_node_prev(k0, n) : bd_node_next(k0, n);
+    double sb = along(W, sim->x[kb], sim->y[kb]), ob = offset(W, sim->x[kb], sim->y[kb]);
+    const double s0 = sp, o0 = op, span = s_end - s0;
+    const double m0 = sp != sb ? (op - ob) / (sp - sb) : 0.0, m1 = kappa * (s_end - s_idler);
     /* where the element last walked stood before it moved */
     double kx = sim->x[k0], ky = sim->y[k0];
     for (int k = k0; k != end_node;) {
@@ -780,7 +796,14 @@ static double lay_half_bay(bd_sim *sim, const bd_rfe_window *W, int end_node, in
         ky = sim->y[nx];
         double s = along(W, sim->x[nx], sim->y[nx]), o = 0.0;
         for (int it = 0; it < 4; it++) {
-            o = (s - s_end) * dir > 0.0 ? -kappa * (s - s_idler) * (s_end - s) : 0.0;
+            double t = span != 0.0 ? (s - s0) / span : 1.0;
+            if (t < 1.0) {
+                double t2 = t * t, t3 = t2 * t;
+                o = (2.0 * t3 - 3.0 * t2 + 1.0) * o0 + (t3 - 2.0 * t2 + t) * span * m0
+                  + (t3 - t2) * span * m1;
+            } else {
+                o = 0.0;
+            }
             double h = L * L - (o - op) * (o - op);
             s = sp - dir * (h > 0.0 ? sqrt(h) : 0.0);
         }
