@@ -88,8 +88,8 @@ void bd_rfe_relax_turns(bd_sim *sim, int first, int count)
     const int n = sim->model->n, loop = count >= n;
     if (loop)
         count = n;
-    /* SDE q − 1 + ... : local SDE k (k = 0 .. count) is the one before
-     * local element k; the whole loop has count of them */
+    /* local SDE k is the one before local element k, SDE first − 1 + k
+     * (count + 1 of them; round the whole loop, n) */
     const int sdes = loop ? n : count + 1;
     /* a few elements (a section's end, in the step) on the stack, the
      * whole loop (the build) on the heap */
@@ -102,9 +102,7 @@ void bd_rfe_relax_turns(bd_sim *sim, int first, int count)
     for (size_t k = 0; k < 5 * stride; k++)
         base[k] = 0.0;
     for (int k = 0; k < sdes; k++) {
-        int e = ((first - 1 + k) % n + n) % n;
-        if (loop)
-            e = (first + k + n - 1) % n;
+        int e = (first + k + n - 1) % n;
         g[k] = bd_rfe_sde_angles(sim, e, &bt[k]);
         S[k] = R->sec[e] >= 0 && R->sec[bd_node_next(e, n)] >= 0 ? 0.0 : RM->k_shear;
     }

@@ -30,9 +30,10 @@
  * Waves cross it at √(EA/m′) when long against it (a two-node element's
  * dispersion, as the axial belt's); group_length sets where that stops.
  *
- * **The idlers it carries** (those inside the window: the window ends
- * mid-bay, half a bay from any idler, so no idler ever passes from
- * contact to being carried or back) turn with the belt (stuck) and
+ * **The idlers it carries** (those inside the window more than two
+ * elements from the section's ends: with its ends in mid-bay, half a bay
+ * from any idler, all of them, and no idler passes from contact to being
+ * carried or back) turn with the belt (stuck) and
  * resist it by rr·N, N the weight of belt and load they carry normal to
  * the span (sim/running_law.c's share): the model's own law. With the
  * rolls' inertia in the step (central differences, the stick impulse in
@@ -43,16 +44,20 @@
  * the belt at v_k, on the roll at ω·R: no work while they roll together).
  *
  * **Joining and leaving.** An element leaving at an end keeps its place
- * and velocity, and the section's others keep theirs: nothing changes.
- * An element joining is put on the line where its SDE to the free belt
- * keeps its length, the section's elements are spaced evenly again and
- * its speeds taken from their momentum; what that changes in the
+ * and velocity, and the section's others keep theirs. An element joining
+ * is put on the line where its SDE to the free belt keeps its length,
+ * the section's elements are spaced evenly again and its speeds taken
+ * from their momentum. The section's new end is turned so that its SDE
+ * to the free belt has no shear, and the free belt's turns beside it
+ * relax (with an element that leaves likewise). What that changes in the
  * mechanical energy (the joining element lifted out of its sag by about
- * a millimetre, its speed across the line) is measured over the section
- * and the SDEs at its ends and booked: a loss as dissipated, a gain as
- * input (as the moving-node belt books its material's reload). The free
- * belt's end bay is held by the section's end at the height of the idler
- * tops, a support in mid-bay: that bay's half sags as a half bay. */
+ * a millimetre, its speed across the line, the turns) is measured over
+ * the elements concerned and booked, a loss as dissipated and a gain as
+ * input (as the moving-node belt books its material's reload), counted
+ * from the state the step ends in. The free belt's end bay is held by the
+ * section's end at the height of the idler tops, a support in mid-bay:
+ * that bay's half sags as a half bay. docs/physics.md §15 has the
+ * measurements behind each of these choices. */
 #include "belt/rfe/rfe.h"
 
 #include <math.h>
