@@ -16,9 +16,9 @@
 #   element (2346) to below a quarter of that, and history.csv's belt_dof
 #   ends where summary.json says.
 # - Tying and joining book what they change in the mechanical energy; the
-#   balance holds within 0.2 % (measured 6.6e-4; every element free
+#   balance holds within 0.2 % (measured 8.4e-4; every element free
 #   1.2e-3) and what they booked stays below 1 % of the drive's work
-#   (measured 135 J of 28.5 kJ).
+#   (measured 137 J of 28.5 kJ).
 # - Against the same belt with every element free (enabled: false):
 #   peak tension, the tight side's peak at the drive and the steady
 #   running force within 2 % (measured +0.004 %, −1.5 %, −1.7 %). A
