@@ -44,28 +44,45 @@
  * couplings), its response z to the coupling with element 0, and the
  * reciprocal of row 0's Schur complement (positive: the matrix is positive
  * definite). n ≥ 8, the layout's least (belt/lumped/layout.c). */
+/* the system's entries for the step dt: row i's diagonal, and the
+ * coupling o of neighbouring rows (the SDEs' ¼k_γ ± k_β and dashpots, the
+ * alignment's on the diagonal) */
+typedef struct rows {
+    double kq, cq, own, o;
+} rows;
+
+static rows rows_for(const bd_rfe_model *RM, double dt)
+{
+    rows w;
+    w.kq = 0.25 * dt * dt;
+    w.cq = 0.5 * dt;
+    w.own = w.kq * (0.25 * RM->k_shear + RM->k_bend) + w.cq * (0.25 * RM->c_shear + RM->c_bend);
+    w.o = w.kq * (0.25 * RM->k_shear - RM->k_bend) + w.cq * (0.25 * RM->c_shear - RM->c_bend);
+    return w;
+}
+
+static inline double diag(const bd_rfe_model *RM, const rows *w, int i)
+{
+    return RM->inertia + 2.0 * w->own + w->kq * RM->k_align[i] + w->cq * RM->c_align[i];
+}
+
 static void factor(bd_rfe *R, const bd_rfe_model *RM, int n, double dt)
 {
-    const double kq = 0.25 * dt * dt, cq = 0.5 * dt;
-    const double own = kq * (0.25 * RM->k_shear + RM->k_bend)
-                     + cq * (0.25 * RM->c_shear + RM->c_bend);
-    const double o = kq * (0.25 * RM->k_shear - RM->k_bend)
-                   + cq * (0.25 * RM->c_shear - RM->c_bend);
-    const double *ka = RM->k_align, *kc = RM->c_align;
+    const rows w = rows_for(RM, dt);
+    const double o = w.o;
     double *inv = R->rinv, *cp = R->rcp, *z = R->rz;
     const int last = n - 1;
-#define DIAG(i) (RM->inertia + 2.0 * own + kq * ka[i] + cq * kc[i])
-    inv[1] = 1.0 / DIAG(1);
+    inv[1] = 1.0 / diag(RM, &w, 1);
     cp[1] = o * inv[1];
     z[1] = -o * inv[1];
     for (int k = 2; k <= last; k++) {
-        inv[k] = 1.0 / (DIAG(k) - o * cp[k - 1]);
+        inv[k] = 1.0 / (diag(RM, &w, k) - o * cp[k - 1]);
         cp[k] = o * inv[k];
         z[k] = ((k == last ? -o : 0.0) - o * z[k - 1]) * inv[k];
     }
     for (int k = last - 1; k >= 1; k--)
         z[k] -= cp[k] * z[k + 1];
-    R->rs0 = 1.0 / (DIAG(0) + o * (z[1] + z[last]));
+    R->rs0 = 1.0 / (diag(RM, &w, 0) + o * (z[1] + z[last]));
     R->rdt = dt;
     R->ro = o;
 }
@@ -75,16 +92,12 @@ static void factor(bd_rfe *R, const bd_rfe_model *RM, int n, double dt)
  * ends, by Thomas' algorithm (factors into the same arrays, by element) */
 static void factor_runs(bd_rfe *R, const bd_rfe_model *RM, int n, double dt)
 {
-    const double kq = 0.25 * dt * dt, cq = 0.5 * dt;
-    const double own = kq * (0.25 * RM->k_shear + RM->k_bend)
-                     + cq * (0.25 * RM->c_shear + RM->c_bend);
-    const double o = kq * (0.25 * RM->k_shear - RM->k_bend)
-                   + cq * (0.25 * RM->c_shear - RM->c_bend);
-    const double *ka = RM->k_align, *kc = RM->c_align;
+    const rows w = rows_for(RM, dt);
+    const double o = w.o;
     for (int r = 0; r < R->run_n; r++) {
         double cp = 0.0;
         for (int q = 0, k = R->run_first[r]; q < R->run_count[r]; q++, k = bd_node_next(k, n)) {
-            R->rinv[k] = 1.0 / (DIAG(k) - o * cp);
+            R->rinv[k] = 1.0 / (diag(RM, &w, k) - o * cp);
             cp = R->rcp[k] = o * R->rinv[k];
         }
     }
@@ -113,7 +126,16 @@ static void solve_runs(bd_rfe *R, int n, double dt)
         }
     }
 }
-#undef DIAG
+
+/* −½C_φφ·Δω of element i (b before, a after it) into its non-conservative
+ * moment: the dashpots' moment at the mid-step rate */
+static inline void dashpot_share(bd_rfe *R, const bd_rfe_model *RM, int i, int b, int a)
+{
+    const double hc_own = 0.5 * (0.25 * RM->c_shear + RM->c_bend);
+    const double hc_cross = 0.5 * (0.25 * RM->c_shear - RM->c_bend);
+    const double *x = R->rb;
+    R->tqn[i] -= (2.0 * hc_own + 0.5 * RM->c_align[i]) * x[i] + hc_cross * (x[b] + x[a]);
+}
 
 /* Δω into R->rb for the moments tq at t (forces.c), and the dashpots'
  * moment at the mid-step rate added to the non-conservative moment tqn:
@@ -128,12 +150,9 @@ void bd_rfe_rotation_implicit(bd_sim *sim)
         if (R->rdt != dt)
             factor_runs(R, RM, n, dt);
         solve_runs(R, n, dt);
-        const double hc_own = 0.5 * (0.25 * RM->c_shear + RM->c_bend);
-        const double hc_cross = 0.5 * (0.25 * RM->c_shear - RM->c_bend);
         for (int r = 0; r < R->run_n; r++)
             for (int q = 0, i = R->run_first[r]; q < R->run_count[r]; q++, i = bd_node_next(i, n))
-                R->tqn[i] -= (2.0 * hc_own + 0.5 * RM->c_align[i]) * R->rb[i]
-                           + hc_cross * (R->rb[bd_node_prev(i, n)] + R->rb[bd_node_next(i, n)]);
+                dashpot_share(R, RM, i, bd_node_prev(i, n), bd_node_next(i, n));
         return;
     }
     if (R->rdt != dt)
@@ -153,12 +172,8 @@ void bd_rfe_rotation_implicit(bd_sim *sim)
     for (int k = 1; k <= last; k++)
         x[k] += s0 * z[k];
 
-    const double hc_own = 0.5 * (0.25 * RM->c_shear + RM->c_bend);
-    const double hc_cross = 0.5 * (0.25 * RM->c_shear - RM->c_bend);
-    const double *restrict kc = RM->c_align;
-    double *restrict tqn = R->tqn;
-    tqn[0] -= (2.0 * hc_own + 0.5 * kc[0]) * x[0] + hc_cross * (x[last] + x[1]);
+    dashpot_share(R, RM, 0, last, 1);
     for (int i = 1; i < last; i++)
-        tqn[i] -= (2.0 * hc_own + 0.5 * kc[i]) * x[i] + hc_cross * (x[i - 1] + x[i + 1]);
-    tqn[last] -= (2.0 * hc_own + 0.5 * kc[last]) * x[last] + hc_cross * (x[last - 1] + x[0]);
+        dashpot_share(R, RM, i, i - 1, i + 1);
+    dashpot_share(R, RM, last, last - 1, 0);
 }
