@@ -144,6 +144,90 @@ void bd_lumped_forces(bd_sim *sim)
         feed_skirts(sim);
 }
 
+/* elements e0 .. e0 + count − 1 round the loop, in contiguous pieces
+ * (the one closing the loop from a copy of its two nodes, as element_pass) */
+static void element_range(bd_sim *sim, int e0, int count)
+{
+    bd_lumped *L = bd_lumped_of(sim);
+    const int n = sim->model->n, z = n - 1;
+    const bd_lumped_model *LM = bd_lumped_model_of(sim);
+    const double k = LM->k_axial, c = LM->c_axial, l0 = sim->model->l0;
+    const double *x = sim->x, *y = sim->y, *vx = sim->vx, *vy = sim->vy;
+    int e = e0, left = count < n ? count : n;
+    while (left > 0) {
+        if (e == z) {
+            double cx[2] = {x[z], x[0]}, cy[2] = {y[z], y[0]};
+            double cvx[2] = {vx[z], vx[0]}, cvy[2] = {vy[z], vy[0]};
+            elements(1, cx, cy, cvx, cvy, k, c, l0, L->ux + z, L->uy + z, L->len + z,
+                     L->td + z, sim->tension + z);
+            e = 0;
+            left--;
+            continue;
+        }
+        int piece = z - e < left ? z - e : left;
+        elements(piece, x + e, y + e, vx + e, vy + e, k, c, l0, L->ux + e, L->uy + e, L->len + e,
+                 L->td + e, sim->tension + e);
+        e += piece;
+        left -= piece;
+    }
+}
+
+/* nodes first .. first + count − 1 round the loop, as the node pass */
+static void node_range(bd_sim *sim, int first, int count)
+{
+    const bd_lumped *L = bd_lumped_of(sim);
+    const int n = sim->model->n;
+    const double g = sim->model->gravity;
+    const double *ux = L->ux, *uy = L->uy, *T = sim->tension, *td = L->td, *m = sim->mass;
+    for (int q = 0, i = first, b = bd_node_prev(first, n); q < count && q < n;
+         q++, b = i, i = bd_node_next(i, n)) {
+        sim->fx[i] = T[i] * ux[i] - T[b] * ux[b];
+        sim->fy[i] = -m[i] * g + T[i] * uy[i] - T[b] * uy[b];
+        sim->fnx[i] = td[i] * ux[i] - td[b] * ux[b];
+        sim->fny[i] = td[i] * uy[i] - td[b] * uy[b];
+    }
+}
+
+/* the tension extremes (bd_tension_extremes) of the elements of the runs */
+static void extremes_range(bd_sim *sim, int e0, int count, double *hi, double *lo, int *nan)
+{
+    const int n = sim->model->n;
+    const double *T = sim->tension;
+    for (int q = 0, e = e0; q < count && q < n; q++, e = bd_node_next(e, n)) {
+        double t = T[e];
+        *nan |= !(t == t);
+        *hi = t > *hi ? t : *hi;
+        *lo = t < *lo ? t : *lo;
+    }
+}
+
+/* The forces phase on runs of nodes only (the rfe belt's free belt and
+ * the ends of its long sections, belt/rfe/sections.c): run r's nodes
+ * first[r] .. first[r] + count[r] − 1 round the loop, with the elements
+ * from the one before its first node to its last node's; no other node or
+ * element is written. The step's tension extremes are those of these
+ * elements; the caller adds what it holds elsewhere. No bending (the rfe
+ * belt's is its own). */
+void bd_lumped_forces_runs(bd_sim *sim, const int *first, const int *count, int runs)
+{
+    const int n = sim->model->n;
+    for (int r = 0; r < runs; r++)
+        element_range(sim, bd_node_prev(first[r], n), count[r] + 1);
+    bd_lumped_wrap_elements(sim);
+    for (int r = 0; r < runs; r++)
+        node_range(sim, first[r], count[r]);
+    bd_lumped_wrap_forces(sim);
+    double hi = -INFINITY, lo = INFINITY;
+    int nan = 0;
+    for (int r = 0; r < runs; r++)
+        extremes_range(sim, bd_node_prev(first[r], n), count[r] + 1, &hi, &lo, &nan);
+    sim->step_tension_max = hi;
+    sim->step_tension_min = lo;
+    sim->step_tension_nan = nan;
+    if (sim->model->feed_individual)
+        feed_skirts(sim);
+}
+
 /* nodes: velocities to t + Δt/2, positions to t + Δt (seed 001 eqs
  * 4.58–4.60); the kinetic energy and the non-conservative work are booked
  * with mid-step velocities v(t) = (v⁻ + v⁺)/2, for which the scheme's

@@ -158,6 +158,7 @@ double bd_lumped_support_inertia(const bd_sim *sim, double R, double J);
 
 /* forces.c: elastic, damping, bending, gravity forces on nodes; energy */
 void bd_lumped_forces(bd_sim *sim);
+void bd_lumped_forces_runs(bd_sim *sim, const int *first, const int *count, int runs);
 void bd_lumped_integrate(bd_sim *sim, double *ke, double *w_nc);
 /* nodes first .. first + count − 1 (no wrap round the loop) to t + Δt as
  * bd_lumped_integrate moves them, each node's mid-step power and twice its

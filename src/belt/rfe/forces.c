@@ -128,8 +128,8 @@ void bd_rfe_forces(bd_sim *sim)
 {
     const int n = sim->model->n;
     const bd_rfe *R = bd_rfe_of(sim);
-    bd_lumped_forces(sim);
     if (!bd_rfe_some_tied(sim)) {
+        bd_lumped_forces(sim);
         for (int e = 0; e + 1 < n; e++)
             sde(sim, e, e + 1);
         sde(sim, n - 1, 0);
@@ -141,10 +141,13 @@ void bd_rfe_forces(bd_sim *sim)
             body(sim, i, i - 1, bd_node_next(i, n));
         return;
     }
-    /* with sections (sections.c): the SDEs with a free element, the free
+    /* with sections (sections.c): the lumped chain's forces on the free
+     * elements and the sections' ends (and a full section's every one),
+     * the SDEs with a free element, the free
      * elements' alignment, and the free elements and the sections' ends
      * they pull; inside a section all of it is 0 (kept so from when its
      * elements were tied) */
+    bd_rfe_sections_forces(sim);
     for (int r = 0; r < R->run_n; r++) {
         const int f = R->run_first[r], c = R->run_count[r];
         for (int q = -1, e = bd_node_prev(f, n); q < c; q++, e = bd_node_next(e, n))

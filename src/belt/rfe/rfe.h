@@ -32,6 +32,8 @@ typedef struct bd_rfe_window {
     int before, after;        /* the window that ends where it begins, and the one
                                  that begins where it ends, or −1 */
     int idler_first, idler_count;  /* the idlers it carries (model idler_list) */
+    int has_feed;             /* the feed point lies in it (its section is
+                                 summed element by element: mass lands there) */
 } bd_rfe_window;
 
 /* the long section on window w now: elements first .. first + count − 1
@@ -46,6 +48,11 @@ typedef struct bd_rfe_section {
      * rolls' inertia as mass at its ends (K, kg), their momentum (P,
      * kg·m/s) and their rolling resistance (F, N) */
     double k11, k12, k22, p1, p2, f1, f2;
+    /* its mass matrix Σ m_j·N_j·N_jᵀ, kept from when it last changed */
+    double m11, m12, m22;
+    /* step (forces): summed element by element (the feed in its window,
+     * or an idler of it not carried), else from its ends and its mass */
+    int full;
 } bd_rfe_section;
 
 /* compiled data (behind model->belt_model) */
@@ -106,6 +113,11 @@ typedef struct bd_rfe {
     int tied;                 /* the sections have been tied */
     int *run_first, *run_count;   /* [n] */
     int run_n;
+    /* the nodes whose forces the step takes (the free ones, the sections'
+     * ends, a full section's every one), in runs; rebuilt when stale */
+    int *live_first, *live_count; /* [n] */
+    int live_n, live_stale;
+    int *order;               /* [window_count] the tied sections round the loop */
     /* what the topology did (summary.json) */
     long joined, left;
     double booked_lost, booked_gained;   /* J, the events' energy change */
@@ -161,6 +173,9 @@ void bd_rfe_sections_alloc(bd_sim *sim);
 void bd_rfe_sections_free(bd_rfe *R);
 void bd_rfe_sections_free_model(bd_rfe_model *RM);
 void bd_rfe_sections_clone(bd_sim *dst, const bd_sim *src);
+/* the forces phase's lumped part with sections: the idlers they carry,
+ * the nodes it takes */
+void bd_rfe_sections_forces(bd_sim *sim);
 /* the supports phase: the idlers the sections carry, the others' contacts */
 void bd_rfe_supports(bd_sim *sim);
 /* the integrate phase for the sections and the idlers they carry */

@@ -210,6 +210,14 @@ void bd_rfe_sections_build(bd_sim *sim, bd_rfe_model *RM)
             }
         }
         W->idler_count = listed - W->idler_first;
+        /* the loading zone (a bay either side of the feed point): mass
+         * lands there every step, the skirts rub */
+        if (def->material.present) {
+            const double *f = sim->feed.p;
+            double a = along(W, f[0], f[1]);
+            double off = (f[1] - W->p0[1]) * W->d[0] - (f[0] - W->p0[0]) * W->d[1];
+            W->has_feed = a > W->a - W->bay && a < W->b + W->bay && fabs(off) < 0.5 * W->bay;
+        }
     }
 }
 
@@ -230,6 +238,10 @@ void bd_rfe_sections_alloc(bd_sim *sim)
     R->run_first[0] = 0;
     R->run_count[0] = (int)n;
     R->run_n = 1;
+    R->live_first = bd_xcalloc(n, sizeof *R->live_first);
+    R->live_count = bd_xcalloc(n, sizeof *R->live_count);
+    R->live_stale = 1;
+    R->order = bd_xcalloc((size_t)RM->window_count + 1, sizeof *R->order);
     R->belt_dof_min = R->belt_dof_max = 3 * (int)n;
 }
 
@@ -240,6 +252,9 @@ void bd_rfe_sections_free(bd_rfe *R)
     free(R->carried);
     free(R->run_first);
     free(R->run_count);
+    free(R->live_first);
+    free(R->live_count);
+    free(R->order);
 }
 
 void bd_rfe_sections_free_model(bd_rfe_model *RM)
@@ -261,6 +276,12 @@ void bd_rfe_sections_clone(bd_sim *dst, const bd_sim *src)
     D->carried = bd_xdup(S->carried, (size_t)src->model->idler_count + 1, sizeof *D->carried);
     D->run_first = bd_xdup(S->run_first, n, sizeof *D->run_first);
     D->run_count = bd_xdup(S->run_count, n, sizeof *D->run_count);
+    D->live_first = bd_xdup(S->live_first, n, sizeof *D->live_first);
+    D->live_count = bd_xdup(S->live_count, n, sizeof *D->live_count);
+    D->live_n = S->live_n;
+    D->live_stale = S->live_stale;
+    D->order = bd_xdup(S->order, (size_t)bd_rfe_model_of(src)->window_count + 1,
+                       sizeof *D->order);
     D->tied = S->tied;
     D->run_n = S->run_n;
     D->joined = S->joined;
@@ -289,13 +310,103 @@ static inline double idler_xi(const bd_sim *sim, const bd_rfe_window *W,
     return (along(W, id->tr.p[0], id->tr.p[1]) - S->s1) / (S->s2 - S->s1);
 }
 
-/* the supports phase: the idlers a section carries (their sums for the
- * step), every other idler pressing on the belt as on the lumped belt. A
- * section carries the idlers of its window with two elements of it on
- * either side: all of them while its ends stand where the window's are
- * (in mid-bay, half a bay from the nearest idler); should the belt not
- * join it (an element too far off the line, sections.c join), the idlers
- * beyond its ends press on the free belt again. */
+/* the forces phase: which idlers each section carries (those of its
+ * window more than two elements inside its ends: all of them while its
+ * ends stand where the window's are, in mid-bay half a bay from the
+ * nearest idler; should the belt not join it, an element too far off the
+ * line, the idlers beyond its ends press on the free belt again), and
+ * whether it is summed element by element (full): the feed in its window,
+ * or an idler of its window pressing on it. Else only its ends take
+ * forces: an idler outside its window stands at least half a bay less
+ * half an element (LEAVE_BEYOND) from its end, 1.5 elements or more, and
+ * its contact's three nodes (idler_contact.c) reach its end, not the
+ * element inside it. */
+static void carry(bd_sim *sim)
+{
+    bd_rfe *R = bd_rfe_of(sim);
+    const bd_rfe_model *RM = bd_rfe_model_of(sim);
+    const double l0 = sim->model->l0;
+    for (int i = 0; i < sim->model->idler_count; i++)
+        R->carried[i] = -1;
+    for (int w = 0; w < RM->window_count; w++) {
+        const bd_rfe_window *W = &RM->windows[w];
+        bd_rfe_section *S = &R->sections[w];
+        int full = W->has_feed;
+        if (S->count >= 2) {
+            const double inner = 2.0 * l0 / (S->s2 - S->s1);
+            for (int q = 0; q < W->idler_count; q++) {
+                int i = RM->idler_list[W->idler_first + q];
+                double xi = idler_xi(sim, W, S, i);
+                if (xi < inner || 1.0 - xi < inner)
+                    full = 1;
+                else
+                    R->carried[i] = w;
+            }
+        }
+        if (full != S->full) {
+            S->full = full;
+            R->live_stale = 1;
+        }
+    }
+}
+
+/* the tied sections round the loop, by their first element */
+static int loop_order(bd_rfe *R, int windows, int aggregated_only)
+{
+    int k = 0;
+    for (int w = 0; w < windows; w++) {
+        const bd_rfe_section *S = &R->sections[w];
+        if (S->count < 2 || (aggregated_only && (S->count < 3 || S->full)))
+            continue;
+        /* insertion: the order changes little from call to call */
+        int at = k++;
+        while (at > 0 && R->sections[R->order[at - 1]].first > S->first) {
+            R->order[at] = R->order[at - 1];
+            at--;
+        }
+        R->order[at] = w;
+    }
+    return k;
+}
+
+/* the nodes the forces phase takes, in runs: everything but the inside of
+ * a section summed from its ends (more than two elements, not full); a
+ * run from one such section's last element to the next one's first */
+static void live_runs(bd_sim *sim)
+{
+    bd_rfe *R = bd_rfe_of(sim);
+    const int n = sim->model->n;
+    int k = loop_order(R, bd_rfe_model_of(sim)->window_count, 1);
+    R->live_n = 0;
+    if (k == 0) {
+        R->live_first[0] = 0;
+        R->live_count[0] = n;
+        R->live_n = 1;
+        return;
+    }
+    for (int q = 0; q < k; q++) {
+        const bd_rfe_section *S = &R->sections[R->order[q]];
+        const bd_rfe_section *N = &R->sections[R->order[(q + 1) % k]];
+        int a = last_of(S, n);
+        R->live_first[R->live_n] = a;
+        R->live_count[R->live_n++] = (N->first - a + n) % n + 1;
+    }
+}
+
+void bd_rfe_sections_forces(bd_sim *sim)
+{
+    bd_rfe *R = bd_rfe_of(sim);
+    carry(sim);
+    if (R->live_stale) {
+        live_runs(sim);
+        R->live_stale = 0;
+    }
+    bd_lumped_forces_runs(sim, R->live_first, R->live_count, R->live_n);
+}
+
+/* the supports phase: the idlers the sections carry (their sums for the
+ * step; which they are the forces phase found, carry), every other idler
+ * pressing on the belt as on the lumped belt */
 void bd_rfe_supports(bd_sim *sim)
 {
     bd_rfe *R = bd_rfe_of(sim);
@@ -305,24 +416,20 @@ void bd_rfe_supports(bd_sim *sim)
     }
     const bd_rfe_model *RM = bd_rfe_model_of(sim);
     const int n = sim->model->n;
-    const double g = sim->model->gravity, l0 = sim->model->l0, inv_l0 = 1.0 / l0;
-    for (int i = 0; i < sim->model->idler_count; i++)
-        R->carried[i] = -1;
+    const double g = sim->model->gravity, inv_l0 = 1.0 / sim->model->l0;
     for (int w = 0; w < RM->window_count; w++) {
         const bd_rfe_window *W = &RM->windows[w];
         bd_rfe_section *S = &R->sections[w];
         S->k11 = S->k12 = S->k22 = S->p1 = S->p2 = S->f1 = S->f2 = 0.0;
         if (S->count < 2)
             continue;
-        const double inner = 2.0 * l0 / (S->s2 - S->s1);
         for (int q = 0; q < W->idler_count; q++) {
             int i = RM->idler_list[W->idler_first + q];
+            if (R->carried[i] != w)
+                continue;
             bd_idler *id = &sim->idlers[i];
             const bd_idler_model *im = id->m;
             double xi = idler_xi(sim, W, S, i), xj = 1.0 - xi;
-            if (xi < inner || xj < inner)
-                continue;
-            R->carried[i] = w;
             /* its tracker: the element over it, from the section */
             double at = xi * (S->count - 1);
             int j = (int)at;
@@ -352,9 +459,8 @@ void bd_rfe_supports(bd_sim *sim)
     bd_lumped_idlers_except(sim, R->carried);
 }
 
-/* the sections' mass matrix: Σ m_j·N_j·N_jᵀ */
-static void mass_matrix(const bd_sim *sim, const bd_rfe_section *S, double *m11, double *m12,
-                        double *m22)
+/* the section's mass matrix: Σ m_j·N_j·N_jᵀ, kept in it */
+static void mass_matrix(const bd_sim *sim, bd_rfe_section *S)
 {
     const int n = sim->model->n;
     const double inv = 1.0 / (S->count - 1);
@@ -365,23 +471,40 @@ static void mass_matrix(const bd_sim *sim, const bd_rfe_section *S, double *m11,
         b += m * xj * xi;
         c += m * xi * xi;
     }
-    *m11 = a;
-    *m12 = b;
-    *m22 = c;
+    S->m11 = a;
+    S->m12 = b;
+    S->m22 = c;
 }
 
-/* the section's elements where its ends are, at their velocities */
+/* whether the step sums section S from its ends and its mass alone
+ * (carry): inside it, the forces phase takes no node */
+static inline int aggregated(const bd_rfe_section *S)
+{
+    return S->count >= 3 && !S->full;
+}
+
+/* the section's elements where its ends are, at their velocities; inside
+ * a section summed from its ends, the SDEs take the tension and dashpot
+ * force of its first (the forces phase took only those at its ends: all
+ * are stretched alike) */
 static void place(bd_sim *sim, const bd_rfe_window *W, const bd_rfe_section *S)
 {
     const int n = sim->model->n;
     const double inv = 1.0 / (S->count - 1), ds = S->s2 - S->s1, dv = S->v2 - S->v1;
     const double dx = W->d[0], dy = W->d[1];
+    const int inside = aggregated(S);
+    const double T = sim->tension[S->first], Td = bd_rfe_of(sim)->lumped.td[S->first];
+    double *tension = sim->tension, *td = bd_rfe_of(sim)->lumped.td;
     for (int q = 0, i = S->first; q < S->count; q++, i = bd_node_next(i, n)) {
         double xi = q * inv, s = S->s1 + xi * ds, v = S->v1 + xi * dv;
         sim->x[i] = W->p0[0] + s * dx;
         sim->y[i] = W->p0[1] + s * dy;
         sim->vx[i] = v * dx;
         sim->vy[i] = v * dy;
+        if (inside && q > 0 && q + 2 < S->count) {
+            tension[i] = T;
+            td[i] = Td;
+        }
     }
 }
 
@@ -394,7 +517,7 @@ void bd_rfe_sections_move(bd_sim *sim, double *ke_out, double *w_nc_out)
     bd_rfe *R = bd_rfe_of(sim);
     const bd_rfe_model *RM = bd_rfe_model_of(sim);
     const int n = sim->model->n;
-    const double dt = sim->model->dt;
+    const double dt = sim->model->dt, g = sim->model->gravity;
     double ke = 0.0, w_nc = 0.0;
     for (int w = 0; w < RM->window_count; w++) {
         const bd_rfe_window *W = &RM->windows[w];
@@ -403,6 +526,23 @@ void bd_rfe_sections_move(bd_sim *sim, double *ke_out, double *w_nc_out)
             continue;
         const double dx = W->d[0], dy = W->d[1], inv = 1.0 / (S->count - 1);
         double F1 = 0.0, F2 = 0.0, N1 = 0.0, N2 = 0.0, m11 = 0.0, m12 = 0.0, m22 = 0.0;
+        if (aggregated(S)) {
+            /* inside it every SDE pulls alike, T·d forward and back: the
+             * elements inside feel their weight alone, and the SDEs next
+             * to its ends pull the ends (their forces, with the free
+             * belt's, the forces phase summed); ξ = 0 at its first, 1 at
+             * its last, so Σ (1 − ξ)·m over the inside is m11 + m12 less
+             * its first's m, and Σ ξ·m is m12 + m22 less its last's */
+            const int a = S->first, b = last_of(S, n);
+            const double gd = -g * dy;
+            m11 = S->m11;
+            m12 = S->m12;
+            m22 = S->m22;
+            F1 = sim->fx[a] * dx + sim->fy[a] * dy + gd * (m11 + m12 - sim->mass[a]);
+            F2 = sim->fx[b] * dx + sim->fy[b] * dy + gd * (m12 + m22 - sim->mass[b]);
+            N1 = sim->fnx[a] * dx + sim->fny[a] * dy;
+            N2 = sim->fnx[b] * dx + sim->fny[b] * dy;
+        } else
         for (int q = 0, i = S->first; q < S->count; q++, i = bd_node_next(i, n)) {
             double xi = q * inv, xj = 1.0 - xi, m = sim->mass[i];
             double f = sim->fx[i] * dx + sim->fy[i] * dy;
@@ -534,14 +674,14 @@ static void take_momentum(bd_sim *sim, const bd_rfe_window *W, bd_rfe_section *S
 {
     const int n = sim->model->n;
     const double inv = 1.0 / (S->count - 1);
-    double p1 = 0.0, p2 = 0.0, m11, m12, m22;
+    double p1 = 0.0, p2 = 0.0;
     for (int q = 0, i = S->first; q < S->count; q++, i = bd_node_next(i, n)) {
         double xi = q * inv, p = sim->mass[i] * (sim->vx[i] * W->d[0] + sim->vy[i] * W->d[1]);
         p1 += (1.0 - xi) * p;
         p2 += xi * p;
     }
-    mass_matrix(sim, S, &m11, &m12, &m22);
-    double det = m11 * m22 - m12 * m12;
+    mass_matrix(sim, S);
+    const double m11 = S->m11, m12 = S->m12, m22 = S->m22, det = m11 * m22 - m12 * m12;
     S->v1 = (m22 * p1 - m12 * p2) / det;
     S->v2 = (m11 * p2 - m12 * p1) / det;
     place(sim, W, S);
@@ -677,6 +817,7 @@ static double leave(bd_sim *sim, int w, int end)
         S->v2 -= r * (S->v2 - S->v1);
     }
     S->count--;
+    mass_matrix(sim, S);
     /* the element that left, and the free belt beyond it, turned to the
      * least energy with the section's new end (along its line, as inside
      * it) held: a section's end that joined it from the free belt keeps
@@ -940,6 +1081,7 @@ void bd_rfe_sections_regroup(bd_sim *sim)
     if (lost != 0.0)
         book(sim, lost);
     free_runs(R, n);
+    R->live_stale = 1;
     /* the rotations' system changes with the tied elements */
     R->rdt = 0.0;
     int dof = bd_rfe_belt_dof(sim);
