@@ -123,6 +123,12 @@ typedef struct bd_belt_ops {
     /* node i's velocity along the belt there, m/s */
     double (*node_speed)(const bd_sim *sim, int i);
 
+    /* its state made whole for reading from outside the step: a belt that
+     * keeps some of it in a lumped form within the step (the rfe belt's
+     * long sections place their elements lazily) writes it out; called
+     * before and after a step that books energy, and after bd_sim_step;
+     * may be NULL */
+    void (*sync)(bd_sim *sim);
     /* events the formulation recorded in the step, said after the run */
     void (*report_events)(bd_sim *sim);
     /* its variable topology so far; NULL: it has none */

@@ -145,7 +145,7 @@ int bd_sim_start_at_rest(bd_sim *sim)
 }
 
 /* one step; returns 0 or 1 (failed, message in sim->fail_msg) */
-int bd_step_once(bd_sim *sim)
+static int step(bd_sim *sim)
 {
     const bd_belt_ops *belt = sim->model->belt;
     bd_energy *en = &sim->energy;
@@ -154,7 +154,10 @@ int bd_step_once(bd_sim *sim)
     en->step_input_at_t = 0.0;
     en->step_dissipated_after = en->step_input_after = 0.0;
     /* potential energy at t (positions before the update) when asked */
-    if (sim->want_energy || sim->energy_every_step)
+    const int reading = sim->want_energy || sim->energy_every_step;
+    if (reading && belt->sync)
+        belt->sync(sim);
+    if (reading)
         en->potential = bd_energy_potential(sim);
     /* forces → part torques → wrap coupling → supports */
     if (bd_step_forces(sim))
@@ -197,15 +200,31 @@ int bd_step_once(bd_sim *sim)
         sim->t += sim->model->dt;
     bd_sensors_update(sim);
     sim->steps++;
+    /* what is read after it (outputs, the energy account) */
+    if (reading && belt->sync)
+        belt->sync(sim);
     return 0;
+}
+
+int bd_step_once(bd_sim *sim)
+{
+    if (!step(sim))
+        return 0;
+    /* a failed run's state, as it was, for what is written of it */
+    if (sim->model->belt->sync)
+        sim->model->belt->sync(sim);
+    return 1;
 }
 
 int bd_sim_step(bd_sim *sim, long count, char *err, size_t errlen)
 {
-    for (long k = 0; k < count; k++)
+    int failed = 0;
+    for (long k = 0; k < count && !failed; k++)
         if (bd_step_once(sim)) {
             snprintf(err, errlen, "%s", sim->fail_msg);
-            return 1;
+            failed = 1;
         }
-    return 0;
+    if (sim->model->belt->sync)
+        sim->model->belt->sync(sim);
+    return failed;
 }

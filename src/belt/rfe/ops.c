@@ -29,7 +29,7 @@ const bd_belt_ops bd_rfe_ops = {
     .wrap_energy = NULL,
     .support_inertia = bd_lumped_support_inertia,
     .point_init = bd_tracker_init,
-    .point_update = bd_tracker_update,
+    .point_update = bd_rfe_point_update,
     .sample = bd_lumped_sample,
     .element_s = bd_lumped_element_s,
     .records_lift_off = 1,
@@ -38,4 +38,5 @@ const bd_belt_ops bd_rfe_ops = {
     .node_speed = bd_lumped_node_speed,
     .report_events = NULL,
     .topology = bd_rfe_topology,
+    .sync = bd_rfe_sync,
 };

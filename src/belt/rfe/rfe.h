@@ -53,6 +53,10 @@ typedef struct bd_rfe_section {
     /* step (forces): summed element by element (the feed in its window,
      * or an idler of it not carried), else from its ends and its mass */
     int full;
+    /* its elements stand where s1, s2 say (place); a section summed from
+     * its ends moves only those in the step, the others when read
+     * (bd_rfe_sync) */
+    int placed;
 } bd_rfe_section;
 
 /* compiled data (behind model->belt_model) */
@@ -78,6 +82,8 @@ typedef struct bd_rfe_model {
     int *idler_window;        /* [idler_count] the window carrying idler i, or −1 */
     double *idler_share;      /* [idler_count] m of the span each idler carries
                                  (sim/running_law.c's rule) */
+    double *idler_along;      /* [idler_count] m, a window's idler's place along
+                                 its line */
 } bd_rfe_model;
 
 /* state (behind sim->belt_data) */
@@ -110,6 +116,7 @@ typedef struct bd_rfe {
     int *sec;                 /* [n] */
     bd_rfe_section *sections; /* [window_count] */
     int *carried;             /* [idler_count] step: the section carrying idler i, or −1 */
+    double *carried_xi;       /* [idler_count] step: its weight ξ in that section */
     int tied;                 /* the sections have been tied */
     int *run_first, *run_count;   /* [n] */
     int run_n;
@@ -178,6 +185,10 @@ void bd_rfe_sections_clone(bd_sim *dst, const bd_sim *src);
 void bd_rfe_sections_forces(bd_sim *sim);
 /* the supports phase: the idlers the sections carry, the others' contacts */
 void bd_rfe_supports(bd_sim *sim);
+/* every section's elements where it stands (belt.h sync) */
+void bd_rfe_sync(bd_sim *sim);
+/* a sensor's point: the elements about it placed, then followed */
+void bd_rfe_point_update(const bd_sim *sim, bd_tracker *tr);
 /* the integrate phase for the sections and the idlers they carry */
 void bd_rfe_sections_move(bd_sim *sim, double *ke, double *w_nc);
 /* after it: elements join and leave the sections (the first time, every

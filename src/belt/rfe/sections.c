@@ -179,6 +179,7 @@ void bd_rfe_sections_build(bd_sim *sim, bd_rfe_model *RM)
     RM->windows = NULL;
     RM->idler_window = bd_xcalloc((size_t)ni + 1, sizeof *RM->idler_window);
     RM->idler_list = bd_xcalloc((size_t)ni + 1, sizeof *RM->idler_list);
+    RM->idler_along = bd_xcalloc((size_t)ni + 1, sizeof *RM->idler_along);
     for (int i = 0; i < ni; i++)
         RM->idler_window[i] = -1;
     if (!def->belt.group_sections || def->belt.group_length <= 0.0)
@@ -206,6 +207,7 @@ void bd_rfe_sections_build(bd_sim *sim, bd_rfe_model *RM)
             double off = (id->tr.p[1] - W->p0[1]) * W->d[0] - (id->tr.p[0] - W->p0[0]) * W->d[1];
             if (a > W->a && a < W->b && fabs(off) < 1e-6 * (1.0 + W->b) && RM->idler_window[i] < 0) {
                 RM->idler_window[i] = w;
+                RM->idler_along[i] = a;
                 RM->idler_list[listed++] = i;
             }
         }
@@ -231,6 +233,7 @@ void bd_rfe_sections_alloc(bd_sim *sim)
         R->sec[i] = -1;
     R->sections = bd_xcalloc((size_t)RM->window_count + 1, sizeof *R->sections);
     R->carried = bd_xcalloc((size_t)sim->model->idler_count + 1, sizeof *R->carried);
+    R->carried_xi = bd_xcalloc((size_t)sim->model->idler_count + 1, sizeof *R->carried_xi);
     for (int i = 0; i < sim->model->idler_count; i++)
         R->carried[i] = -1;
     R->run_first = bd_xcalloc(n, sizeof *R->run_first);
@@ -250,6 +253,7 @@ void bd_rfe_sections_free(bd_rfe *R)
     free(R->sec);
     free(R->sections);
     free(R->carried);
+    free(R->carried_xi);
     free(R->run_first);
     free(R->run_count);
     free(R->live_first);
@@ -263,6 +267,7 @@ void bd_rfe_sections_free_model(bd_rfe_model *RM)
     free(RM->idler_list);
     free(RM->idler_window);
     free(RM->idler_share);
+    free(RM->idler_along);
 }
 
 void bd_rfe_sections_clone(bd_sim *dst, const bd_sim *src)
@@ -274,6 +279,8 @@ void bd_rfe_sections_clone(bd_sim *dst, const bd_sim *src)
     D->sections = bd_xdup(S->sections, (size_t)bd_rfe_model_of(src)->window_count + 1,
                           sizeof *D->sections);
     D->carried = bd_xdup(S->carried, (size_t)src->model->idler_count + 1, sizeof *D->carried);
+    D->carried_xi = bd_xdup(S->carried_xi, (size_t)src->model->idler_count + 1,
+                            sizeof *D->carried_xi);
     D->run_first = bd_xdup(S->run_first, n, sizeof *D->run_first);
     D->run_count = bd_xdup(S->run_count, n, sizeof *D->run_count);
     D->live_first = bd_xdup(S->live_first, n, sizeof *D->live_first);
@@ -301,15 +308,6 @@ static inline int last_of(const bd_rfe_section *S, int n)
     return l >= n ? l - n : l;
 }
 
-/* an idler's weight ξ in its section: where it stands between the
- * section's first and last element */
-static inline double idler_xi(const bd_sim *sim, const bd_rfe_window *W,
-                              const bd_rfe_section *S, int i)
-{
-    const bd_idler *id = &sim->idlers[i];
-    return (along(W, id->tr.p[0], id->tr.p[1]) - S->s1) / (S->s2 - S->s1);
-}
-
 /* the forces phase: which idlers each section carries (those of its
  * window more than two elements inside its ends: all of them while its
  * ends stand where the window's are, in mid-bay half a bay from the
@@ -321,6 +319,8 @@ static inline double idler_xi(const bd_sim *sim, const bd_rfe_window *W,
  * half an element (LEAVE_BEYOND) from its end, 1.5 elements or more, and
  * its contact's three nodes (idler_contact.c) reach its end, not the
  * element inside it. */
+static inline void ensure_placed(bd_sim *sim, int w);
+
 static void carry(bd_sim *sim)
 {
     bd_rfe *R = bd_rfe_of(sim);
@@ -333,19 +333,26 @@ static void carry(bd_sim *sim)
         bd_rfe_section *S = &R->sections[w];
         int full = W->has_feed;
         if (S->count >= 2) {
-            const double inner = 2.0 * l0 / (S->s2 - S->s1);
+            /* an idler's weight ξ: where it stands between the section's
+             * first and last element */
+            const double inv = 1.0 / (S->s2 - S->s1), inner = 2.0 * l0 * inv;
+            const int *list = RM->idler_list + W->idler_first;
             for (int q = 0; q < W->idler_count; q++) {
-                int i = RM->idler_list[W->idler_first + q];
-                double xi = idler_xi(sim, W, S, i);
-                if (xi < inner || 1.0 - xi < inner)
+                int i = list[q];
+                double xi = (RM->idler_along[i] - S->s1) * inv;
+                if (xi < inner || 1.0 - xi < inner) {
                     full = 1;
-                else
+                } else {
                     R->carried[i] = w;
+                    R->carried_xi[i] = xi;
+                }
             }
         }
         if (full != S->full) {
             S->full = full;
             R->live_stale = 1;
+            /* the forces phase takes its every element from now on */
+            ensure_placed(sim, w);
         }
     }
 }
@@ -429,11 +436,11 @@ void bd_rfe_supports(bd_sim *sim)
                 continue;
             bd_idler *id = &sim->idlers[i];
             const bd_idler_model *im = id->m;
-            double xi = idler_xi(sim, W, S, i), xj = 1.0 - xi;
+            double xi = R->carried_xi[i], xj = 1.0 - xi;
             /* its tracker: the element over it, from the section */
             double at = xi * (S->count - 1);
-            int j = (int)at;
-            id->tr.element = (S->first + j) % n;
+            int j = (int)at, e = S->first + j;
+            id->tr.element = e >= n ? e - n : e;
             id->tr.gamma = at - j;
             /* the belt and load over it */
             double m = sim->mass[id->tr.element] * inv_l0;
@@ -483,29 +490,88 @@ static inline int aggregated(const bd_rfe_section *S)
     return S->count >= 3 && !S->full;
 }
 
-/* the section's elements where its ends are, at their velocities; inside
- * a section summed from its ends, the SDEs take the tension and dashpot
- * force of its first (the forces phase took only those at its ends: all
- * are stretched alike) */
-static void place(bd_sim *sim, const bd_rfe_window *W, const bd_rfe_section *S)
+/* element q of section S (on window W) where the section's ends are, at
+ * its velocity; inside a section summed from its ends, the SDE after it
+ * takes the tension and dashpot force of the section's first (the forces
+ * phase took only those at its ends: all are stretched alike) */
+static inline void place_one(bd_sim *sim, const bd_rfe_window *W, const bd_rfe_section *S, int q,
+                             int i)
+{
+    const double xi = q / (double)(S->count - 1);
+    const double s = S->s1 + xi * (S->s2 - S->s1), v = S->v1 + xi * (S->v2 - S->v1);
+    sim->x[i] = W->p0[0] + s * W->d[0];
+    sim->y[i] = W->p0[1] + s * W->d[1];
+    sim->vx[i] = v * W->d[0];
+    sim->vy[i] = v * W->d[1];
+    if (aggregated(S) && q > 0 && q + 2 < S->count) {
+        bd_lumped *L = &bd_rfe_of(sim)->lumped;
+        sim->tension[i] = sim->tension[S->first];
+        L->td[i] = L->td[S->first];
+    }
+}
+
+/* the section's elements where its ends are, at their velocities */
+static void place(bd_sim *sim, const bd_rfe_window *W, bd_rfe_section *S)
 {
     const int n = sim->model->n;
-    const double inv = 1.0 / (S->count - 1), ds = S->s2 - S->s1, dv = S->v2 - S->v1;
-    const double dx = W->d[0], dy = W->d[1];
-    const int inside = aggregated(S);
-    const double T = sim->tension[S->first], Td = bd_rfe_of(sim)->lumped.td[S->first];
-    double *tension = sim->tension, *td = bd_rfe_of(sim)->lumped.td;
-    for (int q = 0, i = S->first; q < S->count; q++, i = bd_node_next(i, n)) {
-        double xi = q * inv, s = S->s1 + xi * ds, v = S->v1 + xi * dv;
-        sim->x[i] = W->p0[0] + s * dx;
-        sim->y[i] = W->p0[1] + s * dy;
-        sim->vx[i] = v * dx;
-        sim->vy[i] = v * dy;
-        if (inside && q > 0 && q + 2 < S->count) {
-            tension[i] = T;
-            td[i] = Td;
+    for (int q = 0, i = S->first; q < S->count; q++, i = bd_node_next(i, n))
+        place_one(sim, W, S, q, i);
+    S->placed = 1;
+}
+
+/* in the step, a section summed from its ends: its two elements at
+ * either end (the forces phase and the idler contacts beside it read
+ * them), the others when read */
+static void place_ends(bd_sim *sim, const bd_rfe_window *W, bd_rfe_section *S)
+{
+    const int n = sim->model->n;
+    int last = last_of(S, n);
+    place_one(sim, W, S, 0, S->first);
+    place_one(sim, W, S, 1, bd_node_next(S->first, n));
+    place_one(sim, W, S, S->count - 2, bd_node_prev(last, n));
+    place_one(sim, W, S, S->count - 1, last);
+    S->placed = 0;
+}
+
+static inline void ensure_placed(bd_sim *sim, int w)
+{
+    bd_rfe_section *S = &bd_rfe_of(sim)->sections[w];
+    if (S->count >= 2 && !S->placed)
+        place(sim, &bd_rfe_model_of(sim)->windows[w], S);
+}
+
+void bd_rfe_sync(bd_sim *sim)
+{
+    const bd_rfe_model *RM = bd_rfe_model_of(sim);
+    if (!bd_rfe_of(sim)->tied)
+        return;
+    for (int w = 0; w < RM->window_count; w++)
+        ensure_placed(sim, w);
+}
+
+/* elements from SENSOR_REACH before a sensor's element to SENSOR_REACH
+ * after it placed, if tied: what bd_tracker_update walks in a step (the
+ * belt moves less than an element) and the sample reads */
+#define SENSOR_REACH 3
+
+void bd_rfe_point_update(const bd_sim *sim_c, bd_tracker *tr)
+{
+    /* the sensors see the belt through its elements' places (belt.h); a
+     * section's are written here, as bd_rfe_sync writes them */
+    bd_sim *sim = (bd_sim *)sim_c;
+    const bd_rfe *R = bd_rfe_of(sim);
+    if (R->tied) {
+        const int n = sim->model->n;
+        int i = (tr->element - SENSOR_REACH + n) % n;
+        for (int k = 0; k <= 2 * SENSOR_REACH + 1; k++, i = bd_node_next(i, n)) {
+            int w = R->sec[i];
+            if (w < 0 || R->sections[w].placed)
+                continue;
+            const bd_rfe_section *S = &R->sections[w];
+            place_one(sim, &bd_rfe_model_of(sim)->windows[w], S, (i - S->first + n) % n, i);
         }
     }
+    bd_tracker_update(sim, tr);
 }
 
 /* the integrate phase for the sections: each to t + Δt/2 with its rolls
@@ -517,7 +583,7 @@ void bd_rfe_sections_move(bd_sim *sim, double *ke_out, double *w_nc_out)
     bd_rfe *R = bd_rfe_of(sim);
     const bd_rfe_model *RM = bd_rfe_model_of(sim);
     const int n = sim->model->n;
-    const double dt = sim->model->dt, g = sim->model->gravity;
+    const double dt = sim->model->dt, inv_dt = 1.0 / dt, g = sim->model->gravity;
     double ke = 0.0, w_nc = 0.0;
     for (int w = 0; w < RM->window_count; w++) {
         const bd_rfe_window *W = &RM->windows[w];
@@ -572,9 +638,9 @@ void bd_rfe_sections_move(bd_sim *sim, double *ke_out, double *w_nc_out)
             if (R->carried[i] != w)
                 continue;
             bd_idler *id = &sim->idlers[i];
-            double xi = idler_xi(sim, W, S, i), xj = 1.0 - xi;
+            double xi = R->carried_xi[i], xj = 1.0 - xi;
             double Rr = id->m->radius;
-            double torque = id->m->inertia * ((xj * u1 + xi * u2) / Rr - id->omega) / dt;
+            double torque = id->m->inertia * ((xj * u1 + xi * u2) / Rr - id->omega) * inv_dt;
             id->torque = torque;
             id->alpha = torque * id->m->inv_inertia;
             w_nc -= torque / Rr * (xj * h1 + xi * h2);
@@ -583,7 +649,10 @@ void bd_rfe_sections_move(bd_sim *sim, double *ke_out, double *w_nc_out)
         S->v2 = u2;
         S->s1 += u1 * dt;
         S->s2 += u2 * dt;
-        place(sim, W, S);
+        if (aggregated(S))
+            place_ends(sim, W, S);
+        else
+            place(sim, W, S);
     }
     *ke_out += 0.5 * ke;
     *w_nc_out += w_nc * dt;
@@ -1033,6 +1102,20 @@ int bd_rfe_belt_dof(const bd_sim *sim)
     return 3 * (sim->model->n - tied) + 2 * sections;
 }
 
+/* section w's elements, and those of the sections that may meet it
+ * (a join or a leave measures and relaxes the belt a few elements beyond
+ * its end: into the next section only where their windows meet, the free
+ * belt between two others being longer than a margin), placed */
+static void ensure_near(bd_sim *sim, int w)
+{
+    const bd_rfe_window *W = &bd_rfe_model_of(sim)->windows[w];
+    ensure_placed(sim, w);
+    if (W->before >= 0)
+        ensure_placed(sim, W->before);
+    if (W->after >= 0)
+        ensure_placed(sim, W->after);
+}
+
 /* after the integrate phase: the elements that left a window leave its
  * section, those that entered one join it (the first time, every section
  * is tied; none while stabilizing, whose time stands still) */
@@ -1056,6 +1139,7 @@ void bd_rfe_sections_regroup(bd_sim *sim)
         const double a = RM->windows[w].a - LEAVE_BEYOND * sim->model->l0;
         const double b = RM->windows[w].b + LEAVE_BEYOND * sim->model->l0;
         while (S->count > 2 && (S->s2 >= b || S->s1 < a)) {
+            ensure_near(sim, w);
             lost += leave(sim, w, S->s2 >= b ? 1 : 0);
             changed = 1;
         }
@@ -1067,12 +1151,13 @@ void bd_rfe_sections_regroup(bd_sim *sim)
             continue;
         for (;;) {
             int p = bd_node_prev(S->first, n), q = bd_node_next(last_of(S, n), n);
-            if (R->sec[p] < 0 && inside(sim, W, p, join_off(sim)))
-                lost += join(sim, w, 0);
-            else if (R->sec[q] < 0 && inside(sim, W, q, join_off(sim)))
-                lost += join(sim, w, 1);
-            else
+            int end = R->sec[p] < 0 && inside(sim, W, p, join_off(sim))   ? 0
+                    : R->sec[q] < 0 && inside(sim, W, q, join_off(sim)) ? 1
+                                                                        : -1;
+            if (end < 0)
                 break;
+            ensure_near(sim, w);
+            lost += join(sim, w, end);
             changed = 1;
         }
     }
