@@ -30,10 +30,11 @@
  * Waves cross it at √(EA/m′) when long against it (a two-node element's
  * dispersion, as the axial belt's); group_length sets where that stops.
  *
- * **The idlers it carries** (those inside the window more than two
- * elements from the section's ends: with its ends in mid-bay, half a bay
- * from any idler, all of them, and no idler passes from contact to being
- * carried or back) turn with the belt (stuck) and
+ * **The idlers it carries** (those inside the window more than half an
+ * element from the section's ends: with its ends within an element of the
+ * window's, in mid-bay at least two elements from any idler, all of them,
+ * and no idler passes from contact to being carried or back) turn with
+ * the belt (stuck) and
  * resist it by rr·N, N the weight of belt and load they carry normal to
  * the span (sim/running_law.c's share): the model's own law. With the
  * rolls' inertia in the step (central differences, the stick impulse in
@@ -42,6 +43,15 @@
  * K = Σ I/R²·N_k·N_kᵀ, P = Σ (I·ω_k/R)·N_k, each roll then at ω⁺ = v_k⁺/R;
  * the friction that turns it is booked as the contact's friction is (on
  * the belt at v_k, on the roll at ω·R: no work while they roll together).
+ *
+ * **Its step costs O(1)**, not O(count): inside it every SDE pulls its
+ * two elements alike, T·d forward and back, so the elements inside feel
+ * their weight alone, and Σ N_j·(f_j·d) is the forces on its two ends
+ * (the forces phase takes them, with the SDE to the free belt) plus the
+ * weight inside from the kept mass matrix. The elements inside are placed
+ * when read (bd_rfe_sync, the sensors' points, joins and leaves). A
+ * section whose window holds the feed point, or with an idler of its
+ * window not carried, is summed element by element (full).
  *
  * **Joining and leaving.** An element leaving at an end keeps its place
  * and velocity, and the section's others keep theirs. An element joining
@@ -309,9 +319,13 @@ static inline int last_of(const bd_rfe_section *S, int n)
 }
 
 /* the forces phase: which idlers each section carries (those of its
- * window more than two elements inside its ends: all of them while its
- * ends stand where the window's are, in mid-bay half a bay from the
- * nearest idler; should the belt not join it, an element too far off the
+ * window more than half an element inside its ends: all of them while its
+ * ends stand within an element of the window's, in mid-bay, half a bay of
+ * at least four elements from the nearest idler; with two elements the
+ * first element joining a little over one element inside its window, the
+ * chord from the sagging free belt, left the nearest idler out, a quarter
+ * of the cement plant's sections summed element by element at speed;
+ * should the belt not join it, an element too far off the
  * line, the idlers beyond its ends press on the free belt again), and
  * whether it is summed element by element (full): the feed in its window,
  * or an idler of its window pressing on it. Else only its ends take
@@ -335,7 +349,7 @@ static void carry(bd_sim *sim)
         if (S->count >= 2) {
             /* an idler's weight ξ: where it stands between the section's
              * first and last element */
-            const double inv = 1.0 / (S->s2 - S->s1), inner = 2.0 * l0 * inv;
+            const double inv = 1.0 / (S->s2 - S->s1), inner = 0.5 * l0 * inv;
             const int *list = RM->idler_list + W->idler_first;
             for (int q = 0; q < W->idler_count; q++) {
                 int i = list[q];
