@@ -622,18 +622,20 @@ void bd_rfe_sections_move(bd_sim *sim, double *ke_out, double *w_nc_out)
             F2 = sim->fx[b] * dx + sim->fy[b] * dy + gd * (m12 + m22 - sim->mass[b]);
             N1 = sim->fnx[a] * dx + sim->fny[a] * dy;
             N2 = sim->fnx[b] * dx + sim->fny[b] * dy;
-        } else
-        for (int q = 0, i = S->first; q < S->count; q++, i = bd_node_next(i, n)) {
-            double xi = q * inv, xj = 1.0 - xi, m = sim->mass[i];
-            double f = sim->fx[i] * dx + sim->fy[i] * dy;
-            double fn = sim->fnx[i] * dx + sim->fny[i] * dy;
-            F1 += xj * f;
-            F2 += xi * f;
-            N1 += xj * fn;
-            N2 += xi * fn;
-            m11 += m * xj * xj;
-            m12 += m * xj * xi;
-            m22 += m * xi * xi;
+        } else {
+            /* full: every element's force along the line, weighted */
+            for (int q = 0, i = S->first; q < S->count; q++, i = bd_node_next(i, n)) {
+                double xi = q * inv, xj = 1.0 - xi, m = sim->mass[i];
+                double f = sim->fx[i] * dx + sim->fy[i] * dy;
+                double fn = sim->fnx[i] * dx + sim->fny[i] * dy;
+                F1 += xj * f;
+                F2 += xi * f;
+                N1 += xj * fn;
+                N2 += xi * fn;
+                m11 += m * xj * xj;
+                m12 += m * xj * xi;
+                m22 += m * xi * xi;
+            }
         }
         /* (M + K)·V⁺ = M·V⁻ + P + Δt·(F − F_rr) */
         double a11 = m11 + S->k11, a12 = m12 + S->k12, a22 = m22 + S->k22;
