@@ -151,6 +151,9 @@ typedef struct bd_idler {
     double alpha;          /* rad/s² this step (supports) */
     double torque;         /* N·m belt friction torque this step (supports) */
     double spring_energy;  /* J, f_n²/(2k_c) of its contact this step (supports) */
+    int lazy;              /* its roll's motion kept by the belt, not the parts (a
+                              long section of the rfe belt carrying it,
+                              belt/rfe/sections.c); omega written when read */
 } bd_idler;
 
 typedef struct bd_probe {

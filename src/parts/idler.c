@@ -11,6 +11,8 @@ void bd_idlers_advance(bd_sim *sim, double *ke, double *w_nc)
     double k = *ke, w = *w_nc;
     for (int i = 0; i < sim->model->idler_count; i++) {
         bd_idler *id = &sim->idlers[i];
+        if (id->lazy)
+            continue;
         double w_mid = id->omega + 0.5 * id->alpha * dt;
         k += 0.5 * id->m->inertia * w_mid * w_mid;
         w += id->torque * w_mid * dt;

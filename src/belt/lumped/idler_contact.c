@@ -302,7 +302,7 @@ void bd_lumped_idlers_except(bd_sim *sim, const int *carried)
     for (int i = 0; i < count; i++) {
         if (carried[i] < 0) {
             idler_contact(sim, &sim->idlers[i], &touch[i]);
-        } else {
+        } else if (!sim->idlers[i].lazy) {
             sim->idlers[i].alpha = 0.0;
             sim->idlers[i].torque = 0.0;
             spring_energy(sim, &sim->idlers[i], 0.0);

@@ -243,8 +243,6 @@ void bd_rfe_integrate(bd_sim *sim, double *ke_out, double *w_nc_out)
     }
     *w_nc_out += w_nc * dt;
     *ke_out += 0.5 * J * ke;
-    /* variable topology: sections released and tied for the next step */
-    bd_rfe_sections_regroup(sim);
 }
 
 /* at rest at t (sim/step.c bd_sim_start_at_rest): the half-step angular

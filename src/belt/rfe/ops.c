@@ -20,7 +20,10 @@ const bd_belt_ops bd_rfe_ops = {
     .supports = bd_rfe_supports,
     .integrate = bd_rfe_integrate,
     .rest_velocities = bd_rfe_rest_velocities,
-    .after_parts = NULL,
+    /* variable topology: sections released and tied for the next step,
+     * after the idlers have turned (a section giving its rolls back
+     * writes their speeds: sections.c unstick) */
+    .after_parts = bd_rfe_sections_regroup,
     /* material adds to the centres' mass, not to J (build.c) */
     .material = bd_rfe_material,
     .potential = bd_rfe_potential,

@@ -34,6 +34,10 @@ typedef struct bd_rfe_window {
     int idler_first, idler_count;  /* the idlers it carries (model idler_list) */
     int has_feed;             /* the feed point lies in it (its section is
                                  summed element by element: mass lands there) */
+    /* its idlers' sums about a (x = an idler's place less a): of
+     * kr = I/R², Σ kr, Σ kr·x, Σ kr·x² (kg, kg·m, kg·m²), and of
+     * c = rr·g·cos δ·share, Σ c and Σ c·x (m²/s², m³/s²) */
+    double k0, k1, k2, c0, c1;
 } bd_rfe_window;
 
 /* the long section on window w now: elements first .. first + count − 1
@@ -57,6 +61,14 @@ typedef struct bd_rfe_section {
      * its ends moves only those in the step, the others when read
      * (bd_rfe_sync) */
     int placed;
+    /* its rolls turn with it: every idler of its window was carried last
+     * step, each then at ω = v(ξ)/R with ξ from where its ends stood then
+     * (s1p, s2p) and v its speeds now; nothing has changed it since */
+    int stuck;
+    double s1p, s2p;
+    /* step: its idlers summed from the window's sums (stuck, rolling one
+     * way faster than BD_ROLLING_SPEED); lazy: their rolls left to it */
+    int idler_sums, lazy_idlers;
 } bd_rfe_section;
 
 /* compiled data (behind model->belt_model) */
@@ -191,8 +203,8 @@ void bd_rfe_sync(bd_sim *sim);
 void bd_rfe_point_update(const bd_sim *sim, bd_tracker *tr);
 /* the integrate phase for the sections and the idlers they carry */
 void bd_rfe_sections_move(bd_sim *sim, double *ke, double *w_nc);
-/* after it: elements join and leave the sections (the first time, every
- * section is tied) */
+/* after the parts have moved (belt.h after_parts): elements join and
+ * leave the sections (the first time, every section is tied) */
 void bd_rfe_sections_regroup(bd_sim *sim);
 void bd_rfe_material(bd_sim *sim);
 /* the belt's degrees of freedom now: 3 per free element, 2 per section */

@@ -222,6 +222,20 @@ void bd_rfe_sections_build(bd_sim *sim, bd_rfe_model *RM)
             }
         }
         W->idler_count = listed - W->idler_first;
+        /* the sums that carry its idlers while its rolls turn with it
+         * (bd_rfe_supports) */
+        W->k0 = W->k1 = W->k2 = W->c0 = W->c1 = 0.0;
+        for (int q = W->idler_first; q < listed; q++) {
+            int i = RM->idler_list[q];
+            const bd_idler_model *im = sim->idlers[i].m;
+            double x = RM->idler_along[i] - W->a, kr = im->inertia / (im->radius * im->radius);
+            double c = im->rolling * sim->model->gravity * W->cos_slope * RM->idler_share[i];
+            W->k0 += kr;
+            W->k1 += kr * x;
+            W->k2 += kr * x * x;
+            W->c0 += c;
+            W->c1 += c * x;
+        }
         /* the loading zone (a bay either side of the feed point): mass
          * lands there every step, the skirts rub */
         if (def->material.present) {
@@ -318,6 +332,13 @@ static inline int last_of(const bd_rfe_section *S, int n)
     return l >= n ? l - n : l;
 }
 
+/* whether the step sums section S from its ends and its mass alone
+ * (carry): inside it, the forces phase takes no node */
+static inline int aggregated(const bd_rfe_section *S)
+{
+    return S->count >= 3 && !S->full;
+}
+
 /* the forces phase: which idlers each section carries (those of its
  * window more than half an element inside its ends: all of them while its
  * ends stand within an element of the window's, in mid-bay, half a bay of
@@ -334,6 +355,68 @@ static inline int last_of(const bd_rfe_section *S, int n)
  * its contact's three nodes (idler_contact.c) reach its end, not the
  * element inside it. */
 static inline void ensure_placed(bd_sim *sim, int w);
+
+/* an affine function of an idler's place x (from its window's start a):
+ * f0 + f1·x */
+typedef struct affine {
+    double f0, f1;
+} affine;
+
+/* Σ kr·f(x)·g(x) over the window's idlers, from its sums */
+static inline double kr_sum(const bd_rfe_window *W, affine f, affine g)
+{
+    return f.f0 * g.f0 * W->k0 + (f.f0 * g.f1 + f.f1 * g.f0) * W->k1 + f.f1 * g.f1 * W->k2;
+}
+
+/* ξ of an idler at x in a section whose ends stand at s1, s2 */
+static inline affine weight_at(const bd_rfe_window *W, double s1, double s2)
+{
+    double inv = 1.0 / (s2 - s1);
+    return (affine){(W->a - s1) * inv, inv};
+}
+
+/* a point's speed along the line, v1 + ξ·(v2 − v1), for ξ = w */
+static inline affine speed_at(affine w, double v1, double v2)
+{
+    return (affine){v1 + w.f0 * (v2 - v1), w.f1 * (v2 - v1)};
+}
+
+/* section w's rolls written out from where they stand in it: each at
+ * ω = v(ξ)/R of last step's ξ and its speeds now, its tracker over the
+ * element there */
+static void write_rolls(bd_sim *sim, int w)
+{
+    const bd_rfe_model *RM = bd_rfe_model_of(sim);
+    const bd_rfe_window *W = &RM->windows[w];
+    const bd_rfe_section *S = &bd_rfe_of(sim)->sections[w];
+    const int n = sim->model->n;
+    for (int q = 0; q < W->idler_count; q++) {
+        int i = RM->idler_list[W->idler_first + q];
+        bd_idler *id = &sim->idlers[i];
+        double xp = (RM->idler_along[i] - S->s1p) / (S->s2p - S->s1p);
+        id->omega = (S->v1 + xp * (S->v2 - S->v1)) / id->m->radius;
+        double at = (RM->idler_along[i] - S->s1) / (S->s2 - S->s1) * (S->count - 1);
+        int j = (int)at, e = S->first + j;
+        id->tr.element = e >= n ? e - n : e;
+        id->tr.gamma = at - j;
+    }
+}
+
+/* section w's rolls given back to the parts (before anything changes the
+ * section between steps, or it stops carrying them all) */
+static void unstick(bd_sim *sim, int w)
+{
+    const bd_rfe_model *RM = bd_rfe_model_of(sim);
+    const bd_rfe_window *W = &RM->windows[w];
+    bd_rfe_section *S = &bd_rfe_of(sim)->sections[w];
+    if (S->lazy_idlers) {
+        write_rolls(sim, w);
+        for (int q = 0; q < W->idler_count; q++)
+            sim->idlers[RM->idler_list[W->idler_first + q]].lazy = 0;
+        S->lazy_idlers = 0;
+    }
+    S->stuck = 0;
+}
 
 static void carry(bd_sim *sim)
 {
@@ -365,8 +448,10 @@ static void carry(bd_sim *sim)
         if (full != S->full) {
             S->full = full;
             R->live_stale = 1;
-            /* the forces phase takes its every element from now on */
+            /* the forces phase takes its every element from now on, and
+             * an idler of it presses on it */
             ensure_placed(sim, w);
+            unstick(sim, w);
         }
     }
 }
@@ -442,8 +527,41 @@ void bd_rfe_supports(bd_sim *sim)
         const bd_rfe_window *W = &RM->windows[w];
         bd_rfe_section *S = &R->sections[w];
         S->k11 = S->k12 = S->k22 = S->p1 = S->p2 = S->f1 = S->f2 = 0.0;
+        S->idler_sums = 0;
         if (S->count < 2)
             continue;
+        /* Its rolls turning with it, the belt over them rolling one way:
+         * the same sums from the window's, in O(1) (kr_sum). The load over
+         * each idler is then the section's mean, m̄ = Σm/(count·l0), the
+         * running law's uniform load (where a load front stands in the
+         * section, its mean). The rolls are the section's until it
+         * changes (unstick): the parts leave them. */
+        const double vr = BD_ROLLING_SPEED;
+        if (aggregated(S) && S->stuck
+            && ((S->v1 >= vr && S->v2 >= vr) || (S->v1 <= -vr && S->v2 <= -vr))) {
+            S->idler_sums = 1;
+            if (!S->lazy_idlers) {
+                for (int q = 0; q < W->idler_count; q++)
+                    sim->idlers[RM->idler_list[W->idler_first + q]].lazy = 1;
+                S->lazy_idlers = 1;
+            }
+            affine xi = weight_at(W, S->s1, S->s2), xj = {1.0 - xi.f0, -xi.f1};
+            /* ω⁻·R of each roll: last step's ξ, this step's speeds */
+            affine wm = speed_at(weight_at(W, S->s1p, S->s2p), S->v1, S->v2);
+            S->k11 = kr_sum(W, xj, xj);
+            S->k12 = kr_sum(W, xj, xi);
+            S->k22 = kr_sum(W, xi, xi);
+            S->p1 = kr_sum(W, wm, xj);
+            S->p2 = kr_sum(W, wm, xi);
+            double mbar = (S->m11 + 2.0 * S->m12 + S->m22) / (S->count * sim->model->l0);
+            double f = (S->v1 > 0.0 ? 1.0 : -1.0) * mbar;
+            S->f1 = f * (xj.f0 * W->c0 + xj.f1 * W->c1);
+            S->f2 = f * (xi.f0 * W->c0 + xi.f1 * W->c1);
+            continue;
+        }
+        /* else roll by roll: their speeds from the section first */
+        if (S->lazy_idlers)
+            unstick(sim, w);
         for (int q = 0; q < W->idler_count; q++) {
             int i = RM->idler_list[W->idler_first + q];
             if (R->carried[i] != w)
@@ -497,12 +615,6 @@ static void mass_matrix(const bd_sim *sim, bd_rfe_section *S)
     S->m22 = c;
 }
 
-/* whether the step sums section S from its ends and its mass alone
- * (carry): inside it, the forces phase takes no node */
-static inline int aggregated(const bd_rfe_section *S)
-{
-    return S->count >= 3 && !S->full;
-}
 
 /* element q of section S (on window W) where the section's ends are, at
  * its velocity; inside a section summed from its ends, the SDE after it
@@ -559,8 +671,11 @@ void bd_rfe_sync(bd_sim *sim)
     const bd_rfe_model *RM = bd_rfe_model_of(sim);
     if (!bd_rfe_of(sim)->tied)
         return;
-    for (int w = 0; w < RM->window_count; w++)
+    for (int w = 0; w < RM->window_count; w++) {
         ensure_placed(sim, w);
+        if (bd_rfe_of(sim)->sections[w].lazy_idlers)
+            write_rolls(sim, w);
+    }
 }
 
 /* elements from SENSOR_REACH before a sensor's element to SENSOR_REACH
@@ -598,7 +713,7 @@ void bd_rfe_sections_move(bd_sim *sim, double *ke_out, double *w_nc_out)
     const bd_rfe_model *RM = bd_rfe_model_of(sim);
     const int n = sim->model->n;
     const double dt = sim->model->dt, inv_dt = 1.0 / dt, g = sim->model->gravity;
-    double ke = 0.0, w_nc = 0.0;
+    double ke = 0.0, w_nc = 0.0, ke_rolls = 0.0, w_rolls = 0.0;
     for (int w = 0; w < RM->window_count; w++) {
         const bd_rfe_window *W = &RM->windows[w];
         bd_rfe_section *S = &R->sections[w];
@@ -648,7 +763,20 @@ void bd_rfe_sections_move(bd_sim *sim, double *ke_out, double *w_nc_out)
         w_nc += (N1 - S->f1) * h1 + (N2 - S->f2) * h2;
         /* the rolls' stick: the torque that brings each to v_k⁺/R (idler.c
          * advances it and books its work at ω), its friction on the belt
-         * against it at v_k */
+         * against it at v_k; the rolls the section keeps (idler_sums),
+         * their energy and work here from the window's sums: each roll's
+         * kinetic energy ½kr·(½(w⁻ + w⁺))², the torque's work on it
+         * ½kr·(w⁺² − w⁻²) and on the belt −kr·(w⁺ − w⁻)·h(ξ), w = ω·R */
+        if (S->idler_sums) {
+            affine xi = weight_at(W, S->s1, S->s2);
+            affine wm = speed_at(weight_at(W, S->s1p, S->s2p), S->v1, S->v2);
+            affine wp = speed_at(xi, u1, u2), hb = speed_at(xi, h1, h2);
+            affine dw = {wp.f0 - wm.f0, wp.f1 - wm.f1};
+            affine mid = {0.5 * (wp.f0 + wm.f0), 0.5 * (wp.f1 + wm.f1)};
+            ke_rolls += 0.5 * kr_sum(W, mid, mid);
+            w_rolls += kr_sum(W, dw, mid);
+            w_nc -= kr_sum(W, dw, hb) * inv_dt;
+        } else
         for (int q = 0; q < W->idler_count; q++) {
             int i = RM->idler_list[W->idler_first + q];
             if (R->carried[i] != w)
@@ -661,6 +789,11 @@ void bd_rfe_sections_move(bd_sim *sim, double *ke_out, double *w_nc_out)
             id->alpha = torque * id->m->inv_inertia;
             w_nc -= torque / Rr * (xj * h1 + xi * h2);
         }
+        /* every roll of its window carried this step: each at v(ξ)/R now,
+         * ξ from where its ends stood (supports) */
+        S->stuck = !S->full;
+        S->s1p = S->s1;
+        S->s2p = S->s2;
         S->v1 = u1;
         S->v2 = u2;
         S->s1 += u1 * dt;
@@ -670,8 +803,8 @@ void bd_rfe_sections_move(bd_sim *sim, double *ke_out, double *w_nc_out)
         else
             place(sim, W, S);
     }
-    *ke_out += 0.5 * ke;
-    *w_nc_out += w_nc * dt;
+    *ke_out += 0.5 * ke + ke_rolls;
+    *w_nc_out += w_nc * dt + w_rolls;
 }
 
 /* ------------------------------------------------------------------ */
@@ -758,6 +891,8 @@ static void book(bd_sim *sim, double lost)
 static void take_momentum(bd_sim *sim, const bd_rfe_window *W, bd_rfe_section *S)
 {
     const int n = sim->model->n;
+    /* its speeds change: its rolls are given back first */
+    unstick(sim, (int)(S - bd_rfe_of(sim)->sections));
     const double inv = 1.0 / (S->count - 1);
     double p1 = 0.0, p2 = 0.0;
     for (int q = 0, i = S->first; q < S->count; q++, i = bd_node_next(i, n)) {
@@ -1156,6 +1291,7 @@ void bd_rfe_sections_regroup(bd_sim *sim)
         const double b = RM->windows[w].b + LEAVE_BEYOND * sim->model->l0;
         while (S->count > 2 && (S->s2 >= b || S->s1 < a)) {
             ensure_near(sim, w);
+            unstick(sim, w);
             lost += leave(sim, w, S->s2 >= b ? 1 : 0);
             changed = 1;
         }
@@ -1173,6 +1309,7 @@ void bd_rfe_sections_regroup(bd_sim *sim)
             if (end < 0)
                 break;
             ensure_near(sim, w);
+            unstick(sim, w);
             lost += join(sim, w, end);
             changed = 1;
         }
