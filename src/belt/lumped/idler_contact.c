@@ -290,24 +290,23 @@ static void idler_contact(bd_sim *sim, bd_idler *id, const bd_idler_touch *pc)
 /* the supports phase with some idlers carried by the belt (belt/rfe):
  * an idler whose carried[i] is 0 or more has no contact; the caller has
  * updated the others' trackers */
-void bd_lumped_idlers_except(bd_sim *sim, const int *carried)
+void bd_lumped_idlers_listed(bd_sim *sim, const int *list, int count)
 {
     bd_idler_touch *touch = bd_lumped_of(sim)->touch;
-    const int count = sim->model->idler_count;
-    /* three passes of short bodies, so that the processor overlaps the
+    /* two passes of short bodies, so that the processor overlaps the
      * idlers' independent division and square-root chains */
-    for (int i = 0; i < count; i++)
-        if (carried[i] < 0)
-            nearest_point(sim, &sim->idlers[i], &touch[i]);
-    for (int i = 0; i < count; i++) {
-        if (carried[i] < 0) {
-            idler_contact(sim, &sim->idlers[i], &touch[i]);
-        } else if (!sim->idlers[i].lazy) {
-            sim->idlers[i].alpha = 0.0;
-            sim->idlers[i].torque = 0.0;
-            spring_energy(sim, &sim->idlers[i], 0.0);
-        }
-    }
+    for (int k = 0; k < count; k++)
+        nearest_point(sim, &sim->idlers[list[k]], &touch[list[k]]);
+    for (int k = 0; k < count; k++)
+        idler_contact(sim, &sim->idlers[list[k]], &touch[list[k]]);
+}
+
+void bd_lumped_idler_release(bd_sim *sim, int i)
+{
+    bd_idler *id = &sim->idlers[i];
+    id->alpha = 0.0;
+    id->torque = 0.0;
+    spring_energy(sim, id, 0.0);
 }
 
 /* the supports phase: every idler, after the wraps; where each touches

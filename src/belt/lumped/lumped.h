@@ -180,11 +180,12 @@ int bd_lumped_find_sector(const bd_sim *sim, const bd_pulley_body *p, const bd_w
 int bd_lumped_in_sector(const bd_sim *sim, const bd_pulley_body *p, int k);
 void bd_lumped_wrap(bd_sim *sim, bd_pulley_body *p, double external_torque);
 void bd_lumped_idlers(bd_sim *sim);
-/* the same for the idlers whose carried[i] is negative; the others have
- * no contact this step (their spring is let go, alpha and torque 0): the
- * belt formulation moves them itself (belt/rfe/sections.c) and has
- * updated the other idlers' trackers */
-void bd_lumped_idlers_except(bd_sim *sim, const int *carried);
+/* the same for the idlers listed, whose trackers the caller has updated
+ * (the others the belt formulation moves itself: belt/rfe/sections.c) */
+void bd_lumped_idlers_listed(bd_sim *sim, const int *list, int count);
+/* idler i's contact let go: its spring's energy to 0 (booked as the
+ * contact books it), no torque */
+void bd_lumped_idler_release(bd_sim *sim, int i);
 
 /* material.c: feed and discharge */
 void bd_lumped_material(bd_sim *sim);

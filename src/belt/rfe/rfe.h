@@ -38,6 +38,7 @@ typedef struct bd_rfe_window {
      * kr = I/R², Σ kr, Σ kr·x, Σ kr·x² (kg, kg·m, kg·m²), and of
      * c = rr·g·cos δ·share, Σ c and Σ c·x (m²/s², m³/s²) */
     double k0, k1, k2, c0, c1;
+    double along_min, along_max;  /* m, its first and last idler's place along d */
 } bd_rfe_window;
 
 /* the long section on window w now: elements first .. first + count − 1
@@ -128,7 +129,8 @@ typedef struct bd_rfe {
     int *sec;                 /* [n] */
     bd_rfe_section *sections; /* [window_count] */
     int *carried;             /* [idler_count] step: the section carrying idler i, or −1 */
-    double *carried_xi;       /* [idler_count] step: its weight ξ in that section */
+    int *free_idlers;         /* the idlers no section carries, pressing on the belt */
+    int free_idler_n, idlers_stale;   /* their count; carried changed since listed */
     int tied;                 /* the sections have been tied */
     int *run_first, *run_count;   /* [n] */
     int run_n;

@@ -225,6 +225,8 @@ void bd_rfe_sections_build(bd_sim *sim, bd_rfe_model *RM)
         /* the sums that carry its idlers while its rolls turn with it
          * (bd_rfe_supports) */
         W->k0 = W->k1 = W->k2 = W->c0 = W->c1 = 0.0;
+        W->along_min = W->b;
+        W->along_max = W->a;
         for (int q = W->idler_first; q < listed; q++) {
             int i = RM->idler_list[q];
             const bd_idler_model *im = sim->idlers[i].m;
@@ -235,6 +237,8 @@ void bd_rfe_sections_build(bd_sim *sim, bd_rfe_model *RM)
             W->k2 += kr * x * x;
             W->c0 += c;
             W->c1 += c * x;
+            W->along_min = fmin(W->along_min, RM->idler_along[i]);
+            W->along_max = fmax(W->along_max, RM->idler_along[i]);
         }
         /* the loading zone (a bay either side of the feed point): mass
          * lands there every step, the skirts rub */
@@ -257,7 +261,8 @@ void bd_rfe_sections_alloc(bd_sim *sim)
         R->sec[i] = -1;
     R->sections = bd_xcalloc((size_t)RM->window_count + 1, sizeof *R->sections);
     R->carried = bd_xcalloc((size_t)sim->model->idler_count + 1, sizeof *R->carried);
-    R->carried_xi = bd_xcalloc((size_t)sim->model->idler_count + 1, sizeof *R->carried_xi);
+    R->free_idlers = bd_xcalloc((size_t)sim->model->idler_count + 1, sizeof *R->free_idlers);
+    R->idlers_stale = 1;
     for (int i = 0; i < sim->model->idler_count; i++)
         R->carried[i] = -1;
     R->run_first = bd_xcalloc(n, sizeof *R->run_first);
@@ -277,7 +282,7 @@ void bd_rfe_sections_free(bd_rfe *R)
     free(R->sec);
     free(R->sections);
     free(R->carried);
-    free(R->carried_xi);
+    free(R->free_idlers);
     free(R->run_first);
     free(R->run_count);
     free(R->live_first);
@@ -303,8 +308,10 @@ void bd_rfe_sections_clone(bd_sim *dst, const bd_sim *src)
     D->sections = bd_xdup(S->sections, (size_t)bd_rfe_model_of(src)->window_count + 1,
                           sizeof *D->sections);
     D->carried = bd_xdup(S->carried, (size_t)src->model->idler_count + 1, sizeof *D->carried);
-    D->carried_xi = bd_xdup(S->carried_xi, (size_t)src->model->idler_count + 1,
-                            sizeof *D->carried_xi);
+    D->free_idlers = bd_xdup(S->free_idlers, (size_t)src->model->idler_count + 1,
+                             sizeof *D->free_idlers);
+    D->free_idler_n = S->free_idler_n;
+    D->idlers_stale = S->idlers_stale;
     D->run_first = bd_xdup(S->run_first, n, sizeof *D->run_first);
     D->run_count = bd_xdup(S->run_count, n, sizeof *D->run_count);
     D->live_first = bd_xdup(S->live_first, n, sizeof *D->live_first);
@@ -418,30 +425,44 @@ static void unstick(bd_sim *sim, int w)
     S->stuck = 0;
 }
 
+/* idler i carried by section w (or none: −1), the list of the idlers
+ * pressing on the belt then rebuilt (bd_rfe_supports) */
+static inline void set_carried(bd_rfe *R, int i, int w)
+{
+    if (R->carried[i] != w) {
+        R->carried[i] = w;
+        R->idlers_stale = 1;
+    }
+}
+
 static void carry(bd_sim *sim)
 {
     bd_rfe *R = bd_rfe_of(sim);
     const bd_rfe_model *RM = bd_rfe_model_of(sim);
     const double l0 = sim->model->l0;
-    for (int i = 0; i < sim->model->idler_count; i++)
-        R->carried[i] = -1;
     for (int w = 0; w < RM->window_count; w++) {
         const bd_rfe_window *W = &RM->windows[w];
         bd_rfe_section *S = &R->sections[w];
+        const int *list = RM->idler_list + W->idler_first;
         int full = W->has_feed;
-        if (S->count >= 2) {
+        if (S->count < 2) {
+            for (int q = 0; q < W->idler_count; q++)
+                set_carried(R, list[q], -1);
+        } else if (W->idler_count > 0) {
             /* an idler's weight ξ: where it stands between the section's
-             * first and last element */
+             * first and last element; the window's first and last idler
+             * inside it, all are (ξ grows along the window) */
             const double inv = 1.0 / (S->s2 - S->s1), inner = 0.5 * l0 * inv;
-            const int *list = RM->idler_list + W->idler_first;
-            for (int q = 0; q < W->idler_count; q++) {
-                int i = list[q];
-                double xi = (RM->idler_along[i] - S->s1) * inv;
-                if (xi < inner || 1.0 - xi < inner) {
-                    full = 1;
-                } else {
-                    R->carried[i] = w;
-                    R->carried_xi[i] = xi;
+            double x0 = (W->along_min - S->s1) * inv, x1 = (W->along_max - S->s1) * inv;
+            if (x0 >= inner && 1.0 - x1 >= inner) {
+                if (R->carried[list[0]] != w || R->carried[list[W->idler_count - 1]] != w)
+                    for (int q = 0; q < W->idler_count; q++)
+                        set_carried(R, list[q], w);
+            } else {
+                full = 1;
+                for (int q = 0; q < W->idler_count; q++) {
+                    double xi = (RM->idler_along[list[q]] - S->s1) * inv;
+                    set_carried(R, list[q], xi < inner || 1.0 - xi < inner ? -1 : w);
                 }
             }
         }
@@ -568,7 +589,9 @@ void bd_rfe_supports(bd_sim *sim)
                 continue;
             bd_idler *id = &sim->idlers[i];
             const bd_idler_model *im = id->m;
-            double xi = R->carried_xi[i], xj = 1.0 - xi;
+            double xi = (RM->idler_along[i] - S->s1) / (S->s2 - S->s1), xj = 1.0 - xi;
+            /* its contact let go (its spring's energy to 0) */
+            bd_lumped_idler_release(sim, i);
             /* its tracker: the element over it, from the section */
             double at = xi * (S->count - 1);
             int j = (int)at, e = S->first + j;
@@ -592,10 +615,17 @@ void bd_rfe_supports(bd_sim *sim)
             S->p2 += pr * xi;
         }
     }
-    for (int i = 0; i < sim->model->idler_count; i++)
-        if (R->carried[i] < 0)
-            bd_tracker_update(sim, &sim->idlers[i].tr);
-    bd_lumped_idlers_except(sim, R->carried);
+    /* the idlers no section carries press on the belt */
+    if (R->idlers_stale) {
+        R->free_idler_n = 0;
+        for (int i = 0; i < sim->model->idler_count; i++)
+            if (R->carried[i] < 0)
+                R->free_idlers[R->free_idler_n++] = i;
+        R->idlers_stale = 0;
+    }
+    for (int k = 0; k < R->free_idler_n; k++)
+        bd_tracker_update(sim, &sim->idlers[R->free_idlers[k]].tr);
+    bd_lumped_idlers_listed(sim, R->free_idlers, R->free_idler_n);
 }
 
 /* the section's mass matrix: Σ m_j·N_j·N_jᵀ, kept in it */
@@ -782,7 +812,7 @@ void bd_rfe_sections_move(bd_sim *sim, double *ke_out, double *w_nc_out)
             if (R->carried[i] != w)
                 continue;
             bd_idler *id = &sim->idlers[i];
-            double xi = R->carried_xi[i], xj = 1.0 - xi;
+            double xi = (RM->idler_along[i] - S->s1) / (S->s2 - S->s1), xj = 1.0 - xi;
             double Rr = id->m->radius;
             double torque = id->m->inertia * ((xj * u1 + xi * u2) / Rr - id->omega) * inv_dt;
             id->torque = torque;
