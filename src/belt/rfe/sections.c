@@ -43,6 +43,12 @@
  * K = Σ I/R²·N_k·N_kᵀ, P = Σ (I·ω_k/R)·N_k, each roll then at ω⁺ = v_k⁺/R;
  * the friction that turns it is booked as the contact's friction is (on
  * the belt at v_k, on the roll at ω·R: no work while they roll together).
+ * Once its rolls turn with it (every one carried the step before, each at
+ * v_k/R), K, P, F_rr, their kinetic energy and the torques' work are
+ * quadratic and linear in the idlers' places x_k, so they come in O(1)
+ * from the window's sums of I/R², I/R²·x, I/R²·x², c and c·x (c = rr·g·
+ * cos δ·share), with the load over each idler the section's mean (the
+ * law's uniform load); the rolls' speeds are written when read.
  *
  * **Its step costs O(1)**, not O(count): inside it every SDE pulls its
  * two elements alike, T·d forward and back, so the elements inside feel
@@ -346,21 +352,6 @@ static inline int aggregated(const bd_rfe_section *S)
     return S->count >= 3 && !S->full;
 }
 
-/* the forces phase: which idlers each section carries (those of its
- * window more than half an element inside its ends: all of them while its
- * ends stand within an element of the window's, in mid-bay, half a bay of
- * at least four elements from the nearest idler; with two elements the
- * first element joining a little over one element inside its window, the
- * chord from the sagging free belt, left the nearest idler out, a quarter
- * of the cement plant's sections summed element by element at speed;
- * should the belt not join it, an element too far off the
- * line, the idlers beyond its ends press on the free belt again), and
- * whether it is summed element by element (full): the feed in its window,
- * or an idler of its window pressing on it. Else only its ends take
- * forces: an idler outside its window stands at least half a bay less
- * half an element (LEAVE_BEYOND) from its end, 1.5 elements or more, and
- * its contact's three nodes (idler_contact.c) reach its end, not the
- * element inside it. */
 static inline void ensure_placed(bd_sim *sim, int w);
 
 /* an affine function of an idler's place x (from its window's start a):
@@ -435,6 +426,21 @@ static inline void set_carried(bd_rfe *R, int i, int w)
     }
 }
 
+/* the forces phase: which idlers each section carries (those of its
+ * window more than half an element inside its ends: all of them while its
+ * ends stand within an element of the window's, in mid-bay, half a bay of
+ * at least four elements from the nearest idler; with two elements the
+ * first element joining a little over one element inside its window, the
+ * chord from the sagging free belt, left the nearest idler out, a quarter
+ * of the cement plant's sections summed element by element at speed;
+ * should the belt not join it, an element too far off the
+ * line, the idlers beyond its ends press on the free belt again), and
+ * whether it is summed element by element (full): the feed in its window,
+ * or an idler of its window pressing on it. Else only its ends take
+ * forces: an idler outside its window stands at least half a bay less
+ * half an element (LEAVE_BEYOND) from its end, 1.5 elements or more, and
+ * its contact's three nodes (idler_contact.c) reach its end, not the
+ * element inside it. */
 static void carry(bd_sim *sim)
 {
     bd_rfe *R = bd_rfe_of(sim);
