@@ -126,8 +126,8 @@ typedef struct bd_belt_ops {
     /* its state made whole for reading from outside the step: a belt that
      * keeps some of it in a lumped form within the step (the rfe belt's
      * long sections place their elements lazily) writes it out; called
-     * before and after a step that books energy, and after bd_sim_step;
-     * may be NULL */
+     * before and after a step that books energy, after bd_sim_step and
+     * after a step that failed; may be NULL */
     void (*sync)(bd_sim *sim);
     /* events the formulation recorded in the step, said after the run */
     void (*report_events)(bd_sim *sim);

@@ -287,9 +287,8 @@ static void idler_contact(bd_sim *sim, bd_idler *id, const bd_idler_touch *pc)
     spring_energy(sim, id, fn * fn * im->half_per_k);
 }
 
-/* the supports phase with some idlers carried by the belt (belt/rfe):
- * an idler whose carried[i] is 0 or more has no contact; the caller has
- * updated the others' trackers */
+/* the supports phase for the idlers listed only (belt/rfe: those no long
+ * section carries), whose trackers the caller has updated */
 void bd_lumped_idlers_listed(bd_sim *sim, const int *list, int count)
 {
     bd_idler_touch *touch = bd_lumped_of(sim)->touch;
