@@ -812,18 +812,19 @@ void bd_rfe_sections_move(bd_sim *sim, double *ke_out, double *w_nc_out)
             ke_rolls += 0.5 * kr_sum(W, mid, mid);
             w_rolls += kr_sum(W, dw, mid);
             w_nc -= kr_sum(W, dw, hb) * inv_dt;
-        } else
-        for (int q = 0; q < W->idler_count; q++) {
-            int i = RM->idler_list[W->idler_first + q];
-            if (R->carried[i] != w)
-                continue;
-            bd_idler *id = &sim->idlers[i];
-            double xi = (RM->idler_along[i] - S->s1) / (S->s2 - S->s1), xj = 1.0 - xi;
-            double Rr = id->m->radius;
-            double torque = id->m->inertia * ((xj * u1 + xi * u2) / Rr - id->omega) * inv_dt;
-            id->torque = torque;
-            id->alpha = torque * id->m->inv_inertia;
-            w_nc -= torque / Rr * (xj * h1 + xi * h2);
+        } else {
+            for (int q = 0; q < W->idler_count; q++) {
+                int i = RM->idler_list[W->idler_first + q];
+                if (R->carried[i] != w)
+                    continue;
+                bd_idler *id = &sim->idlers[i];
+                double xi = (RM->idler_along[i] - S->s1) / (S->s2 - S->s1), xj = 1.0 - xi;
+                double Rr = id->m->radius;
+                double torque = id->m->inertia * ((xj * u1 + xi * u2) / Rr - id->omega) * inv_dt;
+                id->torque = torque;
+                id->alpha = torque * id->m->inv_inertia;
+                w_nc -= torque / Rr * (xj * h1 + xi * h2);
+            }
         }
         /* every roll of its window carried this step: each at v(ξ)/R now,
          * ξ from where its ends stood (supports) */
