@@ -178,6 +178,9 @@ typedef struct bd_cost {
     double dt;                /* s, time step */
     double steps;             /* for simulation.duration */
     double seconds;           /* wall time of those steps (stabilization not counted) */
+    double stepped;           /* (node + idler)-equivalents each step costs: nodes +
+                                 idlers, or fewer when long sections stand for many
+                                 (bd_cost_update) */
     double rate;              /* (node + idler)-steps per second it assumes */
     double node_bytes, idler_bytes;
     double available;         /* bytes this process may use */

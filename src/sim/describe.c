@@ -202,10 +202,14 @@ void bd_sim_describe(const bd_sim *sim, FILE *f)
     bd_cost_bytes_text(c->bytes, mem, sizeof mem);
     bd_cost_bytes_text(c->physical, phys, sizeof phys);
     bd_cost_time_text(c->seconds, time, sizeof time);
+    char stepped[96] = "";
+    if (c->stepped < 0.999 * (c->nodes + c->idlers))
+        snprintf(stepped, sizeof stepped, ", each step about %.0f of them with the long sections",
+                 c->stepped);
     fprintf(f, "estimate: %.0f nodes and %.0f idlers, memory about %s (physical memory %s), "
-               "run time about %s for %g s (%.0f steps at %.2g node-steps/s; stabilization "
+               "run time about %s for %g s (%.0f steps at %.2g node-steps/s%s; stabilization "
                "not counted)\n", c->nodes, c->idlers, mem, phys, time,
-            def->simulation.duration, c->steps, c->rate);
+            def->simulation.duration, c->steps, c->rate, stepped);
     for (int i = 0; i < sim->warning_count; i++)
         fprintf(f, "warning: %s\n", sim->warnings[i]);
 }
