@@ -41,6 +41,11 @@ typedef struct bd_rfe_window {
     double along_min, along_max;  /* m, its first and last idler's place along d */
 } bd_rfe_window;
 
+/* an affine function of an idler's place x in its window, f0 + f1·x */
+typedef struct bd_rfe_affine {
+    double f0, f1;
+} bd_rfe_affine;
+
 /* the long section on window w now: elements first .. first + count − 1
  * (round the loop), on the window's line, evenly spaced between its two
  * ends, whose places along the line and speeds are its two degrees of
@@ -53,8 +58,9 @@ typedef struct bd_rfe_section {
      * rolls' inertia as mass at its ends (K, kg), their momentum (P,
      * kg·m/s) and their rolling resistance (F, N) */
     double k11, k12, k22, p1, p2, f1, f2;
-    /* its mass matrix Σ m_j·N_j·N_jᵀ, kept from when it last changed */
-    double m11, m12, m22;
+    /* its mass matrix Σ m_j·N_j·N_jᵀ, kept from when it last changed, and
+     * its mean mass per length Σm/(count·l0), kg/m */
+    double m11, m12, m22, mbar;
     /* step (forces): summed element by element (the feed in its window,
      * or an idler of it not carried), else from its ends and its mass */
     int full;
@@ -70,6 +76,9 @@ typedef struct bd_rfe_section {
     /* step: its idlers summed from the window's sums (stuck, rolling one
      * way faster than BD_ROLLING_SPEED); lazy: their rolls left to it */
     int idler_sums, lazy_idlers;
+    /* step (supports), with idler_sums: an idler's ξ and its roll's ω⁻·R
+     * as affine functions of its place in the window (sections.c) */
+    bd_rfe_affine xi, wm;
 } bd_rfe_section;
 
 /* compiled data (behind model->belt_model) */

@@ -356,9 +356,7 @@ static inline void ensure_placed(bd_sim *sim, int w);
 
 /* an affine function of an idler's place x (from its window's start a):
  * f0 + f1·x */
-typedef struct affine {
-    double f0, f1;
-} affine;
+typedef bd_rfe_affine affine;
 
 /* Σ kr·f(x)·g(x) over the window's idlers, from its sums */
 static inline double kr_sum(const bd_rfe_window *W, affine f, affine g)
@@ -575,12 +573,14 @@ void bd_rfe_supports(bd_sim *sim)
             affine xi = weight_at(W, S->s1, S->s2), xj = {1.0 - xi.f0, -xi.f1};
             /* ω⁻·R of each roll: last step's ξ, this step's speeds */
             affine wm = speed_at(weight_at(W, S->s1p, S->s2p), S->v1, S->v2);
+            S->xi = xi;
+            S->wm = wm;
             S->k11 = kr_sum(W, xj, xj);
             S->k12 = kr_sum(W, xj, xi);
             S->k22 = kr_sum(W, xi, xi);
             S->p1 = kr_sum(W, wm, xj);
             S->p2 = kr_sum(W, wm, xi);
-            double mbar = (S->m11 + 2.0 * S->m12 + S->m22) / (S->count * sim->model->l0);
+            double mbar = S->mbar;
             double f = (S->v1 > 0.0 ? 1.0 : -1.0) * mbar;
             S->f1 = f * (xj.f0 * W->c0 + xj.f1 * W->c1);
             S->f2 = f * (xi.f0 * W->c0 + xi.f1 * W->c1);
@@ -649,6 +649,7 @@ static void mass_matrix(const bd_sim *sim, bd_rfe_section *S)
     S->m11 = a;
     S->m12 = b;
     S->m22 = c;
+    S->mbar = (a + 2.0 * b + c) / (S->count * sim->model->l0);
 }
 
 
@@ -657,9 +658,9 @@ static void mass_matrix(const bd_sim *sim, bd_rfe_section *S)
  * takes the tension and dashpot force of the section's first (the forces
  * phase took only those at its ends: all are stretched alike) */
 static inline void place_one(bd_sim *sim, const bd_rfe_window *W, const bd_rfe_section *S, int q,
-                             int i)
+                             int i, double inv)
 {
-    const double xi = q / (double)(S->count - 1);
+    const double xi = q * inv;
     const double s = S->s1 + xi * (S->s2 - S->s1), v = S->v1 + xi * (S->v2 - S->v1);
     sim->x[i] = W->p0[0] + s * W->d[0];
     sim->y[i] = W->p0[1] + s * W->d[1];
@@ -676,8 +677,9 @@ static inline void place_one(bd_sim *sim, const bd_rfe_window *W, const bd_rfe_s
 static void place(bd_sim *sim, const bd_rfe_window *W, bd_rfe_section *S)
 {
     const int n = sim->model->n;
+    const double inv = 1.0 / (S->count - 1);
     for (int q = 0, i = S->first; q < S->count; q++, i = bd_node_next(i, n))
-        place_one(sim, W, S, q, i);
+        place_one(sim, W, S, q, i, inv);
     S->placed = 1;
 }
 
@@ -687,11 +689,12 @@ static void place(bd_sim *sim, const bd_rfe_window *W, bd_rfe_section *S)
 static void place_ends(bd_sim *sim, const bd_rfe_window *W, bd_rfe_section *S)
 {
     const int n = sim->model->n;
-    int last = last_of(S, n);
-    place_one(sim, W, S, 0, S->first);
-    place_one(sim, W, S, 1, bd_node_next(S->first, n));
-    place_one(sim, W, S, S->count - 2, bd_node_prev(last, n));
-    place_one(sim, W, S, S->count - 1, last);
+    const int last = last_of(S, n);
+    const double inv = 1.0 / (S->count - 1);
+    place_one(sim, W, S, 0, S->first, inv);
+    place_one(sim, W, S, 1, bd_node_next(S->first, n), inv);
+    place_one(sim, W, S, S->count - 2, bd_node_prev(last, n), inv);
+    place_one(sim, W, S, S->count - 1, last, inv);
     S->placed = 0;
 }
 
@@ -733,7 +736,8 @@ void bd_rfe_point_update(const bd_sim *sim_c, bd_tracker *tr)
             if (w < 0 || R->sections[w].placed)
                 continue;
             const bd_rfe_section *S = &R->sections[w];
-            place_one(sim, &bd_rfe_model_of(sim)->windows[w], S, (i - S->first + n) % n, i);
+            place_one(sim, &bd_rfe_model_of(sim)->windows[w], S, (i - S->first + n) % n, i,
+                      1.0 / (S->count - 1));
         }
     }
     bd_tracker_update(sim, tr);
@@ -804,8 +808,7 @@ void bd_rfe_sections_move(bd_sim *sim, double *ke_out, double *w_nc_out)
          * kinetic energy ½kr·(½(w⁻ + w⁺))², the torque's work on it
          * ½kr·(w⁺² − w⁻²) and on the belt −kr·(w⁺ − w⁻)·h(ξ), w = ω·R */
         if (S->idler_sums) {
-            affine xi = weight_at(W, S->s1, S->s2);
-            affine wm = speed_at(weight_at(W, S->s1p, S->s2p), S->v1, S->v2);
+            const affine xi = S->xi, wm = S->wm;
             affine wp = speed_at(xi, u1, u2), hb = speed_at(xi, h1, h2);
             affine dw = {wp.f0 - wm.f0, wp.f1 - wm.f1};
             affine mid = {0.5 * (wp.f0 + wm.f0), 0.5 * (wp.f1 + wm.f1)};
