@@ -144,7 +144,7 @@ int bd_cost_from_def(const bd_model_def *def, double duration, bd_cost *c, doubl
     c->idlers = be.idlers;
     c->node_bytes = be.node_bytes;
     c->idler_bytes = be.idler_bytes;
-    c->stepped = c->nodes + c->idlers;
+    c->stepped = be.stepped > 0.0 ? be.stepped : c->nodes + c->idlers;
     c->rate = be.rate;
     c->dt = def->simulation.time_step > 0.0 ? def->simulation.time_step
                                             : BD_TIME_STEP_SAFETY * be.stable_step;
@@ -208,14 +208,6 @@ int bd_cost_estimate(bd_sim *sim, bd_diag *diag)
     return 0;
 }
 
-/* a long section (belt.h topology) costs a step about what this many free
- * elements do, the idlers it carries nothing: the rfe belt's cement plant
- * (9746 elements, 207 sections standing for 9575, 1130 idlers) stepped its
- * 40 s start in 39.4-40.5 s, 52 µs a step, about 830 (node + idler)-steps
- * at RFE_RATE; 171 free elements, 3 per section and the 20 idlers outside
- * the windows make 812 */
-#define SECTION_ELEMENTS 3.0
-
 void bd_cost_update(bd_sim *sim)
 {
     bd_cost *c = &sim->own->cost;
@@ -228,7 +220,7 @@ void bd_cost_update(bd_sim *sim)
         belt->topology(sim, &top);
         double tied = fmin(top.window_length / sim->model->l0, c->nodes);
         if (top.windows > 0)
-            c->stepped = (c->nodes - tied) + SECTION_ELEMENTS * top.windows
+            c->stepped = (c->nodes - tied) + BD_SECTION_STEP_ELEMENTS * top.windows
                        + c->idlers * (1.0 - tied / c->nodes);
     }
     c->dt = sim->model->dt;

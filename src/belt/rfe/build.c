@@ -368,4 +368,10 @@ void bd_rfe_estimate(const bd_model_def *def, const bd_path *path, bd_belt_estim
                                        2.0 * def->belt.damping_ratio * sqrt(k * m), RM.k_shear,
                                        RM.k_bend, 0.0, def->belt.damping_ratio, &limit);
     out->rate = RFE_RATE;
+    /* with long sections, what their windows will hold (sections.c) */
+    double windows = 0.0, tied = fmin(bd_rfe_windows_estimate(def, path, l, &windows) / l,
+                                      out->nodes);
+    if (windows > 0.0 && out->nodes > 0.0)
+        out->stepped = (out->nodes - tied) + BD_SECTION_STEP_ELEMENTS * windows
+                     + out->idlers * (1.0 - tied / out->nodes);
 }

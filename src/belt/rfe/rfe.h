@@ -199,6 +199,11 @@ double bd_rfe_align_angle(const bd_sim *sim, int i);
 
 /* sections.c: variable topology */
 void bd_rfe_sections_build(bd_sim *sim, bd_rfe_model *RM);
+/* before the build (bd_rfe_estimate): the length the windows will hold,
+ * m, and how many there will be (*windows), from the definition and its
+ * path by set_windows' rules, the idlers at their given spacing */
+double bd_rfe_windows_estimate(const bd_model_def *def, const bd_path *path, double l0,
+                               double *windows);
 void bd_rfe_sections_alloc(bd_sim *sim);
 void bd_rfe_sections_free(bd_rfe *R);
 void bd_rfe_sections_free_model(bd_rfe_model *RM);

@@ -124,45 +124,55 @@ static inline double along(const bd_rfe_window *w, double x, double y)
     return (x - w->p0[0]) * w->d[0] + (y - w->p0[1]) * w->d[1];
 }
 
-/* the windows of idler set k's span: its stretches between idler
- * curves, each less `margin` at both ends and cut to whole bays from
- * mid-bay to mid-bay, in windows of at most group_length */
-static int set_windows(bd_sim *sim, int k, bd_rfe_window *out, int room)
+/* the bays a set of idlers `bay` apart on a straight span Ls long holds
+ * windows in: from the mid-bay point (i0 + ½)·bay to (i1 + ½)·bay, clear
+ * of a pulley or a curve by two bays and five elements (the free belt
+ * settles into its sag on at least two bays), beside an idler curve the
+ * longer of the stretches before and after it; *per: the bays of a window
+ * of at most group_length. None (i1 ≤ i0) where half a bay would not keep
+ * the idlers clear of an element at a window's end, nor a window hold a
+ * few elements (bay < 4·l0), on a vertical span, or on a span with a second
+ * row of idlers */
+static void window_bays(const bd_model_def *def, const bd_path *path, int k, double bay,
+                        double Ls, double l0, int *i0, int *i1, int *per)
 {
-    const bd_model_def *def = sim->model->def;
     const bd_idler_set_def *set = &def->idler_sets[k];
-    const int span = set->span;
-    const double bay = sim->model->idler_spacing[k], l0 = sim->model->l0;
-    if (bd_span_vertical(&sim->model->path, span) || sim->model->idlers_per_set[k] == 0)
-        return 0;
-    /* one row of idlers on the span (a second set there: no windows) */
+    *i0 = *i1 = 0;
+    *per = (int)floor(def->belt.group_length / bay + 1e-9);
+    if (*per < 1)
+        *per = 1;
     for (int q = 0; q < def->idler_set_count; q++)
-        if (q != k && def->idler_sets[q].span == span)
-            return 0;
-    /* half a bay must keep the idlers clear of an element at a window's
-     * end, and a window hold a few elements */
-    if (bay < 4.0 * l0)
-        return 0;
-    double p0[2], p1[2];
-    bd_sim_span_ends(sim, span, p0, p1);
-    double Ls = hypot(p1[0] - p0[0], p1[1] - p0[1]);
-    /* clear of a pulley or a curve by two bays and five elements: the
-     * free belt settles into its sag on at least two bays */
+        if (q != k && def->idler_sets[q].span == set->span)
+            return;
+    if (bay < 4.0 * l0 || bd_span_vertical(path, set->span))
+        return;
     const double margin = 2.0 * bay + 5.0 * l0;
     double from = 0.0, to = Ls;
     if (set->has_curve) {
-        /* the longer of the stretches before and after the curve */
         double c0 = set->curve_from * Ls, c1 = set->curve_to * Ls;
         if (c0 >= Ls - c1)
             to = c0;
         else
             from = c1;
     }
-    /* mid-bay points (i + ½)·bay inside [from + margin, to − margin] */
-    int i0 = (int)ceil((from + margin) / bay - 0.5), i1 = (int)floor((to - margin) / bay - 0.5);
-    int per = (int)floor(def->belt.group_length / bay + 1e-9);
-    if (per < 1)
-        per = 1;
+    *i0 = (int)ceil((from + margin) / bay - 0.5);
+    *i1 = (int)floor((to - margin) / bay - 0.5);
+}
+
+/* the windows of idler set k's span (window_bays), in windows of at most
+ * group_length */
+static int set_windows(bd_sim *sim, int k, bd_rfe_window *out, int room)
+{
+    const bd_model_def *def = sim->model->def;
+    const int span = def->idler_sets[k].span;
+    const double bay = sim->model->idler_spacing[k], l0 = sim->model->l0;
+    if (sim->model->idlers_per_set[k] == 0)
+        return 0;
+    double p0[2], p1[2];
+    bd_sim_span_ends(sim, span, p0, p1);
+    double Ls = hypot(p1[0] - p0[0], p1[1] - p0[1]);
+    int i0, i1, per;
+    window_bays(def, &sim->model->path, k, bay, Ls, l0, &i0, &i1, &per);
     int made = 0;
     for (int i = i0; i + 1 <= i1 && made < room;) {
         int j = i + per <= i1 ? i + per : i1;
@@ -184,6 +194,27 @@ static int set_windows(bd_sim *sim, int k, bd_rfe_window *out, int room)
         i = j;
     }
     return made;
+}
+
+double bd_rfe_windows_estimate(const bd_model_def *def, const bd_path *path, double l0,
+                               double *windows)
+{
+    *windows = 0.0;
+    if (!def->belt.group_sections || def->belt.group_length <= 0.0)
+        return 0.0;
+    double tied = 0.0;
+    for (int k = 0; k < def->idler_set_count; k++) {
+        const double bay = def->idler_sets[k].spacing;
+        const bd_path_segment *sp = bd_path_span(path, def->idler_sets[k].span);
+        double Ls = hypot(sp->p1[0] - sp->p0[0], sp->p1[1] - sp->p0[1]);
+        int i0, i1, per;
+        window_bays(def, path, k, bay, Ls, l0, &i0, &i1, &per);
+        if (i1 <= i0)
+            continue;
+        tied += (i1 - i0) * bay;
+        *windows += ceil((i1 - i0) / (double)per);
+    }
+    return tied;
 }
 
 void bd_rfe_sections_build(bd_sim *sim, bd_rfe_model *RM)
