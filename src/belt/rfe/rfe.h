@@ -76,6 +76,7 @@ typedef struct bd_rfe_section {
     /* step: its idlers summed from the window's sums (stuck, rolling one
      * way faster than BD_ROLLING_SPEED); lazy: their rolls left to it */
     int idler_sums, lazy_idlers;
+    int rolls_written;        /* its lazy rolls written out since it last moved */
     /* step (supports), with idler_sums: an idler's ξ and its roll's ω⁻·R
      * as affine functions of its place in the window (sections.c) */
     bd_rfe_affine xi, wm;

@@ -408,25 +408,36 @@ static inline affine speed_at(affine w, double v1, double v2)
     return (affine){v1 + w.f0 * (v2 - v1), w.f1 * (v2 - v1)};
 }
 
+/* a carried idler's tracker: the element of section S over it, at its
+ * weight xi in the section */
+static inline void carried_tracker(const bd_sim *sim, const bd_rfe_section *S, double xi,
+                                   bd_tracker *tr)
+{
+    const int n = sim->model->n;
+    double at = xi * (S->count - 1);
+    int j = (int)at, e = S->first + j;
+    tr->element = e >= n ? e - n : e;
+    tr->gamma = at - j;
+}
+
 /* section w's rolls written out from where they stand in it: each at
  * ω = v(ξ)/R of last step's ξ and its speeds now, its tracker over the
- * element there */
+ * element there (once after each step that kept them: rolls_written) */
 static void write_rolls(bd_sim *sim, int w)
 {
     const bd_rfe_model *RM = bd_rfe_model_of(sim);
     const bd_rfe_window *W = &RM->windows[w];
-    const bd_rfe_section *S = &bd_rfe_of(sim)->sections[w];
-    const int n = sim->model->n;
+    bd_rfe_section *S = &bd_rfe_of(sim)->sections[w];
+    if (S->rolls_written)
+        return;
     for (int q = 0; q < W->idler_count; q++) {
         int i = RM->idler_list[W->idler_first + q];
         bd_idler *id = &sim->idlers[i];
         double xp = (RM->idler_along[i] - S->s1p) / (S->s2p - S->s1p);
         id->omega = (S->v1 + xp * (S->v2 - S->v1)) / id->m->radius;
-        double at = (RM->idler_along[i] - S->s1) / (S->s2 - S->s1) * (S->count - 1);
-        int j = (int)at, e = S->first + j;
-        id->tr.element = e >= n ? e - n : e;
-        id->tr.gamma = at - j;
+        carried_tracker(sim, S, (RM->idler_along[i] - S->s1) / (S->s2 - S->s1), &id->tr);
     }
+    S->rolls_written = 1;
 }
 
 /* section w's rolls given back to the parts (before anything changes the
@@ -577,7 +588,6 @@ void bd_rfe_supports(bd_sim *sim)
         return;
     }
     const bd_rfe_model *RM = bd_rfe_model_of(sim);
-    const int n = sim->model->n;
     const double g = sim->model->gravity, inv_l0 = 1.0 / sim->model->l0;
     for (int w = 0; w < RM->window_count; w++) {
         const bd_rfe_window *W = &RM->windows[w];
@@ -600,6 +610,7 @@ void bd_rfe_supports(bd_sim *sim)
                 for (int q = 0; q < W->idler_count; q++)
                     sim->idlers[RM->idler_list[W->idler_first + q]].lazy = 1;
                 S->lazy_idlers = 1;
+                S->rolls_written = 0;
             }
             affine xi = weight_at(W, S->s1, S->s2), xj = {1.0 - xi.f0, -xi.f1};
             /* ω⁻·R of each roll: last step's ξ, this step's speeds */
@@ -630,10 +641,7 @@ void bd_rfe_supports(bd_sim *sim)
             /* its contact let go (its spring's energy to 0) */
             bd_lumped_idler_release(sim, i);
             /* its tracker: the element over it, from the section */
-            double at = xi * (S->count - 1);
-            int j = (int)at, e = S->first + j;
-            id->tr.element = e >= n ? e - n : e;
-            id->tr.gamma = at - j;
+            carried_tracker(sim, S, xi, &id->tr);
             /* the belt and load over it */
             double m = sim->mass[id->tr.element] * inv_l0;
             double N = g * W->cos_slope * m * RM->idler_share[i];
@@ -863,6 +871,7 @@ void bd_rfe_sections_move(bd_sim *sim, double *ke_out, double *w_nc_out)
         /* every roll of its window carried this step: each at v(ξ)/R now,
          * ξ from where its ends stood (supports) */
         S->stuck = !S->full;
+        S->rolls_written = 0;
         S->s1p = S->s1;
         S->s2p = S->s2;
         S->v1 = u1;
