@@ -133,6 +133,11 @@ typedef struct bd_pulley_body {
 typedef struct bd_idler_model {
     double centre[2];      /* m */
     double radius;         /* m */
+    /* m, where the belt's running line touches it: the radius less the
+     * corner that line cuts at rest (belt/lumped/idler_contact.c) */
+    double contact_radius;
+    int line_quintic;      /* the belt's running line there is the quintic
+                              (belt/lumped/idler_contact.c) */
     double inertia;        /* kg·m² */
     double mu_s, mu_d;     /* belt–idler friction, - */
     double rolling;        /* rolling resistance coefficient, - */

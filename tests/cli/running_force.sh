@@ -16,12 +16,16 @@
 # - axial and moving_node: no node passes an idler; they deliver the law
 #   to round-off (measured −8e-13 and −4e-8): held to 1e-4.
 # - discrete (EI = 0): the belt turns by 0.225 rad over each return roll at
-#   0.46 of its wave speed, and the nodes' passage pumps the spans (the
-#   known limit of that belt, physics.md §10: +31 % when measured there,
-#   +34 % now). The check must say so: not a pass, a warning that names
-#   the figures and the remedies, a failed row in the checks table. When
-#   the discrete belt learns to pass this loop, this case moves to the
-#   first list.
+#   0.46 of its wave speed. Pressed on through the quadratic line round
+#   each node, the nodes' passage pumped the spans (+34 %); on the quintic
+#   running line it holds its law (measured +0.3 %): held to the 3 % of
+#   that belt, with no warning (physics.md §5, §10).
+# - discrete at a given 0.35 m element, over twice the default: 8.6
+#   elements to a return bay, the quadratic line there, and the passage's
+#   excess is back (measured +13.9 %).
+#   The check must say so: not a pass, a warning that names the figures
+#   and the remedies, a failed row in the checks table, a bad card in the
+#   report.
 # - a run that ends before its belt runs steadily is not judged: it says
 #   why, and the checks table has no row for it.
 # - design.secondary: individual (tests/data/static_individual.yaml, the
@@ -49,6 +53,12 @@ if want == "exact":
             and rf["tolerance_rel"] == 0.01 and len(rows) == 1 and rows[0]["pass"]
             and not warned)
     print("ok" if good else "bad", rf, rows, warned)
+elif want == "holds":
+    good = (rf["checked"] and rf["pass"] and abs(rf["error_rel"]) <= 0.03
+            and abs(rf["law_N"] - law_hand) <= 1e-6 * law_hand
+            and rf["tolerance_rel"] == 0.03 and len(rows) == 1 and rows[0]["pass"]
+            and not warned)
+    print("ok" if good else "bad", "error %+.2f %%" % (100 * rf["error_rel"]), rf, rows, warned)
 elif want == "excess":
     good = (rf["checked"] and not rf["pass"] and rf["error_rel"] > 0.03
             and abs(rf["law_N"] - law_hand) <= 1e-6 * law_hand
@@ -70,21 +80,25 @@ elif want == "individual":
           rf)
 PY
 }
-for f in axial moving_node discrete; do
-    sed "s/belt: {/belt: {formulation: $f, /" "$tmp/loop.yaml" >"$tmp/$f.yaml"
+sed "s/belt: {/belt: {element_length: 0.35, /" "$tmp/loop.yaml" >"$tmp/coarse.yaml"
+for f in axial moving_node discrete coarse; do
+    if [ "$f" != coarse ]; then
+        sed "s/belt: {/belt: {formulation: $f, /" "$tmp/loop.yaml" >"$tmp/$f.yaml"
+    fi
     "$BELTDYN" run "$tmp/$f.yaml" -o "$tmp/$f" --quiet >/dev/null 2>"$tmp/err" \
         || bad "run $f" "$(cat "$tmp/err")"
 done
 judge "axial: the law to round-off" "$(verdict "$tmp/axial/summary.json" exact)"
 judge "moving_node: the law to round-off" "$(verdict "$tmp/moving_node/summary.json" exact)"
-judge "discrete: the excess said" "$(verdict "$tmp/discrete/summary.json" excess)"
+judge "discrete: the law within 3 %" "$(verdict "$tmp/discrete/summary.json" holds)"
+judge "discrete, 0.3 m elements: the excess said" "$(verdict "$tmp/coarse/summary.json" excess)"
 sed 's/duration: 20,/duration: 5,/' "$tmp/axial.yaml" >"$tmp/short.yaml"
 "$BELTDYN" run "$tmp/short.yaml" -o "$tmp/short" --quiet >/dev/null 2>"$tmp/err" \
     || bad "run short" "$(cat "$tmp/err")"
 judge "5 s run: not judged" "$(verdict "$tmp/short/summary.json" unsteady)"
 # the report shows it
-"$BELTDYN" report "$tmp/discrete" >/dev/null 2>"$tmp/err" || bad "report" "$(cat "$tmp/err")"
-if grep -q 'card bad"><div class=k>running force</div><div class=v>+' "$tmp/discrete/report.html"; then
+"$BELTDYN" report "$tmp/coarse" >/dev/null 2>"$tmp/err" || bad "report" "$(cat "$tmp/err")"
+if grep -q 'card bad"><div class=k>running force</div><div class=v>+' "$tmp/coarse/report.html"; then
     ok "report: the running force card, marked bad"
 else
     bad "report" "no bad running-force card in report.html"

@@ -73,6 +73,48 @@ static void setup_pulleys(bd_sim *sim, const bd_layout *lay)
     L->wrap_mark = bd_xcalloc((size_t)sim->model->n, sizeof *L->wrap_mark);
 }
 
+/* the discrete belt's idlers press on its quintic running line where
+ * their bay holds this many elements and the belt turns over them by at
+ * least BD_QUINTIC_TURN, on the quadratic line elsewhere
+ * (idler_contact.c).
+ * - The bay: on 7 elements to a bay (tests/data/mesh_loaded_76m's carry
+ *   idlers at the default element) the quintic's six nodes left the belt
+ *   between two idlers ringing at 18.5 Hz after its start, a mode of that
+ *   mesh alone: the raw peak of the drive's force in test_scurve_peak rose
+ *   from 5494 to 5976 N, against 5570 N at half the element. On 10 and
+ *   more, the return bays of docs/physics.md §10's loops, it is what
+ *   holds their running force to the law.
+ * - The turn: what a passing idler radiates grows as φ²; generated
+ *   conveyors whose idlers turn the belt by 0.03 rad drew up to 3.5 %
+ *   over their law on the quadratic line, so below 0.02 rad it stays
+ *   under 1.6 %, and the quadratic costs half as much (bench_long_conveyor,
+ *   φ 0.011 rad on its return: 12-14 % slower with the quintic there). */
+#define BD_QUINTIC_BAY_ELEMENTS 10.0
+#define BD_QUINTIC_TURN 0.02
+
+/* how the discrete belt turns over the idler of set k at s on span sp,
+ * rad: the set's sag at rest (idler_turn.c, none with bending stiffness,
+ * whose belt rounds the corner itself) and the path's own turn over the
+ * idler's bay (a vertical curve; convex, toward the roll, counts
+ * positive); 0 for other belts */
+static double idler_turn_at(const bd_sim *sim, int k, const bd_path_segment *sp, double s)
+{
+    if (!bd_lumped_model_of(sim)->idler_line_quintic || sim->model->EI > 0.0)
+        return 0.0;
+    const bd_path *path = &sim->model->path;
+    double half = 0.5 * sim->model->idler_spacing[k];
+    double s1 = fmax(s - half, sp->s0), s2 = fmin(s + half, sp->s0 + sp->length);
+    double p[2], t1[2], t2[2], t[2], up[2];
+    bd_path_point(path, s1, p, t1);
+    bd_path_point(path, s2, p, t2);
+    bd_path_point(path, s, p, t);
+    bd_path_up_normal(t, up);
+    double turn = -((t2[0] - t1[0]) * up[0] + (t2[1] - t1[1]) * up[1]);
+    if (sim->model->idler_turn)
+        turn += sim->model->idler_turn[k];
+    return turn > 0.0 ? turn : 0.0;
+}
+
 static void setup_idlers(bd_sim *sim)
 {
     const bd_model_def *def = sim->model->def;
@@ -111,6 +153,14 @@ static void setup_idlers(bd_sim *sim)
             id->tr.p[1] = sim->y[e] + g * (sim->y[e1] - sim->y[e]);
             im->s = s;
             im->radius = set->radius;
+            /* the running line it presses on, and where: the corner that
+             * line cuts over it taken off its radius (idler_contact.c) */
+            double turn = idler_turn_at(sim, k, sp, s);
+            im->line_quintic = turn >= BD_QUINTIC_TURN
+                               && sim->model->idler_spacing[k]
+                                      >= BD_QUINTIC_BAY_ELEMENTS * sim->model->l0;
+            im->contact_radius =
+                set->radius - bd_lumped_line_corner(turn, sim->model->l0, im->line_quintic);
             im->centre[0] = id->tr.p[0] + nx * set->radius;
             im->centre[1] = id->tr.p[1] + ny * set->radius;
             im->inertia = set->inertia > 0.0 ? set->inertia : 1e-6;
@@ -207,6 +257,9 @@ int bd_lumped_build_sized(bd_sim *sim, bd_diag *diag, size_t state_size, size_t 
     LM->k_bend = sim->model->EI / sim->model->l0;
     /* contacts: stiff and linearly implicit (pulley_contact.c, idler_contact.c) */
     LM->k_contact = 100.0 * LM->k_axial;
+    /* the running line the idlers press on, quintic where it pays
+     * (setup_idlers, idler_contact.c) */
+    LM->idler_line_quintic = def->belt.formulation == BD_FORMULATION_DISCRETE;
     /* the arc an element spans on the smallest pulley: the element takes
      * the belt's length round the shell (wrap_elements.c), so there is no
      * chordal action (docs/physics.md §4: 0.06 % of the tension at the

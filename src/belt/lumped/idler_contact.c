@@ -1,9 +1,33 @@
 /* Belt–idler contact (seed 001 §4.3.2, changed by issue 10): an idler
- * presses on the belt's smoothed line at the point nearest its centre.
+ * presses on the belt's running line at the point nearest its centre.
  *
- * The smoothed line: round node k, the quadratic Bézier from the middle of
- * element k − 1 through the corner at node k to the middle of element k
- * (piece_at below); the pieces meet with one tangent. Seed 001 presses
+ * The discrete belt's running line, where the idler's bay holds ten
+ * elements or more (build.c), is the uniform quintic B-spline of its
+ * nodes (quintic_* below): each point a weighted mean of six nodes, C4,
+ * the weights smooth in the point's place along the belt. An idler is a
+ * load fixed in space that the nodes pass at v/l0; what it gives each
+ * node is a weight of the spline, so the force's harmonics at that
+ * passage fall as the weights' spectrum, as (l0·q/2π)⁶ for the spline of
+ * degree 5 against the cube for the quadratic below. With the quadratic
+ * the passage radiated short transverse waves into the spans that their
+ * dashpots and contacts dissipated: the minimal loop of docs/physics.md
+ * §10 (3 m return bays turning the belt by 0.225 rad) drew +19, +27 and
+ * +29 % over its law at 4, 5 and 6 m/s; on the quintic +0.7, +3.3 and
+ * +0.4 % (§5). The line cuts the corner of the belt's free lines over a
+ * roll by ½·Ḡ·φ·l0 (φ the turn, Ḡ = 0.7321 the weights' mean difference,
+ * derived in §5), within ±0.2 % of that whatever the nodes' phase; the
+ * idler presses at its contact_radius, the radius less that cut at the
+ * set's turn at rest (build.c), so the belt's free lines meet on the
+ * roll's top and its sag is the string's.
+ *
+ * The rfe belt's running line (its element centres' chain) stays the
+ * quadratic round each node: the quintic's six nodes reach three elements
+ * past the roll, into the long sections (belt/rfe/sections.c), which take
+ * forces at their ends only.
+ *
+ * The quadratic line: round node k, the quadratic Bézier from the middle
+ * of element k − 1 through the corner at node k to the middle of element
+ * k (piece_at below); the pieces meet with one tangent. Seed 001 presses
  * the roll on the foot point of its centre on the straight element
  * (eqs 4.95–4.102): when a node passes the roll the element over it
  * changes and the normal turns at once by the belt's angle β there, an
@@ -51,6 +75,12 @@
 
 #include "laws/rolling.h"
 
+/* Ḡ: the weights' mean difference Σ_jm w_j·w_m·|j − m| averaged over the
+ * piece, exactly (docs/physics.md §5): the quintic's 292223/399168
+ * (0.73056 to 0.73359 along it), the quadratic's 7/15 (0.4375 to 0.5) */
+#define QUINTIC_MEAN_DIFFERENCE (292223.0 / 399168.0)
+#define QUADRATIC_MEAN_DIFFERENCE (7.0 / 15.0)
+
 /* predictive contact gap, as a fraction of the element length */
 #define IDLER_CONTACT_GAP 0.02
 /* the nearest point (nearest_point): a first Newton step longer than this
@@ -65,7 +95,7 @@
  * clearance that counts as lift-off (system.h) */
 static void note_lifted(bd_sim *sim, const bd_idler *id, double d)
 {
-    if (d - id->m->radius > BD_LIFT_OFF_CLEARANCE && !sim->stabilizing)
+    if (d - id->m->contact_radius > BD_LIFT_OFF_CLEARANCE && !sim->stabilizing)
         bd_lift_off_note(sim, id->m->s);
 }
 
@@ -75,7 +105,8 @@ static void note_lifted(bd_sim *sim, const bd_idler *id, double d)
  * the element middles with one tangent (C1). The weights of nodes k − 1,
  * k, k + 1 in its point at t, and that point from c. Derived here
  * (docs/physics.md §5). */
-static void piece_at(const bd_sim *sim, int k, double t, const double c[2], bd_idler_touch *pc,
+static inline __attribute__((always_inline)) void piece_at(const bd_sim *sim, int k, double t,
+                                                            const double c[2], bd_idler_touch *pc,
                      double r[2])
 {
     const int n = sim->model->n;
@@ -86,6 +117,7 @@ static void piece_at(const bd_sim *sim, int k, double t, const double c[2], bd_i
     pc->w[0] = 0.5 * (1.0 - t) * (1.0 - t);
     pc->w[2] = 0.5 * t * t;
     pc->w[1] = 1.0 - pc->w[0] - pc->w[2];
+    pc->count = 3;
     r[0] = pc->w[0] * sim->x[a] + pc->w[1] * sim->x[k] + pc->w[2] * sim->x[b] - c[0];
     r[1] = pc->w[0] * sim->y[a] + pc->w[1] * sim->y[k] + pc->w[2] * sim->y[b] - c[1];
 }
@@ -161,6 +193,197 @@ __attribute__((noinline)) static void converge(const bd_sim *sim, const double c
     }
 }
 
+/* The quintic running line on element e (t = 0 at node e, 1 at node
+ * e + 1): B(t) = Σ w_i(t)·x_i over the nodes e − 2 … e + 3, w_i(t) the
+ * uniform quintic B-spline's basis, here as polynomials in t (times 120):
+ *   w_0 = (1 − t)⁵, w_5 = t⁵,
+ *   w_1 = 26 − 50t + 20t² + 20t³ − 20t⁴ + 5t⁵,
+ *   w_2 = 66 − 60t² + 30t⁴ − 10t⁵,
+ *   w_3 = 26 + 50t + 20t² − 20t³ − 20t⁴ + 10t⁵,
+ *   w_4 = 1 + 5t + 10t² + 10t³ + 5t⁴ − 5t⁵
+ * (the cardinal B-spline N₅(t + 5 − i); they sum to 1 and reproduce a
+ * straight belt). The pieces meet with four continuous derivatives. */
+static void quintic_nodes(int n, int e, int node[6])
+{
+    if (e >= 2 && e + 3 < n) {
+        for (int i = 0; i < 6; i++)
+            node[i] = e - 2 + i;
+        return;
+    }
+    node[2] = e;
+    node[1] = bd_node_prev(e, n);
+    node[0] = bd_node_prev(node[1], n);
+    node[3] = bd_node_next(e, n);
+    node[4] = bd_node_next(node[3], n);
+    node[5] = bd_node_next(node[4], n);
+}
+
+/* the weights at t from the powers of t and u = 1 − t (the basis is
+ * symmetric, w_5−i(t) = w_i(u); independent products, where six Horner
+ * chains cost 3 % of bench_long_conveyor) */
+static void quintic_weights(double t, double w[6])
+{
+    const double u = 1.0 - t, c = 1.0 / 120.0;
+    const double t2 = t * t, t3 = t2 * t, t4 = t2 * t2, t5 = t4 * t;
+    const double u2 = u * u, u3 = u2 * u, u4 = u2 * u2, u5 = u4 * u;
+    w[0] = c * u5;
+    w[5] = c * t5;
+    w[4] = c * (1.0 + 5.0 * (t + t4 - t5) + 10.0 * (t2 + t3));
+    w[1] = c * (1.0 + 5.0 * (u + u4 - u5) + 10.0 * (u2 + u3));
+    w[2] = c * (66.0 - 60.0 * t2 + 30.0 * t4 - 10.0 * t5);
+    w[3] = c * (66.0 - 60.0 * u2 + 30.0 * u4 - 10.0 * u5);
+}
+
+/* the piece's coefficients in the power basis, times 120: 120·B(t) =
+ * Σ_j p_j·t^j from one coordinate q of its six nodes (the polynomials
+ * above, gathered) */
+static void quintic_coefficients(const double *q, const int nd[6], double p[6])
+{
+    double x0 = q[nd[0]], x1 = q[nd[1]], x2 = q[nd[2]], x3 = q[nd[3]], x4 = q[nd[4]],
+           x5 = q[nd[5]];
+    double sa = x0 + x4, sb = x1 + x3, da = x4 - x0, db = x3 - x1;
+    p[0] = sa + 26.0 * sb + 66.0 * x2;
+    p[1] = 5.0 * da + 50.0 * db;
+    p[2] = 10.0 * sa + 20.0 * sb - 60.0 * x2;
+    p[3] = 10.0 * da - 20.0 * db;
+    p[4] = 5.0 * sa - 20.0 * sb + 30.0 * x2;
+    p[5] = x5 - x0 + 5.0 * (x1 - x4) + 10.0 * (x3 - x2);
+}
+
+static inline double quintic_value(const double p[6], double t)
+{
+    return p[0] + t * (p[1] + t * (p[2] + t * (p[3] + t * (p[4] + t * p[5]))));
+}
+
+/* Newton's step on (B − c)·B' = 0 at t, B from the coefficients of the
+ * two coordinates (120·B: the factor cancels from (B·B')/(B'² + B·B'')) */
+static double quintic_newton(const double px[6], const double py[6], double cx, double cy,
+                             double t)
+{
+    const double *p[2] = {px, py};
+    const double c[2] = {cx, cy};
+    double B[2], D1[2], D2[2];
+    const double t2 = t * t, t3 = t2 * t, t4 = t2 * t2, t5 = t4 * t;
+    for (int a = 0; a < 2; a++) {
+        const double *q = p[a];
+        B[a] = (q[0] - 120.0 * c[a]) + q[1] * t + q[2] * t2 + q[3] * t3 + q[4] * t4 + q[5] * t5;
+        D1[a] = q[1] + 2.0 * q[2] * t + 3.0 * q[3] * t2 + 4.0 * q[4] * t3 + 5.0 * q[5] * t4;
+        D2[a] = 2.0 * q[2] + 6.0 * q[3] * t + 12.0 * q[4] * t2 + 20.0 * q[5] * t3;
+    }
+    double dB2 = D1[0] * D1[0] + D1[1] * D1[1];
+    double h = dB2 + B[0] * D2[0] + B[1] * D2[1];
+    /* h > 0 unless the roll sat inside the line's own curvature; the
+     * tangent step then (as newton_step) */
+    double den = h > 0.0 ? h : dB2;
+    return den > 0.0 ? (B[0] * D1[0] + B[1] * D1[1]) / den : 0.0;
+}
+
+/* one Newton step along the quintic piece on element *ep from *tp, onto
+ * the neighbouring piece when t leaves [0, 1]; the step's size, or 1 on
+ * leaving the piece (as newton_step) */
+static double quintic_step(const bd_sim *sim, double cx, double cy, int *ep, double *tp)
+{
+    const int n = sim->model->n;
+    int nd[6];
+    double px[6], py[6];
+    quintic_nodes(n, *ep, nd);
+    quintic_coefficients(sim->x, nd, px);
+    quintic_coefficients(sim->y, nd, py);
+    double step = quintic_newton(px, py, cx, cy, *tp);
+    double t = *tp - step;
+    if (t < 0.0) {
+        *ep = bd_node_prev(*ep, n);
+        *tp = t + 1.0 < 0.0 ? 0.0 : t + 1.0;
+        return 1.0;
+    }
+    if (t > 1.0) {
+        *ep = bd_node_next(*ep, n);
+        *tp = t - 1.0 > 1.0 ? 1.0 : t - 1.0;
+        return 1.0;
+    }
+    *tp = t;
+    return fabs(step);
+}
+
+/* the quintic line's point at t on element e, from c, and its weights */
+static void quintic_at(const bd_sim *sim, int e, double t, const double c[2], bd_idler_touch *pc,
+                       double r[2])
+{
+    quintic_nodes(sim->model->n, e, pc->node);
+    quintic_weights(t, pc->w);
+    pc->count = 6;
+    r[0] = -c[0];
+    r[1] = -c[1];
+    for (int q = 0; q < 6; q++) {
+        r[0] += pc->w[q] * sim->x[pc->node[q]];
+        r[1] += pc->w[q] * sim->y[pc->node[q]];
+    }
+}
+
+/* as converge, on the quintic line */
+__attribute__((noinline)) static void quintic_converge(const bd_sim *sim, const double c[2],
+                                                       int *ep, double *tp)
+{
+    bd_idler_touch scratch;
+    double r[2];
+    int e = *ep;
+    double t = *tp;
+    quintic_at(sim, e, t, c, &scratch, r);
+    double best = r[0] * r[0] + r[1] * r[1];
+    for (int it = 0; it < NEAREST_STEPS; it++) {
+        double step = quintic_step(sim, c[0], c[1], &e, &t);
+        quintic_at(sim, e, t, c, &scratch, r);
+        double d2 = r[0] * r[0] + r[1] * r[1];
+        if (d2 < best) {
+            best = d2;
+            *ep = e;
+            *tp = t;
+        }
+        if (step < NEAREST_CONVERGED)
+            break;
+    }
+}
+
+/* How far the running line passes inside the corner of the belt's free
+ * lines over a roll that turns it by φ: a node m takes the share w_m of
+ * the roll's force and turns by φ·w_m, so the free lines meet over
+ * Σ w_m·x_m and the line's point lies ½·φ·l0·Σ_jm w_j·w_m·|j − m| below
+ * their corner (derived here, docs/physics.md §5) */
+double bd_lumped_line_corner(double phi, double l0, int quintic)
+{
+    return 0.5 * (quintic ? QUINTIC_MEAN_DIFFERENCE : QUADRATIC_MEAN_DIFFERENCE) * phi * l0;
+}
+
+/* the quintic line's point nearest the roll's centre, by Newton steps from
+ * the tracker's foot point, as nearest_point below */
+static void quintic_nearest(const bd_sim *sim, const bd_idler *id, bd_idler_touch *pc)
+{
+    const double *c = id->m->centre;
+    int e = id->tr.element;
+    double t = id->tr.gamma, r[2];
+    /* one step, and the point from the same coefficients: the usual case */
+    double px[6], py[6];
+    quintic_nodes(sim->model->n, e, pc->node);
+    quintic_coefficients(sim->x, pc->node, px);
+    quintic_coefficients(sim->y, pc->node, py);
+    double step = quintic_newton(px, py, c[0], c[1], t);
+    double t1 = t - step;
+    if (fabs(step) <= NEAREST_ONE_STEP && t1 >= 0.0 && t1 <= 1.0) {
+        quintic_weights(t1, pc->w);
+        pc->count = 6;
+        r[0] = quintic_value(px, t1) * (1.0 / 120.0) - c[0];
+        r[1] = quintic_value(py, t1) * (1.0 / 120.0) - c[1];
+    } else {
+        quintic_step(sim, c[0], c[1], &e, &t);
+        quintic_converge(sim, c, &e, &t);
+        quintic_at(sim, e, t, c, pc, r);
+    }
+    pc->d = sqrt(r[0] * r[0] + r[1] * r[1]);
+    double inv_d = 1.0 / pc->d;
+    pc->n[0] = r[0] * inv_d;
+    pc->n[1] = r[1] * inv_d;
+}
+
 /* the point of the smoothed belt line nearest the roll's centre c, by
  * Newton steps from the point the tracker's foot point maps to. One step
  * is exact on a straight belt and off by the square of its size on a bent
@@ -180,6 +403,10 @@ __attribute__((noinline)) static void converge(const bd_sim *sim, const double c
  * turns smoothly as the nodes pass the roll. */
 static void nearest_point(const bd_sim *sim, const bd_idler *id, bd_idler_touch *pc)
 {
+    if (id->m->line_quintic) {
+        quintic_nearest(sim, id, pc);
+        return;
+    }
     const int n = sim->model->n;
     const double cx = id->m->centre[0], cy = id->m->centre[1];
     int e = id->tr.element, k;
@@ -215,33 +442,42 @@ static void spring_energy(bd_sim *sim, bd_idler *id, double e)
     id->spring_energy = e;
 }
 
-static void idler_contact(bd_sim *sim, bd_idler *id, const bd_idler_touch *pc)
+/* count: the line's nodes, 3 or 6, a constant in each of the two calls
+ * below, so that each loop is unrolled (a loop to pc->count made
+ * bench_long_conveyor about 6 % slower) */
+static inline __attribute__((always_inline)) void
+contact_on(bd_sim *sim, bd_idler *id, const bd_idler_touch *pc, const int count)
 {
     id->alpha = 0.0;
     id->torque = 0.0;
     const bd_idler_model *im = id->m;
     const double d = pc->d, nx = pc->n[0], ny = pc->n[1];
-    if (d >= im->radius + IDLER_CONTACT_GAP * sim->model->l0) {
+    if (d >= im->contact_radius + IDLER_CONTACT_GAP * sim->model->l0) {
         note_lifted(sim, id, d);
         spring_energy(sim, id, 0.0);
         return;
     }
     const int *nd = pc->node;
     const double *w = pc->w;
-    /* w_m/m_m from dt/m (no division in the step); the tangential
-     * acceleration the other forces give the contact point */
-    const double tx0 = -ny, ty0 = nx;
-    double vcx = 0.0, vcy = 0.0, inv_m_eff = 0.0, aon = 0.0, aot = 0.0;
-    for (int q = 0; q < 3; q++) {
+    /* w_m/m_m from dt/m (no division in the step; Δt taken out once);
+     * the acceleration the other forces give the contact point, along the
+     * normal and the tangent */
+    const double tx0 = -ny, ty0 = nx, inv_dt = sim->model->inv_dt;
+    double vcx = 0.0, vcy = 0.0, inv_m_eff = 0.0, acx = 0.0, acy = 0.0;
+    for (int q = 0; q < count; q++) {
         int m = nd[q];
-        double wm = w[q] * sim->dt_per_mass[m] * sim->model->inv_dt;
+        double wm = w[q] * sim->dt_per_mass[m];
         vcx += w[q] * sim->vx[m];
         vcy += w[q] * sim->vy[m];
         inv_m_eff += w[q] * wm;
-        aon += wm * (nx * sim->fx[m] + ny * sim->fy[m]);
-        aot += wm * (tx0 * sim->fx[m] + ty0 * sim->fy[m]);
+        acx += wm * sim->fx[m];
+        acy += wm * sim->fy[m];
     }
-    double dt = sim->model->dt, delta = im->radius - d;
+    inv_m_eff *= inv_dt;
+    acx *= inv_dt;
+    acy *= inv_dt;
+    double aon = nx * acx + ny * acy, aot = tx0 * acx + ty0 * acy;
+    double dt = sim->model->dt, delta = im->contact_radius - d;
     double fn = im->k_contact * (delta - dt * (nx * vcx + ny * vcy) - dt * dt * aon)
               / (1.0 + im->k_contact * dt * dt * inv_m_eff);
     if (fn <= 0.0) {
@@ -275,7 +511,7 @@ static void idler_contact(bd_sim *sim, bd_idler *id, const bd_idler_touch *pc)
     /* normal, rolling resistance and friction on the three nodes, all
      * non-conservative */
     double Fx = fn * nx - (frr + f) * tx, Fy = fn * ny - (frr + f) * ty;
-    for (int q = 0; q < 3; q++) {
+    for (int q = 0; q < count; q++) {
         int m = nd[q];
         sim->fx[m] += w[q] * Fx;
         sim->fy[m] += w[q] * Fy;
@@ -285,6 +521,14 @@ static void idler_contact(bd_sim *sim, bd_idler *id, const bd_idler_touch *pc)
     id->torque = f * R;
     id->alpha = id->torque * im->inv_inertia;
     spring_energy(sim, id, fn * fn * im->half_per_k);
+}
+
+static void idler_contact(bd_sim *sim, bd_idler *id, const bd_idler_touch *pc)
+{
+    if (pc->count == 6)
+        contact_on(sim, id, pc, 6);
+    else
+        contact_on(sim, id, pc, 3);
 }
 
 /* the supports phase for the idlers listed only (belt/rfe: those no long

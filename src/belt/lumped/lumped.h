@@ -21,6 +21,10 @@ typedef struct bd_lumped_model {
     double c_axial;        /* N·s/m dashpot of one element */
     double k_bend;         /* N·m/rad = EI/l0 */
     double k_contact;      /* N/m penalty stiffness of a node on a shell or idler */
+    /* the belt's running line an idler presses on (idler_contact.c): the
+     * quintic B-spline of its nodes (discrete belt), or the quadratic
+     * round each node (rfe belt) */
+    int idler_line_quintic;
     bd_wrap_sector *sectors;   /* [pulley_count] */
 } bd_lumped_model;
 
@@ -71,9 +75,12 @@ typedef struct bd_wrapped_element {
 
 /* step (supports phase): where an idler's roll meets the belt's smoothed
  * line (idler_contact.c), found for every idler before any force */
+/* the nodes an idler presses on, at most BD_TOUCH_NODES (idler_contact.c) */
+#define BD_TOUCH_NODES 6
 typedef struct bd_idler_touch {
-    int node[3];
-    double w[3];
+    int node[BD_TOUCH_NODES];
+    double w[BD_TOUCH_NODES];
+    int count;       /* of nodes: 3 (quadratic line) or 6 (quintic) */
     double d;        /* m, from the roll's centre to the contact point */
     double n[2];     /* that direction */
 } bd_idler_touch;
@@ -186,6 +193,9 @@ void bd_lumped_idlers_listed(bd_sim *sim, const int *list, int count);
 /* idler i's contact let go: its spring's energy to 0 (booked as the
  * contact books it), no torque */
 void bd_lumped_idler_release(bd_sim *sim, int i);
+/* how far the running line, quintic or quadratic, cuts the corner of the
+ * free lines over a roll that turns the belt by phi (idler_contact.c) */
+double bd_lumped_line_corner(double phi, double l0, int quintic);
 
 /* material.c: feed and discharge */
 void bd_lumped_material(bd_sim *sim);
