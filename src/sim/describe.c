@@ -98,6 +98,9 @@ static void describe_idler_turn(FILE *f, const bd_sim *sim, int k)
     if (bd_idler_turn(sim, k, &phi, &voc))
         fprintf(f, ", the belt turns %.3f rad at each at rest, v %.2f of its wave speed", phi,
                 voc);
+    if (sim->model->def->belt.formulation == BD_FORMULATION_DISCRETE
+        && sim->model->idlers_per_set[k] > 0)
+        fprintf(f, ", running line %s", bd_idler_set_quintic(sim, k) ? "quintic" : "quadratic");
     fprintf(f, "\n");
 }
 
@@ -130,9 +133,10 @@ void bd_sim_describe(const bd_sim *sim, FILE *f)
         if (sim->model->EI > 0.0)
             fprintf(f, "\n");
         else
-            fprintf(f, " (none: the running force may carry a few %% of node vibration that "
-                       "does not fall with the element length, docs/physics.md §10; give "
-                       "belt.bending_stiffness, or modulus, width and thickness)\n");
+            fprintf(f, " (none: where its idlers press on the quadratic running line, the "
+                       "running force may carry a few %% of node vibration, docs/physics.md "
+                       "§5, §10; give belt.bending_stiffness, or modulus, width and "
+                       "thickness)\n");
     }
     if (def->belt.formulation == BD_FORMULATION_RFE) {
         double ga = bd_rfe_shear_stiffness(def);

@@ -3,9 +3,11 @@
  * idler_turn.c, which halves the default element for φ ≥ 0.05 rad). On
  * generated conveyors at the 30° element the running force ran above the
  * resistance law on 8 of 13 with φ ≥ 0.10 rad and v ≥ 0.2·c, on 1 of 88
- * with φ < 0.05 rad. At the halved element 2 of 13 conveyors that had
- * failed still did (seeds 1138 and 1213, φ 0.20 and 0.25 on their return;
- * docs/physics.md §10). */
+ * with φ < 0.05 rad, the idlers pressing on the quadratic line round each
+ * node. At the halved element 2 of 13 conveyors that had failed still did
+ * (seeds 1138 and 1213, φ 0.20 and 0.25 on their return; docs/physics.md
+ * §10). On the discrete belt's quintic running line (§5) they pass, so a
+ * set whose idlers press on it is not warned of. */
 #include "sim/engine.h"
 
 #include "parts/parts.h"
@@ -23,19 +25,33 @@ int bd_idler_turn(const bd_sim *sim, int k, double *phi, double *v_over_c)
     return 1;
 }
 
+int bd_idler_set_quintic(const bd_sim *sim, int k)
+{
+    const bd_model *m = sim->model;
+    int first = 0;
+    for (int j = 0; j < k; j++)
+        first += m->idlers_per_set[j];
+    return m->idlers_per_set[k] > 0 && m->idlers[first].line_quintic;
+}
+
 void bd_idler_turn_warn(bd_sim *sim)
 {
     const bd_model_def *def = sim->model->def;
     for (int k = 0; k < def->idler_set_count; k++) {
         double phi, voc;
-        if (!bd_idler_turn(sim, k, &phi, &voc) || phi < TURN_WARN_RAD || voc < TURN_WARN_SPEED)
+        if (!bd_idler_turn(sim, k, &phi, &voc) || phi < TURN_WARN_RAD || voc < TURN_WARN_SPEED
+            || bd_idler_set_quintic(sim, k))
             continue;
         bd_sim_warn(sim, "the idlers of span '%s' turn the belt by %.2f rad at rest, at %.2f "
                     "of its wave speed: the %s belt without bending stiffness has drawn "
                     "running force above its resistance law on such spans (docs/physics.md "
-                    "§10, §15)%s; give belt.bending_stiffness, or use the axial or moving_node "
-                    "belt for the running force", def->pulleys[def->idler_sets[k].span].name,
-                    phi, voc, sim->model->belt->name,
-                    sim->model->element_refined ? ", also at the halved default element" : "");
+                    "§10, §15)%s; give belt.bending_stiffness%s, or use the axial or "
+                    "moving_node belt for the running force",
+                    def->pulleys[def->idler_sets[k].span].name, phi, voc, sim->model->belt->name,
+                    sim->model->element_refined ? ", also at the halved default element" : "",
+                    def->belt.formulation == BD_FORMULATION_DISCRETE
+                        ? ", or shorter elements: ten or more to a bay put its idlers on the "
+                          "quintic running line (§5)"
+                        : "");
     }
 }

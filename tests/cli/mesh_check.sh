@@ -6,10 +6,10 @@
 #
 # The model is the minimal loop of docs/physics.md §10
 # (tests/data/idler_turn_loop.yaml, 20 s at 6 m/s):
-# - discrete (EI = 0) at a given 0.3 m element, twice the default, over
+# - discrete (EI = 0) at a given 0.3 m element (the default: 0.0776 m), over
 #   30 s: its running force is not converged there (measured −15.2 % when
 #   the element halves: physics.md §10's node passage, which the quintic
-#   running line of §5 holds off at the default element's 19 elements to
+#   running line of §5 holds off at the default element's 39 elements to
 #   a return bay, not at 10); the check must say so, not converged, with
 #   the running force's row failed and a warning that names it.
 # - axial: no node passes an idler; every figure moves by less than 2 %

@@ -20,7 +20,7 @@
 #   each node, the nodes' passage pumped the spans (+34 %); on the quintic
 #   running line it holds its law (measured +0.3 %): held to the 3 % of
 #   that belt, with no warning (physics.md §5, §10).
-# - discrete at a given 0.35 m element, over twice the default: 8.6
+# - discrete at a given 0.35 m element (the default is 0.0776 m here): 8.6
 #   elements to a return bay, the quadratic line there, and the passage's
 #   excess is back (measured +13.9 %).
 #   The check must say so: not a pass, a warning that names the figures
