@@ -99,8 +99,14 @@ static void describe_idler_turn(FILE *f, const bd_sim *sim, int k)
         fprintf(f, ", the belt turns %.3f rad at each at rest, v %.2f of its wave speed", phi,
                 voc);
     if (sim->model->def->belt.formulation == BD_FORMULATION_DISCRETE
-        && sim->model->idlers_per_set[k] > 0)
-        fprintf(f, ", running line %s", bd_idler_set_quintic(sim, k) ? "quintic" : "quadratic");
+        && sim->model->idlers_per_set[k] > 0) {
+        int count = sim->model->idlers_per_set[k], quintic = bd_idler_set_quintic(sim, k);
+        if (quintic == 0 || quintic == count)
+            fprintf(f, ", running line %s", quintic ? "quintic" : "quadratic");
+        else
+            fprintf(f, ", running line quintic at %d of them, quadratic at the others",
+                    quintic);
+    }
     fprintf(f, "\n");
 }
 

@@ -38,8 +38,9 @@ int bd_cost_estimate(bd_sim *sim, bd_diag *diag);
  * or no such span); the warning where φ and v/c are large */
 int bd_idler_turn(const bd_sim *sim, int k, double *phi, double *v_over_c);
 void bd_idler_turn_warn(bd_sim *sim);
-/* whether idler set k's idlers press on the discrete belt's quintic
- * running line (belt/lumped/idler_contact.c) */
+/* how many of idler set k's idlers press on the discrete belt's quintic
+ * running line (belt/lumped/idler_contact.c; on a vertical curve the
+ * path's turn may put some of a set on it and not others) */
 int bd_idler_set_quintic(const bd_sim *sim, int k);
 /* sag_compliance.c: warned where the belt's elements leave out much of the
  * sag that its idler bays add to its axial compliance */

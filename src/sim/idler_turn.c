@@ -28,10 +28,12 @@ int bd_idler_turn(const bd_sim *sim, int k, double *phi, double *v_over_c)
 int bd_idler_set_quintic(const bd_sim *sim, int k)
 {
     const bd_model *m = sim->model;
-    int first = 0;
+    int first = 0, count = 0;
     for (int j = 0; j < k; j++)
         first += m->idlers_per_set[j];
-    return m->idlers_per_set[k] > 0 && m->idlers[first].line_quintic;
+    for (int i = first; i < first + m->idlers_per_set[k]; i++)
+        count += m->idlers[i].line_quintic;
+    return count;
 }
 
 void bd_idler_turn_warn(bd_sim *sim)
@@ -40,7 +42,7 @@ void bd_idler_turn_warn(bd_sim *sim)
     for (int k = 0; k < def->idler_set_count; k++) {
         double phi, voc;
         if (!bd_idler_turn(sim, k, &phi, &voc) || phi < TURN_WARN_RAD || voc < TURN_WARN_SPEED
-            || bd_idler_set_quintic(sim, k))
+            || bd_idler_set_quintic(sim, k) == sim->model->idlers_per_set[k])
             continue;
         bd_sim_warn(sim, "the idlers of span '%s' turn the belt by %.2f rad at rest, at %.2f "
                     "of its wave speed: the %s belt without bending stiffness has drawn "

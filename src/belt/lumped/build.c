@@ -85,10 +85,12 @@ static void setup_pulleys(bd_sim *sim, const bd_layout *lay)
  *   more, the return bays of docs/physics.md §10's loops, it is what
  *   holds their running force to the law.
  * - The turn: what a passing idler radiates grows as φ²; generated
- *   conveyors whose idlers turn the belt by 0.03 rad drew up to 3.5 %
- *   over their law on the quadratic line, so below 0.02 rad it stays
- *   under 1.6 %, and the quadratic costs half as much (bench_long_conveyor,
- *   φ 0.011 rad on its return: 12-14 % slower with the quintic there). */
+ *   conveyors whose returns turn the belt by 0.027 and 0.032 rad (4135,
+ *   4170) drew +3.55 and +3.12 % over their law on the quadratic line, so
+ *   below 0.02 rad it stays under about 1.6 %, and there the quadratic
+ *   line's three nodes cost less than the quintic's six
+ *   (bench_long_conveyor, whose return turns 0.022 rad, steps about 12 %
+ *   slower with its return on the quintic). */
 #define BD_QUINTIC_BAY_ELEMENTS 10.0
 #define BD_QUINTIC_TURN 0.02
 
@@ -99,7 +101,7 @@ static void setup_pulleys(bd_sim *sim, const bd_layout *lay)
  * positive); 0 for other belts */
 static double idler_turn_at(const bd_sim *sim, int k, const bd_path_segment *sp, double s)
 {
-    if (!bd_lumped_model_of(sim)->idler_line_quintic || sim->model->EI > 0.0)
+    if (!bd_lumped_model_of(sim)->quintic_allowed || sim->model->EI > 0.0)
         return 0.0;
     const bd_path *path = &sim->model->path;
     double half = 0.5 * sim->model->idler_spacing[k];
@@ -257,9 +259,9 @@ int bd_lumped_build_sized(bd_sim *sim, bd_diag *diag, size_t state_size, size_t 
     LM->k_bend = sim->model->EI / sim->model->l0;
     /* contacts: stiff and linearly implicit (pulley_contact.c, idler_contact.c) */
     LM->k_contact = 100.0 * LM->k_axial;
-    /* the running line the idlers press on, quintic where it pays
-     * (setup_idlers, idler_contact.c) */
-    LM->idler_line_quintic = def->belt.formulation == BD_FORMULATION_DISCRETE;
+    /* the discrete belt's idlers press on the quintic running line where
+     * it pays, and at their contact radius (setup_idlers, idler_contact.c) */
+    LM->quintic_allowed = def->belt.formulation == BD_FORMULATION_DISCRETE;
     /* the arc an element spans on the smallest pulley: the element takes
      * the belt's length round the shell (wrap_elements.c), so there is no
      * chordal action (docs/physics.md §4: 0.06 % of the tension at the

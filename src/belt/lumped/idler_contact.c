@@ -2,9 +2,10 @@
  * presses on the belt's running line at the point nearest its centre.
  *
  * The discrete belt's running line, where the idler's bay holds ten
- * elements or more (build.c), is the uniform quintic B-spline of its
- * nodes (quintic_* below): each point a weighted mean of six nodes, C4,
- * the weights smooth in the point's place along the belt. An idler is a
+ * elements or more and the belt turns over it by 0.02 rad or more
+ * (build.c), is the uniform quintic B-spline of its nodes (quintic_*
+ * below): each point a weighted mean of six nodes, C4, the weights smooth
+ * in the point's place along the belt. An idler is a
  * load fixed in space that the nodes pass at v/l0; what it gives each
  * node is a weight of the spline, so the force's harmonics at that
  * passage fall as the weights' spectrum, as (l0·q/2π)⁶ for the spline of
@@ -12,18 +13,19 @@
  * the passage radiated short transverse waves into the spans that their
  * dashpots and contacts dissipated: the minimal loop of docs/physics.md
  * §10 (3 m return bays turning the belt by 0.225 rad) drew +19, +27 and
- * +29 % over its law at 4, 5 and 6 m/s; on the quintic +0.7, +3.3 and
- * +0.4 % (§5). The line cuts the corner of the belt's free lines over a
- * roll by ½·Ḡ·φ·l0 (φ the turn, Ḡ = 0.7321 the weights' mean difference,
- * derived in §5), within ±0.2 % of that whatever the nodes' phase; the
- * idler presses at its contact_radius, the radius less that cut at the
- * set's turn at rest (build.c), so the belt's free lines meet on the
- * roll's top and its sag is the string's.
+ * +29 % over its law at 4, 5 and 6 m/s; on the quintic +0.5, +2.8 and
+ * +0.3 % (§5). A line cuts the corner of the belt's free lines over a
+ * roll by ½·Ḡ·φ·l0 (φ the turn, Ḡ the weights' mean difference, derived
+ * in §5: 0.7321 within ±0.2 % whatever the nodes' phase for the quintic,
+ * 7/15 ± 7 % for the quadratic); the discrete belt's idler presses at its
+ * contact_radius, the radius less that cut at the set's turn at rest
+ * (build.c), so the belt's free lines meet on the roll's top and its sag
+ * is the string's.
  *
  * The rfe belt's running line (its element centres' chain) stays the
- * quadratic round each node: the quintic's six nodes reach three elements
- * past the roll, into the long sections (belt/rfe/sections.c), which take
- * forces at their ends only.
+ * quadratic round each node, at the roll's radius: the quintic's six
+ * nodes reach three elements past the roll, into the long sections
+ * (belt/rfe/sections.c), which take forces at their ends only.
  *
  * The quadratic line: round node k, the quadratic Bézier from the middle
  * of element k − 1 through the corner at node k to the middle of element
@@ -219,8 +221,8 @@ static void quintic_nodes(int n, int e, int node[6])
 }
 
 /* the weights at t from the powers of t and u = 1 − t (the basis is
- * symmetric, w_5−i(t) = w_i(u); independent products, where six Horner
- * chains cost 3 % of bench_long_conveyor) */
+ * symmetric, w_5−i(t) = w_i(u)): independent products, not six Horner
+ * chains (3 % of bench_long_conveyor's time in perf) */
 static void quintic_weights(double t, double w[6])
 {
     const double u = 1.0 - t, c = 1.0 / 120.0;
@@ -443,8 +445,8 @@ static void spring_energy(bd_sim *sim, bd_idler *id, double e)
 }
 
 /* count: the line's nodes, 3 or 6, a constant in each of the two calls
- * below, so that each loop is unrolled (a loop to pc->count made
- * bench_long_conveyor about 6 % slower) */
+ * below (idler_contact), so that each loop is unrolled as the three
+ * nodes' loop was before the quintic line */
 static inline __attribute__((always_inline)) void
 contact_on(bd_sim *sim, bd_idler *id, const bd_idler_touch *pc, const int count)
 {
@@ -508,7 +510,7 @@ contact_on(bd_sim *sim, bd_idler *id, const bd_idler_touch *pc, const int count)
     double f = (vr * sim->model->inv_dt + ft) / (inv_m_eff + im->r2_per_inertia);
     if (fabs(f) > im->mu_s * fn)
         f = copysign(im->mu_d * fn, f);
-    /* normal, rolling resistance and friction on the three nodes, all
+    /* normal, rolling resistance and friction on the line's nodes, all
      * non-conservative */
     double Fx = fn * nx - (frr + f) * tx, Fy = fn * ny - (frr + f) * ty;
     for (int q = 0; q < count; q++) {

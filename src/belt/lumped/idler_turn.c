@@ -9,9 +9,10 @@
  * 1990, as in moving_node/forces.c); T and m' the span's at rest on its
  * supports (the `static` layout, whatever the start), a the set's
  * spacing, v the drives' speed; and v against the transverse wave speed
- * c = √(T/m'). At every idler the belt's smoothed line cuts the corner of
- * its free lines by between φl0/8 and φl0/4 as the nodes pass, a lift of
- * φl0/8 at v/l0 that pumps the spans (§10).
+ * c = √(T/m'). At every idler the belt's running line cuts the corner of
+ * its free lines as the nodes pass; on the quadratic line that cut swings
+ * with the nodes' phase and the passage pumps the spans (§10), on the
+ * quintic hardly (§5, idler_contact.c, which build.c chooses by φ).
  *
  * The default element: the chord of 30° of the smallest pulley (its wrap,
  * §4), halved where a set turns the belt by φ ≥ 0.05 rad (a sag of 0.6 %

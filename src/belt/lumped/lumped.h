@@ -21,10 +21,10 @@ typedef struct bd_lumped_model {
     double c_axial;        /* N·s/m dashpot of one element */
     double k_bend;         /* N·m/rad = EI/l0 */
     double k_contact;      /* N/m penalty stiffness of a node on a shell or idler */
-    /* the belt's running line an idler presses on (idler_contact.c): the
-     * quintic B-spline of its nodes (discrete belt), or the quadratic
-     * round each node (rfe belt) */
-    int idler_line_quintic;
+    /* whether an idler may press on the quintic running line, and at its
+     * contact radius (the discrete belt; build.c, idler_contact.c): else on
+     * the quadratic line round each node, at its radius (the rfe belt) */
+    int quintic_allowed;
     bd_wrap_sector *sectors;   /* [pulley_count] */
 } bd_lumped_model;
 
@@ -73,10 +73,10 @@ typedef struct bd_wrapped_element {
     double gi[2], gj[2];
 } bd_wrapped_element;
 
-/* step (supports phase): where an idler's roll meets the belt's smoothed
- * line (idler_contact.c), found for every idler before any force */
-/* the nodes an idler presses on, at most BD_TOUCH_NODES (idler_contact.c) */
+/* the nodes an idler presses on, at most (idler_contact.c) */
 #define BD_TOUCH_NODES 6
+/* step (supports phase): where an idler's roll meets the belt's running
+ * line (idler_contact.c), found for every idler before any force */
 typedef struct bd_idler_touch {
     int node[BD_TOUCH_NODES];
     double w[BD_TOUCH_NODES];
