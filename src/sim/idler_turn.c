@@ -52,7 +52,7 @@ void bd_idler_turn_warn(bd_sim *sim)
                     def->pulleys[def->idler_sets[k].span].name, phi, voc, sim->model->belt->name,
                     sim->model->element_refined ? ", also at the halved default element" : "",
                     def->belt.formulation == BD_FORMULATION_DISCRETE
-                        ? ", or shorter elements: ten or more to a bay put its idlers on the "
+                        ? ", or shorter elements: nine or more to a bay put its idlers on the "
                           "quintic running line (§5)"
                         : "");
     }

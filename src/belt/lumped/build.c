@@ -77,13 +77,17 @@ static void setup_pulleys(bd_sim *sim, const bd_layout *lay)
  * their bay holds this many elements and the belt turns over them by at
  * least BD_QUINTIC_TURN, on the quadratic line elsewhere
  * (idler_contact.c).
- * - The bay: on 7 elements to a bay (tests/data/mesh_loaded_76m's carry
- *   idlers at the default element) the quintic's six nodes left the belt
+ * - The bay (the quintic's six nodes take five elements of it; measured,
+ *   no theory yet): on 7 elements to a bay (tests/data/mesh_loaded_76m's
+ *   carry idlers at the default element) the quintic left the belt
  *   between two idlers ringing at 18.5 Hz after its start, a mode of that
- *   mesh alone: the raw peak of the drive's force in test_scurve_peak rose
- *   from 5494 to 5976 N, against 5570 N at half the element. On 10 and
- *   more, the return bays of docs/physics.md §10's loops, it is what
- *   holds their running force to the law.
+ *   mesh alone: test_scurve_peak's raw peak drive force rose from 5494 to
+ *   5976 N, against 5570 N at half the element. On the minimal loop of
+ *   docs/physics.md §10 at 8.6 to a return bay it drew +19.6 % against
+ *   +13.9 % on the quadratic line. On 9.9, the carry of generated seed
+ *   7001 (--curves; 0.104 rad at 0.22·c), +0.3 % against +4.5 %; on 19
+ *   and more, the loops of §10, it is what holds their running force to
+ *   the law.
  * - The turn: what a passing idler radiates grows as φ²; generated
  *   conveyors whose returns turn the belt by 0.027 and 0.032 rad (4135,
  *   4170) drew +3.55 and +3.12 % over their law on the quadratic line, so
@@ -91,7 +95,7 @@ static void setup_pulleys(bd_sim *sim, const bd_layout *lay)
  *   line's three nodes cost less than the quintic's six
  *   (bench_long_conveyor, whose return turns 0.022 rad, steps about 12 %
  *   slower with its return on the quintic). */
-#define BD_QUINTIC_BAY_ELEMENTS 10.0
+#define BD_QUINTIC_BAY_ELEMENTS 9.0
 #define BD_QUINTIC_TURN 0.02
 
 /* how the discrete belt turns over the idler of set k at s on span sp,
