@@ -164,37 +164,6 @@ static double newton_step(const bd_sim *sim, double cx, double cy, int *kp, doub
     return fabs(step);
 }
 
-/* the squared distance from c of the smoothed line's point at t on the
- * piece round node k */
-static double distance2(const bd_sim *sim, int k, double t, const double c[2])
-{
-    bd_idler_touch scratch;
-    double r[2];
-    piece_at(sim, k, t, c, &scratch, r);
-    return r[0] * r[0] + r[1] * r[1];
-}
-
-/* more Newton steps from (k, t), to convergence; the nearest of the
- * points they pass. Rarely taken, and kept out of the hot path: inlined
- * into every idler's search it made bench_long_conveyor 8 % slower */
-__attribute__((noinline)) static void converge(const bd_sim *sim, const double c[2], int *kp,
-                                               double *tp)
-{
-    int k = *kp;
-    double t = *tp, best = distance2(sim, k, t, c);
-    for (int it = 0; it < NEAREST_STEPS; it++) {
-        double step = newton_step(sim, c[0], c[1], &k, &t);
-        double d2 = distance2(sim, k, t, c);
-        if (d2 < best) {
-            best = d2;
-            *kp = k;
-            *tp = t;
-        }
-        if (step < NEAREST_CONVERGED)
-            break;
-    }
-}
-
 /* The quintic running line on element e (t = 0 at node e, 1 at node
  * e + 1): B(t) = Σ w_i(t)·x_i over the nodes e − 2 … e + 3, w_i(t) the
  * uniform quintic B-spline's basis, here as polynomials in t (times 120):
@@ -322,23 +291,35 @@ static void quintic_at(const bd_sim *sim, int e, double t, const double c[2], bd
     }
 }
 
-/* as converge, on the quintic line */
-__attribute__((noinline)) static void quintic_converge(const bd_sim *sim, const double c[2],
-                                                       int *ep, double *tp)
+/* the squared distance from c of the running line's point at t on piece
+ * k (round node k on the quadratic line, on element k on the quintic) */
+static double distance2(const bd_sim *sim, int quintic, int k, double t, const double c[2])
 {
     bd_idler_touch scratch;
     double r[2];
-    int e = *ep;
-    double t = *tp;
-    quintic_at(sim, e, t, c, &scratch, r);
-    double best = r[0] * r[0] + r[1] * r[1];
+    if (quintic)
+        quintic_at(sim, k, t, c, &scratch, r);
+    else
+        piece_at(sim, k, t, c, &scratch, r);
+    return r[0] * r[0] + r[1] * r[1];
+}
+
+/* more Newton steps from (k, t) along either line, to convergence; the
+ * nearest of the points they pass. Rarely taken, and kept out of the hot
+ * path: inlined into every idler's search it made bench_long_conveyor
+ * 8 % slower */
+__attribute__((noinline)) static void converge(const bd_sim *sim, const double c[2],
+                                               int quintic, int *kp, double *tp)
+{
+    int k = *kp;
+    double t = *tp, best = distance2(sim, quintic, k, t, c);
     for (int it = 0; it < NEAREST_STEPS; it++) {
-        double step = quintic_step(sim, c[0], c[1], &e, &t);
-        quintic_at(sim, e, t, c, &scratch, r);
-        double d2 = r[0] * r[0] + r[1] * r[1];
+        double step = quintic ? quintic_step(sim, c[0], c[1], &k, &t)
+                              : newton_step(sim, c[0], c[1], &k, &t);
+        double d2 = distance2(sim, quintic, k, t, c);
         if (d2 < best) {
             best = d2;
-            *ep = e;
+            *kp = k;
             *tp = t;
         }
         if (step < NEAREST_CONVERGED)
@@ -377,7 +358,7 @@ static void quintic_nearest(const bd_sim *sim, const bd_idler *id, bd_idler_touc
         r[1] = quintic_value(py, t1) * (1.0 / 120.0) - c[1];
     } else {
         quintic_step(sim, c[0], c[1], &e, &t);
-        quintic_converge(sim, c, &e, &t);
+        converge(sim, c, 1, &e, &t);
         quintic_at(sim, e, t, c, pc, r);
     }
     pc->d = sqrt(r[0] * r[0] + r[1] * r[1]);
@@ -421,7 +402,7 @@ static void nearest_point(const bd_sim *sim, const bd_idler *id, bd_idler_touch 
         t = id->tr.gamma + 0.5;
     }
     if (newton_step(sim, cx, cy, &k, &t) > NEAREST_ONE_STEP)
-        converge(sim, id->m->centre, &k, &t);
+        converge(sim, id->m->centre, 0, &k, &t);
     double r[2];
     piece_at(sim, k, t, id->m->centre, pc, r);
     pc->d = sqrt(r[0] * r[0] + r[1] * r[1]);
