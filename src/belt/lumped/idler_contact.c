@@ -124,6 +124,27 @@ static inline __attribute__((always_inline)) void piece_at(const bd_sim *sim, in
     r[1] = pc->w[0] * sim->y[a] + pc->w[1] * sim->y[k] + pc->w[2] * sim->y[b] - c[1];
 }
 
+/* after a Newton step to t on piece *kp (pieces are numbered by node, or
+ * by element on the quintic line, either way one after another): past
+ * the piece's end, onto the neighbouring piece, the previous one's end or
+ * the next one's start (where the two pieces meet), and 1; else t and the
+ * step's size */
+static inline double onto_piece(int n, double t, double step, int *kp, double *tp)
+{
+    if (t < 0.0) {
+        *kp = bd_node_prev(*kp, n);
+        *tp = t + 1.0 < 0.0 ? 0.0 : t + 1.0;
+        return 1.0;
+    }
+    if (t > 1.0) {
+        *kp = bd_node_next(*kp, n);
+        *tp = t - 1.0 > 1.0 ? 1.0 : t - 1.0;
+        return 1.0;
+    }
+    *tp = t;
+    return fabs(step);
+}
+
 /* one Newton step on (B − c)·B' = 0 along the piece round node k from t,
  * onto the neighbouring piece when t leaves [0, 1]; the step's size, or 1
  * on leaving the piece */
@@ -147,21 +168,7 @@ static double newton_step(const bd_sim *sim, double cx, double cy, int *kp, doub
      * the tangent step then */
     double den = h > 0.0 ? h : dB2;
     double step = den > 0.0 ? (Bx * dBx + By * dBy) / den : 0.0;
-    t -= step;
-    /* past the piece's end: onto the neighbouring piece, the previous
-     * one's end or the next one's start (where the two pieces meet) */
-    if (t < 0.0) {
-        *kp = a;
-        *tp = t + 1.0 < 0.0 ? 0.0 : t + 1.0;
-        return 1.0;
-    }
-    if (t > 1.0) {
-        *kp = b;
-        *tp = t - 1.0 > 1.0 ? 1.0 : t - 1.0;
-        return 1.0;
-    }
-    *tp = t;
-    return fabs(step);
+    return onto_piece(n, t - step, step, kp, tp);
 }
 
 /* The quintic running line on element e (t = 0 at node e, 1 at node
@@ -261,19 +268,7 @@ static double quintic_step(const bd_sim *sim, double cx, double cy, int *ep, dou
     quintic_coefficients(sim->x, nd, px);
     quintic_coefficients(sim->y, nd, py);
     double step = quintic_newton(px, py, cx, cy, *tp);
-    double t = *tp - step;
-    if (t < 0.0) {
-        *ep = bd_node_prev(*ep, n);
-        *tp = t + 1.0 < 0.0 ? 0.0 : t + 1.0;
-        return 1.0;
-    }
-    if (t > 1.0) {
-        *ep = bd_node_next(*ep, n);
-        *tp = t - 1.0 > 1.0 ? 1.0 : t - 1.0;
-        return 1.0;
-    }
-    *tp = t;
-    return fabs(step);
+    return onto_piece(n, *tp - step, step, ep, tp);
 }
 
 /* the quintic line's point at t on element e, from c, and its weights */
