@@ -20,8 +20,8 @@
 #   1.2e-3) and what they booked stays below 1 % of the drive's work
 #   (measured 137 J of 28.5 kJ).
 # - Against the same belt with every element free (enabled: false):
-#   peak tension, the tight side's peak at the drive and the steady
-#   running force within 2 % (measured +0.004 %, −1.5 %, −1.7 %). A
+#   peak tension, the tight side's peak at the drive and the mean drive
+#   force over 7-16 s within 2 % (measured −0.002 %, −1.7 %, −1.6 %). A
 #   section holds no sag; here the sag holds 7 % of the bays' axial
 #   compliance (docs/physics.md §14, Irvine's λ²/12) and the start is
 #   gentle. The sections ran 2.2 times faster (3.2 s against 7.2 s).
@@ -60,10 +60,18 @@ elif want == "energy":
     print("ok" if good else "bad", "balance %.2g, booked %.0f J of %.0f J" %
           (on["energy"]["balance_error_rel"], booked, work))
 elif want == "agree":
+    # the running force: the drive's mean over 7-16 s (the head's
+    # torque over its 0.3 m radius), whether or not summary.json judged
+    # it steady (both lie near the law's 3 %, where its judge may say
+    # "still swings")
+    def force(run):
+        r = list(csv.DictReader(open(tmp + "/" + run + "/history.csv")))
+        f = [float(x["head.torque_Nm"]) / 0.3 for x in r if float(x["t_s"]) >= 7.0]
+        return sum(f) / len(f)
     a = [rel(on["tension"]["max_N"], off["tension"]["max_N"]),
          rel(on["pulleys"]["head"]["tight_tension_max_N"],
              off["pulleys"]["head"]["tight_tension_max_N"]),
-         rel(on["running_force"]["force_N"], off["running_force"]["force_N"])]
+         rel(force("on"), force("off"))]
     good = all(abs(x) <= 0.02 for x in a)
     print("ok" if good else "bad", "peak %+.2f %%, tight side %+.2f %%, running force %+.2f %%"
           % tuple(100 * x for x in a))
