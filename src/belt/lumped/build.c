@@ -88,15 +88,21 @@ static void setup_pulleys(bd_sim *sim, const bd_layout *lay)
  *   7001 (--curves; 0.104 rad at 0.22·c), +0.3 % against +4.5 %; on 19
  *   and more, the loops of §10, it is what holds their running force to
  *   the law.
- * - The turn: what a passing idler radiates grows as φ²; generated
- *   conveyors whose returns turn the belt by 0.027 and 0.032 rad (4135,
- *   4170) drew +3.55 and +3.12 % over their law on the quadratic line, so
- *   below 0.02 rad it stays under about 1.6 %, and there the quadratic
- *   line's three nodes cost less than the quintic's six
- *   (bench_long_conveyor, whose return turns 0.022 rad, steps about 12 %
- *   slower with its return on the quintic). */
+ * - The turn: what a passing idler radiates grows as φ². With the
+ *   pulleys' friction on the tangent lines (pulley_contact.c), generated
+ *   conveyors 7700-8199 run with every idler on the quadratic line drew
+ *   at most +0.14 % over their law where their sets turn the belt by
+ *   0.020-0.025 rad (21 conveyors), and the worst at 0.025-0.030 rad,
+ *   7731 at 0.027, +3.94 %; scaled as φ² that reaches the 3 % at
+ *   0.0236 rad, so the quintic starts at 0.0225 rad (7731 would draw
+ *   +2.7 % there). Below it the quadratic line's three nodes cost less
+ *   than the quintic's six: bench_long_conveyor, whose return turns the
+ *   belt by 0.022 rad, stepped 10-12 % slower with its return on the
+ *   quintic. (Before that pulley change, 4135 and 4170 at 0.027 and
+ *   0.032 rad drew +3.55 and +3.12 % on the quadratic line, partly the
+ *   pulleys' drag: +1.9 and +0.2 % now.) */
 #define BD_QUINTIC_BAY_ELEMENTS 9.0
-#define BD_QUINTIC_TURN 0.02
+#define BD_QUINTIC_TURN 0.0225
 
 /* how the discrete belt turns over the idler of set k at s on span sp,
  * rad: the set's sag at rest (idler_turn.c, none with bending stiffness,

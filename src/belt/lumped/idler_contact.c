@@ -2,7 +2,7 @@
  * presses on the belt's running line at the point nearest its centre.
  *
  * The discrete belt's running line, where the idler's bay holds nine
- * elements or more and the belt turns over it by 0.02 rad or more
+ * elements or more and the belt turns over it by 0.0225 rad or more
  * (build.c), is the uniform quintic B-spline of its nodes (quintic_*
  * below): each point a weighted mean of six nodes, C4, the weights smooth
  * in the point's place along the belt. An idler is a

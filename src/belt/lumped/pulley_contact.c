@@ -40,7 +40,7 @@
  * a friction with a part along the normal pushed the node against it (the
  * dissipated energy fell at a start); such a node is at most a step's
  * travel off the shell, where the two lines differ by a few mrad. Until
- * stop 56 every node within the predictive gap (2 % of l0) took the
+ * late in issue 10 every node within the predictive gap (2 % of l0) took the
  * shell's tangent, pushed or not: on 30° elements a node running down its
  * tangent line is inside that gap for its last 28 % of an element, where
  * the line leans up to 8° from the shell's tangent; the stick force held
