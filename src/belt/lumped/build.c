@@ -89,10 +89,10 @@ static void setup_pulleys(bd_sim *sim, const bd_layout *lay)
  *   and more, the loops of §10, it is what holds their running force to
  *   the law.
  * - The turn: what a passing idler radiates grows as φ². With the
- *   pulleys' friction on the tangent lines (pulley_contact.c), generated
- *   conveyors 7700-8199 run with every idler on the quadratic line drew
- *   at most +0.14 % over their law where their sets turn the belt by
- *   0.020-0.025 rad (21 conveyors), and the worst at 0.025-0.030 rad,
+ *   pulleys' friction on the tangent lines (pulley_contact.c), 106 of
+ *   generated conveyors 7700-8199 run with every idler on the quadratic
+ *   line drew at most +0.14 % over their law where their sets turn the
+ *   belt by 0.020-0.025 rad (21 conveyors), and the worst at 0.025-0.030 rad,
  *   7731 at 0.027, +3.94 %; scaled as φ² that reaches the 3 % at
  *   0.0236 rad, so the quintic starts at 0.0225 rad (7731 would draw
  *   +2.7 % there). Below it the quadratic line's three nodes cost less
