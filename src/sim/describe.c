@@ -98,7 +98,8 @@ static void describe_idler_turn(FILE *f, const bd_sim *sim, int k)
     if (bd_idler_turn(sim, k, &phi, &voc))
         fprintf(f, ", the belt turns %.3f rad at each at rest, v %.2f of its wave speed", phi,
                 voc);
-    if (sim->model->def->belt.formulation == BD_FORMULATION_DISCRETE
+    if ((sim->model->def->belt.formulation == BD_FORMULATION_DISCRETE
+         || sim->model->def->belt.formulation == BD_FORMULATION_RFE)
         && sim->model->idlers_per_set[k] > 0) {
         int count = sim->model->idlers_per_set[k], quintic = bd_idler_set_quintic(sim, k);
         if (quintic == 0 || quintic == count)
@@ -129,6 +130,8 @@ void bd_sim_describe(const bd_sim *sim, FILE *f)
             sim->model->element_refined
                 ? "; the default halved: idlers turn the belt by 0.05 rad or more, "
                   "docs/model-format.md"
+            : def->belt.formulation == BD_FORMULATION_RFE && !(def->belt.element_length > 0.0)
+                ? "; the rfe belt's default, 15° of the smallest pulley, docs/model-format.md"
                 : "");
     fprintf(f, "belt nodes: %d\n", sim->model->n);
     if (def->belt.formulation == BD_FORMULATION_DISCRETE) {

@@ -17,7 +17,9 @@
 # holds the difference: the carry's angle reads 4 % under the count), so
 # each angle is held to 5 % of it. With bending stiffness, or on the
 # moving-node belt, nothing is said; the rfe belt is counted as the
-# discrete one. `run` puts the same warning into summary.json (and so
+# discrete one (its default element is 0.0776 m whatever its idlers, and a
+# given one spanning more than 19.5° of a pulley is warned of: 0.15 m,
+# 28.6° of these). `run` puts the same warning into summary.json (and so
 # into the report) for the return span alone.
 . "$(dirname "$0")/lib/setup.sh"
 DATA="${TEST_DATA:-$(cd "$(dirname "$0")/../data" && pwd)}"
@@ -60,18 +62,31 @@ else
     bad "run's warnings" "$(grep -A3 '"warnings"' "$tmp/run/summary.json")"
 fi
 # the rfe belt's element centres meet the idlers as the discrete belt's
-# nodes do (docs/physics.md §15): the same angles, the same warning, and
-# its default element halved as the discrete belt's is (0.15 m, the 30°
-# chord of the 0.3 m pulleys, to 0.0776 m)
+# nodes do (docs/physics.md §15): the same angles and running lines; its
+# default element is 15° of the 0.3 m pulleys, 0.0776 m (model-format.md),
+# where both sets press on the quintic line: not warned. A given 0.15 m
+# element (28.6° of a pulley) is warned of, as the chain on a sprocket its
+# rigid elements then make (belt/rfe/build.c)
 sed 's/belt: {/belt: {formulation: rfe, /' "$tmp/loop.yaml" >"$tmp/rfe.yaml"
 "$BELTDYN" check "$tmp/rfe.yaml" >"$tmp/out_rfe" 2>"$tmp/err" || bad "check rfe" "$(cat "$tmp/err")"
 rret=$(grep "^  span head" "$tmp/out_rfe" | sed -n 's/.*turns \([0-9.]*\) rad.*/\1/p')
 if [ -n "$rret" ] && [ "$rret" = "$ret" ] \
-    && grep -q "^warning: the idlers of span 'head'" "$tmp/out_rfe" \
-    && grep -q "^belt elements: .*the default halved" "$tmp/out_rfe"; then
-    ok "rfe: return bays $rret rad, warned, default element halved"
+    && [ "$(grep -c '^  span .*running line quintic$' "$tmp/out_rfe")" = 2 ] \
+    && ! grep -q "^warning: the idlers of span\|^warning: a belt element spans" "$tmp/out_rfe" \
+    && grep -q "^belt elements: .*(unstretched length 0.0776 m; the rfe belt's default, 15°" \
+        "$tmp/out_rfe"; then
+    ok "rfe: return bays $rret rad, 15° default element, both sets quintic, not warned"
 else
     bad "rfe" "$(grep 'elements:\|turns\|^warning' "$tmp/out_rfe")"
+fi
+sed 's/belt: {/belt: {formulation: rfe, element_length: 0.15, /' "$tmp/loop.yaml" >"$tmp/rfe_coarse.yaml"
+"$BELTDYN" check "$tmp/rfe_coarse.yaml" >"$tmp/out_rfe_coarse" 2>"$tmp/err" \
+    || bad "check rfe 0.15 m" "$(cat "$tmp/err")"
+if grep -q "^warning: a belt element spans 29° of pulley .*ride a pulley as a chain rides a sprocket" \
+    "$tmp/out_rfe_coarse"; then
+    ok "rfe, 0.15 m elements: warned of the chain on a sprocket"
+else
+    bad "rfe 0.15 m" "$(grep '^warning' "$tmp/out_rfe_coarse")"
 fi
 sed 's/initial_tension: 5000}/initial_tension: 5000, bending_stiffness: 20}/' \
     "$tmp/loop.yaml" >"$tmp/ei.yaml"

@@ -73,8 +73,8 @@ static void setup_pulleys(bd_sim *sim, const bd_layout *lay)
     L->wrap_mark = bd_xcalloc((size_t)sim->model->n, sizeof *L->wrap_mark);
 }
 
-/* the discrete belt's idlers press on its quintic running line where
- * their bay holds this many elements and the belt turns over them by at
+/* the discrete and rfe belts' idlers press on the quintic running line
+ * where their bay holds this many elements and the belt turns over them by at
  * least BD_QUINTIC_TURN, on the quadratic line elsewhere
  * (idler_contact.c).
  * - The bay (the quintic's six nodes take five elements of it; measured,
@@ -104,7 +104,7 @@ static void setup_pulleys(bd_sim *sim, const bd_layout *lay)
 #define BD_QUINTIC_BAY_ELEMENTS 9.0
 #define BD_QUINTIC_TURN 0.0225
 
-/* how the discrete belt turns over the idler of set k at s on span sp,
+/* how the discrete or rfe belt turns over the idler of set k at s on span sp,
  * rad: the set's sag at rest (idler_turn.c, none with bending stiffness,
  * whose belt rounds the corner itself) and the path's own turn over the
  * idler's bay (a vertical curve; convex, toward the roll, counts
@@ -269,9 +269,10 @@ int bd_lumped_build_sized(bd_sim *sim, bd_diag *diag, size_t state_size, size_t 
     LM->k_bend = sim->model->EI / sim->model->l0;
     /* contacts: stiff and linearly implicit (pulley_contact.c, idler_contact.c) */
     LM->k_contact = 100.0 * LM->k_axial;
-    /* the discrete belt's idlers press on the quintic running line where
-     * it pays, and at their contact radius (setup_idlers, idler_contact.c) */
-    LM->quintic_allowed = def->belt.formulation == BD_FORMULATION_DISCRETE;
+    /* the discrete and rfe belts' idlers press on the quintic running line
+     * where it pays, and at their contact radius (setup_idlers,
+     * idler_contact.c; the rfe belt's centres are its nodes) */
+    LM->quintic_allowed = bd_lumped_turns_refine(def);
     /* the arc an element spans on the smallest pulley: the element takes
      * the belt's length round the shell (wrap_elements.c), so there is no
      * chordal action (docs/physics.md §4: 0.06 % of the tension at the

@@ -22,7 +22,11 @@
  * that failed at 30° (φ 0.04–0.25), 11 pass at half (1138 and 1213 at
  * φ 0.20 and 0.25 do not). Without the speed condition of the warning
  * (v ≥ 0.2·c): seed 1174 at v 0.18·c, φ 0.19 drew +9.0 % at 30° and
- * +2.3 % at half. Half costs about 4× (twice the nodes, half the step). */
+ * +2.3 % at half. Half costs about 4× (twice the nodes, half the step).
+ *
+ * The rfe belt's default is that half whatever its idlers: the chord of
+ * 15° (belt/rfe/build.c says why: its rigid elements ride a pulley as a
+ * chain rides a sprocket). */
 #include "belt/lumped/lumped.h"
 
 #include <math.h>
@@ -137,6 +141,8 @@ double bd_lumped_default_element(const bd_model_def *def, const double *phi, int
 {
     double l = bd_lumped_pulley_element(def);
     *refined = 0;
+    if (def->belt.formulation == BD_FORMULATION_RFE)
+        return 0.5 * l;
     if (!bd_lumped_turns_refine(def))
         return l;
     for (int k = 0; k < def->idler_set_count; k++)

@@ -216,10 +216,52 @@ static void align_constants(bd_sim *sim, bd_rfe_model *RM)
     free(T);
 }
 
+/* Rigid elements ride a pulley as a chain rides a sprocket: each touches
+ * the shell at its centre and turns with it, and where the belt comes onto
+ * or leaves the shell the elements' stiff shear cannot follow the path's
+ * turn within an element, so as each element passes a tangent point the
+ * free belt beside it is pushed across by up to about l0²/(8R) (the
+ * chordal rise) and the wrap's elements rock off the shell. The tension
+ * there pulses with that passage, and the laid start (centres on the path)
+ * may release it at once. Measured against the discrete belt (2026-12-01;
+ * docs/physics.md §15), by the arc l0/R an element takes on the pulley:
+ * - tests/data/vt_loop.yaml (R 0.3 m, 20 kN; 8-10 s at speed), the highest
+ *   tension: +9.6 % at 29.7°, +4.3 % at 22.2°, +1.1 % at 19.9°, 0.0 % at
+ *   14.8°; a spike of +1.6 to +10 % over the discrete belt's start peak in
+ *   the first 10 ms at 6 of 9 elements from 19.9 to 30.6°, at none of 13
+ *   from 13.8 to 19.1°;
+ * - examples/head_drive.yaml (R 0.4 m, 8 s start), the highest and lowest
+ *   tension: +9.7 % and −21 % at 29.7°, +2.0 % and −6.4 % at 14.8°.
+ * So the rfe belt's default element is half the discrete belt's (belt/
+ * lumped/idler_turn.c), and a longer one given is warned of. */
+#define RFE_WRAP_WARN_DEG 19.5
+
+static void warn_coarse(bd_sim *sim)
+{
+    const bd_model_def *def = sim->model->def;
+    if (!(def->belt.element_length > 0.0))
+        return;
+    int worst = 0;
+    for (int i = 1; i < def->pulley_count; i++)
+        if (def->pulleys[i].radius < def->pulleys[worst].radius)
+            worst = i;
+    double R = def->pulleys[worst].radius, arc = sim->model->l0 / R;
+    if (arc < RFE_WRAP_WARN_DEG * BD_DEG)
+        return;
+    bd_sim_warn(sim, "a belt element spans %.0f° of pulley '%s' (element length %.3g m, radius "
+                "%.3g m): the rfe belt's rigid elements ride a pulley as a chain rides a sprocket, "
+                "and near the wraps its tension pulses (against the discrete belt, +4 %% at "
+                "22°, +10 %% at 30°; docs/physics.md §15); the default, %.3g m, spans %.0f°",
+                arc / BD_DEG, def->pulleys[worst].name, sim->model->l0, R,
+                0.5 * bd_lumped_pulley_element(def),
+                0.5 * bd_lumped_pulley_element(def) / R / BD_DEG);
+}
+
 int bd_rfe_build(bd_sim *sim, bd_diag *diag)
 {
     if (bd_lumped_build_sized(sim, diag, sizeof(bd_rfe), sizeof(bd_rfe_model)))
         return 1;
+    warn_coarse(sim);
     bd_rfe_model *RM = sim->own->belt_model;
     /* bending acts between the elements' orientations (forces.c), not
      * between the chords of the centres as on the lumped belt */

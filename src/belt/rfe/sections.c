@@ -480,7 +480,9 @@ static inline void set_carried(bd_rfe *R, int i, int w)
  * forces: an idler outside its window stands at least half a bay less
  * half an element (LEAVE_BEYOND) from its end, 1.5 elements or more, and
  * its contact's three nodes (idler_contact.c) reach its end, not the
- * element inside it. */
+ * element inside it; on the quintic line (nine elements or more to a bay)
+ * it stands four elements or more from the end, and its six nodes reach
+ * three. */
 static void carry(bd_sim *sim)
 {
     bd_rfe *R = bd_rfe_of(sim);
@@ -1216,8 +1218,9 @@ static double lay_half_bay(bd_sim *sim, const bd_rfe_window *W, int end_node, in
             break;
         k0 = nb;
     }
-    /* the elements that the idler's contact reaches (2.5 elements from
-     * its roll, the smoothed line's pieces of idler_contact.c) kept where
+    /* the elements that the idler's contact reaches (within 1.5 elements
+     * of its roll on the quadratic line, 3 on the quintic: the nearest
+     * and three beyond; idler_contact.c) kept where
      * they are: moved, they sank into the roll, whose stiff contact threw
      * them off (generated seed 5, 8 m/s) */
     for (int r = 0; r < IDLER_REACH && k0 != end_node; r++)
