@@ -231,7 +231,7 @@ static void align_constants(bd_sim *sim, bd_rfe_model *RM)
  *   the first 10 ms at 6 of 9 elements from 19.9 to 30.6°, at none of 13
  *   from 13.8 to 19.1°;
  * - examples/head_drive.yaml (R 0.4 m, 8 s start), the highest and lowest
- *   tension: +9.7 % and −21 % at 29.7°, +2.0 % and −6.4 % at 14.8°.
+ *   tension: +9.7 % and −21 % at 29.7°, +2.0 % and −6.3 % at 14.8°.
  * So the rfe belt's default element is half the discrete belt's (belt/
  * lumped/idler_turn.c), and a longer one given is warned of. */
 #define RFE_WRAP_WARN_DEG 19.5
