@@ -18,13 +18,14 @@
 # - Tying and joining book what they change in the mechanical energy; the
 #   balance holds within 0.2 % (measured 4.0e-4; every element free
 #   4.7e-4) and what they booked stays below 1 % of the drive's work
-#   (measured 146 J of 27.3 kJ).
+#   (measured 95 J of 19.1 kJ).
 # - Against the same belt with every element free (enabled: false):
 #   peak tension, the tight side's peak at the drive and the mean drive
-#   force over 7-16 s within 2 % (measured −1.11 %, −1.56 %, −1.57 %). A
+#   force over 7-10 s within 2 % (measured −1.11 %, −1.56 %, −1.71 %). A
 #   section holds no sag; here the sag holds 7 % of the bays' axial
 #   compliance (docs/physics.md §14, Irvine's λ²/12) and the start is
-#   gentle. The sections ran 3.6 times faster (12.7 s against 45.5 s).
+#   gentle. The sections ran 4.3 times faster (6.3 s against 27.3 s, the
+#   other core busy).
 # - The report draws the belt's degrees of freedom.
 . "$(dirname "$0")/lib/setup.sh"
 DATA="${TEST_DATA:-$(cd "$(dirname "$0")/../data" && pwd)}"
@@ -60,7 +61,7 @@ elif want == "energy":
     print("ok" if good else "bad", "balance %.2g, booked %.0f J of %.0f J" %
           (on["energy"]["balance_error_rel"], booked, work))
 elif want == "agree":
-    # the running force: the drive's mean over 7-16 s (the head's
+    # the running force: the drive's mean over 7-10 s (the head's
     # torque over its 0.3 m radius), whether or not summary.json judged
     # it steady (both lie near the law's 3 %, where its judge may say
     # "still swings")

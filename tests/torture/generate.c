@@ -323,10 +323,11 @@ static size_t generate(unsigned long seed, const bd_gen_options *opt, double ele
 }
 
 /* The discrete and rfe belts' element lengths are drawn up to the model's
- * own default, which the build halves where the idlers turn the belt
- * sharply (belt/lumped/idler_turn.c, asked here with the conveyor written
- * without one). Other belts, and conveyors the build does not refine, are
- * drawn as before, byte for byte. (The rfe belt's were drawn up to the
+ * own default: the discrete belt's halved where the idlers turn the belt
+ * sharply, the rfe belt's half of it always (belt/lumped/idler_turn.c,
+ * asked here with the conveyor written without one). Other belts, and
+ * discrete conveyors the build does not refine, are drawn as before, byte
+ * for byte. (The rfe belt's were drawn up to the
  * discrete belt's unhalved default until 2026-12-01, twice its own on
  * seeds 3 and 9: +4.1 and +10.2 % over their law there, docs/physics.md
  * §15.) */
