@@ -7,7 +7,8 @@
  * node. At the halved element 2 of 13 conveyors that had failed still did
  * (seeds 1138 and 1213, φ 0.20 and 0.25 on their return; docs/physics.md
  * §10). On the discrete belt's quintic running line (§5) they pass, so a
- * set whose idlers press on it is not warned of. */
+ * set whose idlers press on it is not warned of (the rfe belt's too, whose
+ * idlers press on its centres' line by the same rule, §15). */
 #include "sim/engine.h"
 
 #include "parts/parts.h"
@@ -52,6 +53,7 @@ void bd_idler_turn_warn(bd_sim *sim)
                     def->pulleys[def->idler_sets[k].span].name, phi, voc, sim->model->belt->name,
                     sim->model->element_refined ? ", also at the halved default element" : "",
                     def->belt.formulation == BD_FORMULATION_DISCRETE
+                            || def->belt.formulation == BD_FORMULATION_RFE
                         ? ", or shorter elements: nine or more to a bay put its idlers on the "
                           "quintic running line (§5)"
                         : "");
