@@ -279,10 +279,7 @@ int bd_lumped_build_sized(bd_sim *sim, bd_diag *diag, size_t state_size, size_t 
      * default 30°, against 2.1 % as chords), but the wrap's pressure and
      * friction sit on its nodes, and the geodesic follows a pulley for less
      * than half a turn per element */
-    int worst = 0;
-    for (int i = 0; i < def->pulley_count; i++)
-        if (def->pulleys[i].radius < def->pulleys[worst].radius)
-            worst = i;
+    int worst = bd_lumped_smallest_pulley(def);
     double R = def->pulleys[worst].radius, span = sim->model->l0 / R;
     if (span >= BD_PI) {
         bd_diag_error(diag, def->source, def->belt.mark,

@@ -55,13 +55,20 @@ int bd_lumped_turns_refine(const bd_model_def *def)
         || def->belt.formulation == BD_FORMULATION_RFE;
 }
 
+int bd_lumped_smallest_pulley(const bd_model_def *def)
+{
+    int worst = 0;
+    for (int i = 1; i < def->pulley_count; i++)
+        if (def->pulleys[i].radius < def->pulleys[worst].radius)
+            worst = i;
+    return worst;
+}
+
 double bd_lumped_pulley_element(const bd_model_def *def)
 {
-    double r = INFINITY;
-    for (int i = 0; i < def->pulley_count; i++)
-        if (def->pulleys[i].radius < r)
-            r = def->pulleys[i].radius;
-    return 2.0 * r * sin(BD_PI / 12.0);
+    if (def->pulley_count <= 0)
+        return INFINITY;
+    return 2.0 * def->pulleys[bd_lumped_smallest_pulley(def)].radius * sin(BD_PI / 12.0);
 }
 
 /* idler set k's span on the laid belt: its mean tension, its mass per

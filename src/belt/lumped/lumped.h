@@ -153,6 +153,8 @@ typedef struct bd_span_rest {
     double tension, mass_per_length, cos_slope, spacing;
 } bd_span_rest;
 int bd_lumped_span_rest(const bd_model_def *def, const bd_path *path, bd_span_rest *out);
+/* the index of the pulley with the smallest radius (the first of equals) */
+int bd_lumped_smallest_pulley(const bd_model_def *def);
 double bd_lumped_pulley_element(const bd_model_def *def);
 int bd_lumped_idler_turns(const bd_model_def *def, const bd_path *path, double *phi,
                           double *voc);

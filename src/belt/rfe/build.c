@@ -221,7 +221,8 @@ static void align_constants(bd_sim *sim, bd_rfe_model *RM)
  * or leaves the shell the elements' stiff shear cannot follow the path's
  * turn within an element, so as each element passes a tangent point the
  * free belt beside it is pushed across by up to about l0²/(8R) (the
- * chordal rise) and the wrap's elements rock off the shell. The tension
+ * chordal rise, R·(1 − cos(l0/2R))) and the wrap's elements rock off the
+ * shell (derived in docs/physics.md §15, *A chain on a sprocket*). The tension
  * there pulses with that passage, and the laid start (centres on the path)
  * may release it at once. Measured against the discrete belt (2026-12-01;
  * docs/physics.md §15), by the arc l0/R an element takes on the pulley:
@@ -241,20 +242,17 @@ static void warn_coarse(bd_sim *sim)
     const bd_model_def *def = sim->model->def;
     if (!(def->belt.element_length > 0.0))
         return;
-    int worst = 0;
-    for (int i = 1; i < def->pulley_count; i++)
-        if (def->pulleys[i].radius < def->pulleys[worst].radius)
-            worst = i;
+    int worst = bd_lumped_smallest_pulley(def), refined;
     double R = def->pulleys[worst].radius, arc = sim->model->l0 / R;
     if (arc < RFE_WRAP_WARN_DEG * BD_DEG)
         return;
+    double l_default = bd_lumped_default_element(def, sim->model->idler_turn, &refined);
     bd_sim_warn(sim, "a belt element spans %.0f° of pulley '%s' (element length %.3g m, radius "
                 "%.3g m): the rfe belt's rigid elements ride a pulley as a chain rides a sprocket, "
                 "and near the wraps its tension pulses (against the discrete belt, +4 %% at "
                 "22°, +10 %% at 30°; docs/physics.md §15); the default, %.3g m, spans %.0f°",
-                arc / BD_DEG, def->pulleys[worst].name, sim->model->l0, R,
-                0.5 * bd_lumped_pulley_element(def),
-                0.5 * bd_lumped_pulley_element(def) / R / BD_DEG);
+                arc / BD_DEG, def->pulleys[worst].name, sim->model->l0, R, l_default,
+                l_default / R / BD_DEG);
 }
 
 int bd_rfe_build(bd_sim *sim, bd_diag *diag)
