@@ -227,7 +227,10 @@ void bd_torture_run(const char *yaml, const char *label, const bd_torture_option
         bal_worst = fmax(bal_worst,
                          fabs(e.kinetic_J + e.potential_J + e.dissipated_J - e.input_J - ref));
         if (bd_sim_time(sim) - t_checked >= chunk - 0.5 * dt) {
-            drop_worst = fmax(drop_worst, d_checked - e.dissipated_J);
+            if (d_checked - e.dissipated_J > drop_worst) {
+                drop_worst = d_checked - e.dissipated_J;
+                res->drop_at_s = bd_sim_time(sim);
+            }
             d_checked = e.dissipated_J;
             t_checked = bd_sim_time(sim);
         }
