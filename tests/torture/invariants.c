@@ -229,7 +229,8 @@ void bd_torture_run(const char *yaml, const char *label, const bd_torture_option
         if (bd_sim_time(sim) - t_checked >= chunk - 0.5 * dt) {
             if (d_checked - e.dissipated_J > drop_worst) {
                 drop_worst = d_checked - e.dissipated_J;
-                res->drop_at_s = bd_sim_time(sim);
+                res->drop_from_s = t_checked;
+                res->drop_to_s = bd_sim_time(sim);
             }
             d_checked = e.dissipated_J;
             t_checked = bd_sim_time(sim);

@@ -13,7 +13,7 @@ typedef struct bd_torture_result {
     char message[700];         /* why not */
     double balance;            /* largest |E_k+E_p+E_d−E_in−E_0| / energy scale */
     double dissipation_drop;   /* largest fall of E_d between checks / scale */
-    double drop_at_s;          /* ... and the time it ended at */
+    double drop_from_s, drop_to_s; /* ... between the checks at these times */
     double speed, speed_target;/* m/s, mean over the last window */
     double force, force_law;   /* N, mean drive force over the last window, the law */
     double force_scale;        /* N, the law's terms summed in magnitude */

@@ -229,8 +229,8 @@ int main(int argc, char **argv)
                          " energy balance %.3g > %.3g;", r.balance, TOL_BALANCE);
             if (r.dissipation_drop > TOL_DISSIPATION)
                 snprintf(why + strlen(why), sizeof why - strlen(why),
-                         " dissipation fell by %.3g of the energy scale (10 ms to %.3f s);",
-                         r.dissipation_drop, r.drop_at_s);
+                         " dissipation fell by %.3g of the energy scale (from %.3f to %.3f s);",
+                         r.dissipation_drop, r.drop_from_s, r.drop_to_s);
             if (fabs(verr) > TOL_SPEED)
                 snprintf(why + strlen(why), sizeof why - strlen(why),
                          " speed %.4f m/s vs %.4f (%+.2f%%);", r.speed, r.speed_target,
