@@ -65,7 +65,8 @@
  * the section's elements are spaced evenly again and its speeds taken
  * from their momentum. The section's new end is turned so that its SDE
  * to the free belt has no shear, and the free belt's turns beside it
- * relax (with an element that leaves likewise). What that changes in the
+ * relax (with an element that leaves likewise); an element that such a
+ * turn would set more than JOIN_TURN off the line waits. What that changes in the
  * mechanical energy (the joining element lifted out of its sag by about
  * a millimetre, its speed across the line, the turns) is measured over
  * the elements concerned and booked, a loss as dissipated and a gain as
@@ -92,6 +93,19 @@
 #define RELAX_JOIN 8
 /* an element leaves a section this many elements beyond its window's end */
 #define LEAVE_BEYOND 0.5
+/* the most a joining element may be turned from its section's line, rad.
+ * Turned so that its SDE to the free belt has no shear (reflect_turn),
+ * a section's end keeps that turn, and the stiff shear (GA = 10·EA) holds
+ * the free belt on it: the next element to join comes from below the
+ * line by as much, its chord from the line steeper, and the reflection
+ * (twice the chord less the free element's own turn) turns the next end
+ * further. On generated seed 34 (rfe, filling with load) the ends' turns
+ * so grew from 0.04 to 0.56 rad over 12 s, no element joined, and an
+ * idler the section's end was carried past pressed on its held elements
+ * (docs/physics.md §15). A belt settled in its bays meets a section's end
+ * at the slope of a half bay, w·a/(4T), 0.05 rad at a sag of 2.5 % of the
+ * bay; a belt steeper than that waits, the section ending short. */
+#define JOIN_TURN 0.05
 
 /* ------------------------------------------------------------------ */
 /* build                                                              */
@@ -1037,20 +1051,28 @@ static double chord_from(const bd_rfe_window *W, double px, double py, double L,
     return a + dir * (h > 0.0 ? sqrt(h) : 0.0);
 }
 
-/* a section's end p turned so that its SDE to q has no shear: t_p the
- * reflection of t_q about the SDE's line, γ = θ_u − ½(φ_p + φ_q) = 0 */
-static void reflect_turn(bd_sim *sim, int p, int q)
+/* the turn (tx, ty) of a section's end at (px, py) whose SDE to free
+ * element q has no shear: t_q reflected about the SDE's line,
+ * γ = θ_u − ½(φ_p + φ_q) = 0 (seed 000 §2.3) */
+static void reflected(const bd_sim *sim, double px, double py, int q, double *tx, double *ty)
 {
-    bd_rfe *R = bd_rfe_of(sim);
-    double ux = sim->x[q] - sim->x[p], uy = sim->y[q] - sim->y[p];
+    const bd_rfe *R = bd_rfe_of(sim);
+    double ux = sim->x[q] - px, uy = sim->y[q] - py;
     double inv = 1.0 / hypot(ux, uy);
     ux *= inv;
     uy *= inv;
     double c = R->ct[q] * ux + R->st[q] * uy;
-    double tx = 2.0 * c * ux - R->ct[q], ty = 2.0 * c * uy - R->st[q];
-    double tn = 1.0 / hypot(tx, ty);
-    R->ct[p] = tx * tn;
-    R->st[p] = ty * tn;
+    double x = 2.0 * c * ux - R->ct[q], y = 2.0 * c * uy - R->st[q];
+    double tn = 1.0 / hypot(x, y);
+    *tx = x * tn;
+    *ty = y * tn;
+}
+
+/* a section's end p turned so that its SDE to q has no shear */
+static void reflect_turn(bd_sim *sim, int p, int q)
+{
+    bd_rfe *R = bd_rfe_of(sim);
+    reflected(sim, sim->x[p], sim->y[p], q, &R->ct[p], &R->st[p]);
 }
 
 /* the free node next to section w's first element (end 0) or last (end
@@ -1162,6 +1184,20 @@ static double tie_off(const bd_rfe_window *W)
 static double join_off(const bd_sim *sim)
 {
     return 0.25 * sim->model->l0 + 0.002;
+}
+
+/* whether free element p, joining a section's end (dir −1: before its
+ * first element, +1: after its last) beside free element q, would be
+ * turned no more than JOIN_TURN from the window's line (put on the line
+ * as join does it, its turn as reflect_turn gives it) */
+static int join_turn_ok(const bd_sim *sim, const bd_rfe_window *W, int p, int q, double dir)
+{
+    double L = hypot(sim->x[p] - sim->x[q], sim->y[p] - sim->y[q]);
+    double s = chord_from(W, sim->x[q], sim->y[q], L, -dir);
+    double tx, ty;
+    reflected(sim, W->p0[0] + s * W->d[0], W->p0[1] + s * W->d[1], q, &tx, &ty);
+    double dev = atan2(W->d[0] * ty - W->d[1] * tx, W->d[0] * tx + W->d[1] * ty);
+    return fabs(dev) <= JOIN_TURN;
 }
 
 /* the belt's whole mechanical energy, as local_energy counts it */
@@ -1386,9 +1422,13 @@ void bd_rfe_sections_regroup(bd_sim *sim)
             continue;
         for (;;) {
             int p = bd_node_prev(S->first, n), q = bd_node_next(last_of(S, n), n);
-            int end = R->sec[p] < 0 && inside(sim, W, p, join_off(sim))   ? 0
-                    : R->sec[q] < 0 && inside(sim, W, q, join_off(sim)) ? 1
-                                                                        : -1;
+            int end = R->sec[p] < 0 && inside(sim, W, p, join_off(sim)) &&
+                              join_turn_ok(sim, W, p, bd_node_prev(p, n), -1.0)
+                        ? 0
+                    : R->sec[q] < 0 && inside(sim, W, q, join_off(sim)) &&
+                              join_turn_ok(sim, W, q, bd_node_next(q, n), 1.0)
+                        ? 1
+                        : -1;
             if (end < 0)
                 break;
             ensure_near(sim, w);
