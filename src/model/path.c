@@ -602,3 +602,18 @@ int bd_path_in_region(const bd_path *path, double s, double s_from, double lengt
     double L = path->length;
     return fmod(s - s_from + 2.0 * L, L) <= length;
 }
+
+double bd_path_region_overlap(const bd_path *path, double x0, double w, double s_from,
+                              double length)
+{
+    /* the interval measured from the region's start, and once more a loop
+     * further on for a region that wraps past s = 0 */
+    const double L = path->length;
+    double u = fmod(x0 - s_from + 2.0 * L, L), part = 0.0;
+    for (double start = 0.0; start <= L; start += L) {
+        double lo = fmax(u, start), hi = fmin(u + w, start + length);
+        if (hi > lo)
+            part += hi - lo;
+    }
+    return part;
+}

@@ -105,6 +105,9 @@ void bd_path_loaded_region(const bd_path *path, const bd_material_def *mat, doub
                            double *length);
 /* whether path coordinate s lies in the region [s_from, s_from + length] */
 int bd_path_in_region(const bd_path *path, double s, double s_from, double length);
+/* m of [x0, x0 + w] (path coordinates) inside that region */
+double bd_path_region_overlap(const bd_path *path, double x0, double w, double s_from,
+                              double length);
 /* wrap angle of pulley i, rad (>= 0) */
 double bd_path_wrap_angle(const bd_path *path, int pulley);
 

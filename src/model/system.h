@@ -268,7 +268,10 @@ typedef struct bd_model {
      * belt speed over its transverse wave speed there (belt/lumped/
      * idler_turn.c; NULL for other belts, 0 where not found) */
     double *idler_turn, *idler_turn_speed;   /* [def->idler_set_count] */
-    int element_refined;              /* the default element was halved for them */
+    int element_refined;              /* the default element was halved for them
+                                         (1), or the rfe belt's shortened for its
+                                         polygon on the pulleys (2; belt/lumped/
+                                         polygon.c) */
     /* material */
     double material_mpl;              /* kg/m on the loaded belt */
     int feed_individual;              /* the feed point's resistances one by

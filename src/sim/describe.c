@@ -127,12 +127,23 @@ void bd_sim_describe(const bd_sim *sim, FILE *f)
     fprintf(f, "belt loop length: %.3f m\n", sim->model->path.length);
     fprintf(f, "belt elements: %d (unstretched length %.4f m%s)\n", sim->model->n,
             sim->model->l0,
-            sim->model->element_refined
+            sim->model->element_refined == 1
                 ? "; the default halved: idlers turn the belt by 0.05 rad or more, "
+                  "docs/model-format.md"
+            : sim->model->element_refined == 2
+                ? "; the rfe belt's default, 15° of the smallest pulley, shortened so that its "
+                  "polygon on the pulleys costs at most 1 % of the running resistance, "
                   "docs/model-format.md"
             : def->belt.formulation == BD_FORMULATION_RFE && !(def->belt.element_length > 0.0)
                 ? "; the rfe belt's default, 15° of the smallest pulley, docs/model-format.md"
                 : "");
+    if (def->belt.formulation == BD_FORMULATION_RFE) {
+        double share = bd_lumped_polygon_share(def, &sim->model->path, sim->model->l0);
+        if (isfinite(share))
+            fprintf(f, "rfe polygon on the pulleys: about %.2g %% of the running resistance "
+                    "lost to it at %.3g m/s (an estimate, docs/physics.md §15)\n",
+                    100.0 * share, bd_drives_reference_speed(def));
+    }
     fprintf(f, "belt nodes: %d\n", sim->model->n);
     if (def->belt.formulation == BD_FORMULATION_DISCRETE) {
         /* docs/physics.md §10: without bending stiffness the nodes' passage

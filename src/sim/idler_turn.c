@@ -51,7 +51,7 @@ void bd_idler_turn_warn(bd_sim *sim)
                     "§10, §15)%s; give belt.bending_stiffness%s, or use the axial or "
                     "moving_node belt for the running force",
                     def->pulleys[def->idler_sets[k].span].name, phi, voc, sim->model->belt->name,
-                    sim->model->element_refined ? ", also at the halved default element" : "",
+                    sim->model->element_refined == 1 ? ", also at the halved default element" : "",
                     def->belt.formulation == BD_FORMULATION_DISCRETE
                             || def->belt.formulation == BD_FORMULATION_RFE
                         ? ", or shorter elements: nine or more to a bay put its idlers on the "

@@ -8,21 +8,6 @@
 
 #include <math.h>
 
-/* m of [x0, x0 + w] (path coordinates) inside the loaded region from
- * s_feed, `length` long (model/path.c bd_path_loaded_region), the loop
- * being L: the interval measured from the region's start, and once more a
- * loop further on for a region that wraps past s = 0 */
-static double loaded_part(double x0, double w, double s_feed, double length, double L)
-{
-    double u = fmod(x0 - s_feed + 2.0 * L, L), part = 0.0;
-    for (double start = 0.0; start <= L; start += L) {
-        double lo = fmax(u, start), hi = fmin(u + w, start + length);
-        if (hi > lo)
-            part += hi - lo;
-    }
-    return part;
-}
-
 void bd_running_law_build(const bd_sim *sim, bd_running_law *law)
 {
     const bd_model_def *def = sim->model->def;
@@ -36,7 +21,6 @@ void bd_running_law_build(const bd_sim *sim, bd_running_law *law)
      * the spacing closest to the one given), whether or not the belt
      * resolves them */
     const bd_path *path = &sim->model->path;
-    const double L = path->length;
     double s_feed = 0.0, loaded = 0.0;
     if (mL > 0.0)
         bd_path_loaded_region(path, &def->material, &s_feed, &loaded);
@@ -54,8 +38,8 @@ void bd_running_law_build(const bd_sim *sim, bd_running_law *law)
         for (int i = 1; i <= count; i++) {
             double next = i == count ? Ls : (i + 1) * spacing;
             double a = 0.5 * ((i - 1) * spacing + i * spacing), b = 0.5 * (i * spacing + next);
-            double on = mL > 0.0 ? loaded_part(sp->s0 + a * to_s, (b - a) * to_s, s_feed,
-                                               loaded, L) / to_s
+            double on = mL > 0.0 ? bd_path_region_overlap(path, sp->s0 + a * to_s,
+                                                          (b - a) * to_s, s_feed, loaded) / to_s
                                  : 0.0;
             law->idlers += set->rolling_resistance * g * cos_slope * (mB * (b - a) + mL * on);
         }

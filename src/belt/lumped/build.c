@@ -244,7 +244,7 @@ int bd_lumped_build_sized(bd_sim *sim, bd_diag *diag, size_t state_size, size_t 
     }
     double target = def->belt.element_length > 0.0
                         ? def->belt.element_length
-                        : bd_lumped_default_element(def, sim->own->idler_turn,
+                        : bd_lumped_default_element(def, &given, sim->own->idler_turn,
                                                     &sim->own->element_refined);
     bd_layout lay;
     char err[512];

@@ -26,7 +26,8 @@
  *
  * The rfe belt's default is that half whatever its idlers: the chord of
  * 15° (belt/rfe/build.c says why: its rigid elements ride a pulley as a
- * chain rides a sprocket). */
+ * chain rides a sprocket), shortened on fast belts for the running force
+ * that polygon costs (polygon.c). */
 #include "belt/lumped/lumped.h"
 
 #include <math.h>
@@ -144,12 +145,17 @@ int bd_lumped_idler_turns(const bd_model_def *def, const bd_path *path, double *
     return found;
 }
 
-double bd_lumped_default_element(const bd_model_def *def, const double *phi, int *refined)
+double bd_lumped_default_element(const bd_model_def *def, const bd_path *path, const double *phi,
+                                 int *refined)
 {
     double l = bd_lumped_pulley_element(def);
     *refined = 0;
-    if (def->belt.formulation == BD_FORMULATION_RFE)
-        return 0.5 * l;
+    if (def->belt.formulation == BD_FORMULATION_RFE) {
+        double p = bd_lumped_polygon_element(def, path, 0.5 * l);
+        if (p < 0.5 * l)
+            *refined = 2;
+        return p;
+    }
     if (!bd_lumped_turns_refine(def))
         return l;
     for (int k = 0; k < def->idler_set_count; k++)
@@ -165,7 +171,7 @@ double bd_lumped_default_element_on(const bd_model_def *def, const bd_path *path
     double *phi = bd_xcalloc(sets, sizeof *phi), *voc = bd_xcalloc(sets, sizeof *voc);
     if (bd_lumped_turns_refine(def))
         bd_lumped_idler_turns(def, path, phi, voc);
-    double l = bd_lumped_default_element(def, phi, refined);
+    double l = bd_lumped_default_element(def, path, phi, refined);
     free(phi);
     free(voc);
     return l;

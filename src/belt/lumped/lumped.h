@@ -158,7 +158,16 @@ int bd_lumped_smallest_pulley(const bd_model_def *def);
 double bd_lumped_pulley_element(const bd_model_def *def);
 int bd_lumped_idler_turns(const bd_model_def *def, const bd_path *path, double *phi,
                           double *voc);
-double bd_lumped_default_element(const bd_model_def *def, const double *phi, int *refined);
+/* the default element: *refined 1 where halved for the idlers' turns, 2
+ * where the rfe belt's is shortened for its polygon on the pulleys */
+double bd_lumped_default_element(const bd_model_def *def, const bd_path *path, const double *phi,
+                                 int *refined);
+/* polygon.c: the rfe belt's running force lost to its elements' polygon on
+ * the pulleys, as a share of the running resistance, at element l0 (NaN
+ * without idlers or load to resist); and the element no longer than l0
+ * that keeps it within 1 % */
+double bd_lumped_polygon_share(const bd_model_def *def, const bd_path *path, double l0);
+double bd_lumped_polygon_element(const bd_model_def *def, const bd_path *path, double l0);
 /* the same from the definition and its path alone (the estimate, tests) */
 double bd_lumped_default_element_on(const bd_model_def *def, const bd_path *path,
                                     int *refined);

@@ -12,6 +12,7 @@
 #include "base/constants.h"
 #include "belt/lumped/layout.h"
 #include "laws/stable_step.h"
+#include "parts/parts.h"
 
 /* the state's arrays of doubles, [n] each */
 static const size_t RFE_DOUBLES[] = {
@@ -246,7 +247,8 @@ static void warn_coarse(bd_sim *sim)
     double R = def->pulleys[worst].radius, arc = sim->model->l0 / R;
     if (arc < RFE_WRAP_WARN_DEG * BD_DEG)
         return;
-    double l_default = bd_lumped_default_element(def, sim->model->idler_turn, &refined);
+    double l_default = bd_lumped_default_element(def, &sim->model->path, sim->model->idler_turn,
+                                                 &refined);
     bd_sim_warn(sim, "a belt element spans %.0f° of pulley '%s' (element length %.3g m, radius "
                 "%.3g m): the rfe belt's rigid elements ride a pulley as a chain rides a sprocket, "
                 "and near the wraps its tension pulses (against the discrete belt, +4 %% at "
@@ -255,11 +257,33 @@ static void warn_coarse(bd_sim *sim)
                 l_default / R / BD_DEG);
 }
 
+/* a given element whose polygon on the pulleys costs more running force
+ * than the torture test allows its law (3 %; belt/lumped/polygon.c) */
+#define RFE_POLYGON_WARN 0.03
+
+static void warn_polygon(bd_sim *sim)
+{
+    const bd_model_def *def = sim->model->def;
+    if (!(def->belt.element_length > 0.0))
+        return;
+    const bd_path *path = &sim->model->path;
+    double share = bd_lumped_polygon_share(def, path, sim->model->l0);
+    if (!(share > RFE_POLYGON_WARN))
+        return;
+    bd_sim_warn(sim, "the rfe belt's elements (%.3g m) ride its pulleys as a polygon that costs "
+                "about %.1f %% of the running resistance at %.3g m/s (an estimate, docs/physics.md "
+                "§15): the drives' running force reads that much high; elements of %.3g m keep "
+                "it to 1 %%",
+                sim->model->l0, 100.0 * share, bd_drives_reference_speed(def),
+                sim->model->l0 * cbrt(0.01 / share));
+}
+
 int bd_rfe_build(bd_sim *sim, bd_diag *diag)
 {
     if (bd_lumped_build_sized(sim, diag, sizeof(bd_rfe), sizeof(bd_rfe_model)))
         return 1;
     warn_coarse(sim);
+    warn_polygon(sim);
     bd_rfe_model *RM = sim->own->belt_model;
     /* bending acts between the elements' orientations (forces.c), not
      * between the chords of the centres as on the lumped belt */
