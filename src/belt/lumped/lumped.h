@@ -167,6 +167,9 @@ double bd_lumped_default_element(const bd_model_def *def, const bd_path *path, c
  * without idlers or load to resist); and the element no longer than l0
  * that keeps it within 1 % */
 double bd_lumped_polygon_share(const bd_model_def *def, const bd_path *path, double l0);
+/* the share the default element may lose to its polygon: a third of the
+ * torture test's 3 % */
+#define BD_POLYGON_SHARE_MAX 0.01
 double bd_lumped_polygon_element(const bd_model_def *def, const bd_path *path, double l0);
 /* the same from the definition and its path alone (the estimate, tests) */
 double bd_lumped_default_element_on(const bd_model_def *def, const bd_path *path,

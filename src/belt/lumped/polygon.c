@@ -19,10 +19,10 @@
  * (the takeup still moving) and +0.2 to +0.4 % at 7.5°; halving the return
  * idlers' spacing, ten times less shear stiffness and every element free
  * left it, half the speed took it away, twice the length halved it (a
- * force per pulley, not per metre). At 15°, C = 0.65 puts 4.6 % on 8504,
- * and the same C predicts 0.2 to 2.5 % on 17 other generated conveyors
- * whose measured excess (−0.6 to +2.7 %) it follows to about a percent
- * (the table in physics.md). */
+ * force per pulley, not per metre). At 15°, C = 0.65 puts 4.6 % on 8504;
+ * the same C predicts 0.0 to 2.5 % on 15 other generated conveyors, whose
+ * measured excess (−0.6 to +2.7 %) it follows to within 1.8 % (seed 3),
+ * mostly to well under a percent (the table in physics.md). */
 #include "belt/lumped/lumped.h"
 
 #include <math.h>
@@ -31,9 +31,6 @@
 #include "parts/parts.h"
 
 #define POLYGON_C 0.65
-/* the share of the running resistance the default element may lose to
- * its polygon: a third of the torture test's 3 % */
-#define POLYGON_SHARE_MAX 0.01
 /* the most the default is shortened for it (a cost of (1/k)² at most:
  * nodes and the shear's step) */
 #define POLYGON_SHRINK_MIN 0.5
@@ -53,7 +50,8 @@ static double resistance_scale(const bd_model_def *def, const bd_path *path, dou
     for (int k = 0; k < def->idler_set_count; k++) {
         const bd_idler_set_def *set = &def->idler_sets[k];
         const bd_path_segment *sp = bd_path_span(path, set->span);
-        double on = mL > 0.0 ? bd_path_region_overlap(path, sp->s0, sp->length, s_feed, loaded) : 0.0;
+        double on =
+            mL > 0.0 ? bd_path_region_overlap(path, sp->s0, sp->length, s_feed, loaded) : 0.0;
         F += set->rolling_resistance * g * fabs(sp->dir[0]) * (mB * sp->length + mL * on);
     }
     if (mL > 0.0) {
@@ -80,7 +78,7 @@ double bd_lumped_polygon_share(const bd_model_def *def, const bd_path *path, dou
 double bd_lumped_polygon_element(const bd_model_def *def, const bd_path *path, double l0)
 {
     double share = bd_lumped_polygon_share(def, path, l0);
-    if (!(share > POLYGON_SHARE_MAX))
+    if (!(share > BD_POLYGON_SHARE_MAX))
         return l0;
-    return l0 * fmax(POLYGON_SHRINK_MIN, cbrt(POLYGON_SHARE_MAX / share));
+    return l0 * fmax(POLYGON_SHRINK_MIN, cbrt(BD_POLYGON_SHARE_MAX / share));
 }

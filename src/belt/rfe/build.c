@@ -273,9 +273,9 @@ static void warn_polygon(bd_sim *sim)
     bd_sim_warn(sim, "the rfe belt's elements (%.3g m) ride its pulleys as a polygon that costs "
                 "about %.1f %% of the running resistance at %.3g m/s (an estimate, docs/physics.md "
                 "§15): the drives' running force reads that much high; elements of %.3g m keep "
-                "it to 1 %%",
+                "it to %.0f %%",
                 sim->model->l0, 100.0 * share, bd_drives_reference_speed(def),
-                sim->model->l0 * cbrt(0.01 / share));
+                sim->model->l0 * cbrt(BD_POLYGON_SHARE_MAX / share), 100.0 * BD_POLYGON_SHARE_MAX);
 }
 
 int bd_rfe_build(bd_sim *sim, bd_diag *diag)
