@@ -66,8 +66,8 @@
  * from their momentum. The section's new end is turned so that its SDE
  * to the free belt has no shear, and the free belt's turns beside it
  * relax (with an element that leaves likewise); an element that such a
- * turn would set more than JOIN_TURN off the line waits. What that changes in the
- * mechanical energy (the joining element lifted out of its sag by about
+ * turn would set more than JOIN_TURN off the line waits. What that
+ * changes in the mechanical energy (the joining element lifted out of its sag by about
  * a millimetre, its speed across the line, the turns) is measured over
  * the elements concerned and booked, a loss as dissipated and a gain as
  * input (as the moving-node belt books its material's reload), counted
@@ -103,8 +103,9 @@
  * so grew from 0.04 to 0.56 rad over 12 s, no element joined, and an
  * idler the section's end was carried past pressed on its held elements
  * (docs/physics.md §15). A belt settled in its bays meets a section's end
- * at the slope of a half bay, w·a/(4T), 0.1 rad at a sag of 5 % of the
- * bay; a belt steeper than that waits, the section ending short. (At
+ * at the slope of a half bay, w·a/(4T) (the sag parabola h = w·a²/(8T)
+ * of DIN 22101's sag limit, as belt/lumped/idler_turn.c takes it, on half
+ * the span), 0.1 rad at a sag of 5 % of the bay; a belt steeper than that waits, the section ending short. (At
  * 0.05 rad vt_loop's sections drew 2.65 % less running force than its
  * every element free, against 1.61 % at 0.1 and 1.71 % without.) */
 #define JOIN_TURN 0.1
