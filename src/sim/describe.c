@@ -185,6 +185,11 @@ void bd_sim_describe(const bd_sim *sim, FILE *f)
                     top.windows, top.window_length, sim->model->path.length,
                     def->belt.group_length, 3.0 * (sim->model->n - tied) + 2.0 * top.windows);
         }
+        if (def->belt.group_sections && (top.windows > 0 || top.kink_free_spans > 0))
+            fprintf(f, "variable topology: the kink at the sections' ends about %.2f %% of the "
+                       "running resistance; %d span(s) left free, whose ends' kink would pass "
+                       "1 %% (docs/physics.md §15)\n",
+                    100.0 * top.kink_share, top.kink_free_spans);
     }
     fprintf(f, "stable time step: %.4g s, limited by the %s\n", sim->model->dt_limit,
             bd_time_step_limit_name(sim->model->limit_kind));

@@ -162,6 +162,10 @@ int bd_lumped_idler_turns(const bd_model_def *def, const bd_path *path, double *
  * where the rfe belt's is shortened for its polygon on the pulleys */
 double bd_lumped_default_element(const bd_model_def *def, const bd_path *path, const double *phi,
                                  int *refined);
+/* polygon.c: the running resistance's scale at speed v (N), as
+ * sim/running_law.c sums it in magnitude, from the definition and the
+ * path: each span's idlers carrying its whole length */
+double bd_lumped_resistance_scale(const bd_model_def *def, const bd_path *path, double v);
 /* polygon.c: the rfe belt's running force lost to its elements' polygon on
  * the pulleys, as a share of the running resistance, at element l0 (NaN
  * without idlers or load to resist); and the element no longer than l0

@@ -39,7 +39,7 @@
  * in magnitude (idler rolling resistance with the load on the spans, the
  * load's lift and its acceleration at the feed), from the definition and
  * the path: each span's idlers carry its whole length */
-static double resistance_scale(const bd_model_def *def, const bd_path *path, double v)
+double bd_lumped_resistance_scale(const bd_model_def *def, const bd_path *path, double v)
 {
     const double g = def->gravity, mB = def->belt.mass_per_length;
     const double mL = def->material.present ? def->material.mass_per_length : 0.0;
@@ -71,7 +71,7 @@ double bd_lumped_polygon_share(const bd_model_def *def, const bd_path *path, dou
     for (int i = 0; i < def->pulley_count; i++)
         sum += pow(l0 / def->pulleys[i].radius, 3.0);
     double loss = POLYGON_C * def->belt.mass_per_length * v * v * sum;
-    double F = resistance_scale(def, path, v);
+    double F = bd_lumped_resistance_scale(def, path, v);
     return F > 0.0 ? loss / F : NAN;
 }
 

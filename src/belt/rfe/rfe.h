@@ -39,6 +39,9 @@ typedef struct bd_rfe_window {
      * c = rr·g·cos δ·share, Σ c and Σ c·x (m²/s², m³/s²) */
     double k0, k1, k2, c0, c1;
     double along_min, along_max;  /* m, its first and last idler's place along d */
+    int idler_lo, idler_hi;   /* those two idlers (model index), or −1: they
+                                 carry what the free belt beside the section's
+                                 first and last element presses on it */
 } bd_rfe_window;
 
 /* an affine function of an idler's place x in its window, f0 + f1·x */
@@ -101,6 +104,9 @@ typedef struct bd_rfe_model {
     /* variable topology (sections.c): none when off or nowhere */
     bd_rfe_window *windows;   /* [window_count] */
     int window_count;
+    double kink_share;        /* the kink at their ends, a share of the running
+                                 resistance (sections.c kink_spans) */
+    int kink_free_spans;      /* spans left free for their kink */
     int *idler_list;          /* the idlers the windows carry, window by window */
     int *idler_window;        /* [idler_count] the window carrying idler i, or −1 */
     double *idler_share;      /* [idler_count] m of the span each idler carries

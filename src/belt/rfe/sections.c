@@ -67,14 +67,16 @@
  * to the free belt has no shear, and the free belt's turns beside it
  * relax (with an element that leaves likewise); an element that such a
  * turn would set more than JOIN_TURN off the line waits. What that
- * changes in the mechanical energy (the joining element lifted out of its sag by about
- * a millimetre, its speed across the line, the turns) is measured over
- * the elements concerned and booked, a loss as dissipated and a gain as
- * input (as the moving-node belt books its material's reload), counted
- * from the state the step ends in. The free belt's end bay is held by the
+ * changes in the mechanical energy (the joining element lifted out of
+ * its sag by a few millimetres, its speed across the line, the turns) is
+ * measured over the elements concerned: a loss is booked as dissipated
+ * (an inelastic tie), a gain is paid from the section's motion along its
+ * line (pay_gain: a topology change makes no energy), counted from the
+ * state the step ends in. The free belt's end bay is held by the
  * section's end at the height of the idler tops, a support in mid-bay:
- * that bay's half sags as a half bay. docs/physics.md §15 has the
- * measurements behind each of these choices. */
+ * that bay's half sags as a half bay, and the idler nearest that end
+ * carries the weight the end holds (end_resistance). docs/physics.md §15
+ * has the measurements behind each of these choices. */
 #include "belt/rfe/rfe.h"
 
 #include <math.h>
@@ -83,6 +85,8 @@
 
 #include "base/alloc.h"
 #include "laws/rolling.h"
+#include "model/path.h"
+#include "parts/parts.h"
 
 /* free elements beyond the half bay beside a section's end whose turns
  * are relaxed when it is first tied (build.c bd_rfe_relax_turns) */
@@ -176,6 +180,72 @@ static void window_bays(const bd_model_def *def, const bd_path *path, int k, dou
     *i1 = (int)floor((to - margin) / bay - 0.5);
 }
 
+/* The kink at a section's ends. The free end bay hangs from a section's
+ * end at the slope θ = w·d/(2T), d = a/2 (θ = φ/4 of the belt's turn
+ * φ = w·a/T at an idler; w its weight per metre normal to the span, T
+ * less m′v²), and the end holds R = ½·w·d = w·a/4 of it (end_resistance).
+ * Each element that joins is lifted the last θ·l0 onto the line against
+ * R, and each that leaves drops as much: R·θ·v of power at each end,
+ * w²a²v/(16T), whatever the element. A string running over a sharp
+ * support does no such work; the joins and leaves do, and where it goes
+ * depends on the belt. Measured: on generated seed 8522 (ζ 0.1,
+ * 1.67 m/s) it came back to the belt's motion; on 8504 (undamped,
+ * 4.68 m/s; its kinks estimated at 6 % of its running resistance) the
+ * shear's swing it left was dissipated at the idlers, and its sections
+ * drew +5.48 % over its law against +1.46 % with every element free
+ * (the return left free: +2.47 %). So a span gets windows
+ * only while the kinks at the two ends of its run of sections,
+ * w²a²v/(8T), with those of the spans taken before it (least first),
+ * cost at most KINK_SHARE_MAX of the running resistance (polygon.c's
+ * scale); the others stay free. allowed[k] for idler set k; *kept the
+ * share the kept spans' kinks cost, *dropped how many were left free. */
+#define KINK_SHARE_MAX 0.01
+static void kink_spans(const bd_model_def *def, const bd_path *path, double l0, int *allowed,
+                       double *kept, int *dropped)
+{
+    const int sets = def->idler_set_count;
+    *kept = 0.0;
+    *dropped = 0;
+    double *share = bd_xcalloc((size_t)sets + 1, sizeof *share);
+    bd_span_rest *rest = bd_xcalloc((size_t)sets + 1, sizeof *rest);
+    bd_lumped_span_rest(def, path, rest);
+    const double v = bd_drives_reference_speed(def);
+    const double F = bd_lumped_resistance_scale(def, path, v);
+    for (int k = 0; k < sets; k++) {
+        const bd_span_rest *r = &rest[k];
+        const bd_path_segment *sp = bd_path_span(path, def->idler_sets[k].span);
+        int i0, i1, per;
+        window_bays(def, path, k, def->idler_sets[k].spacing, sp->length, l0, &i0, &i1, &per);
+        allowed[k] = i1 > i0;
+        share[k] = 0.0;
+        const double tc = r->tension - r->mass_per_length * v * v;
+        if (!allowed[k] || r->mass_per_length <= 0.0)
+            continue;
+        const double w = r->mass_per_length * def->gravity * r->cos_slope;
+        share[k] = tc > 0.0 && F > 0.0 ? w * w * r->spacing * r->spacing / (8.0 * tc * F) : INFINITY;
+    }
+    /* least first, while the sum stays within the share */
+    for (;;) {
+        int best = -1;
+        for (int k = 0; k < sets; k++)
+            if (allowed[k] == 1 && (best < 0 || share[k] < share[best]))
+                best = k;
+        if (best < 0)
+            break;
+        if (*kept + share[best] <= KINK_SHARE_MAX) {
+            *kept += share[best];
+            allowed[best] = 2;
+        } else {
+            allowed[best] = 0;
+            (*dropped)++;
+        }
+    }
+    for (int k = 0; k < sets; k++)
+        allowed[k] = allowed[k] == 2;
+    free(rest);
+    free(share);
+}
+
 /* the windows of idler set k's span (window_bays), in windows of at most
  * group_length */
 static int set_windows(bd_sim *sim, int k, bd_rfe_window *out, int room)
@@ -219,8 +289,13 @@ double bd_rfe_windows_estimate(const bd_model_def *def, const bd_path *path, dou
     *windows = 0.0;
     if (!def->belt.group_sections || def->belt.group_length <= 0.0)
         return 0.0;
-    double tied = 0.0;
+    double tied = 0.0, kept;
+    int dropped;
+    int *allowed = bd_xcalloc((size_t)def->idler_set_count + 1, sizeof *allowed);
+    kink_spans(def, path, l0, allowed, &kept, &dropped);
     for (int k = 0; k < def->idler_set_count; k++) {
+        if (!allowed[k])
+            continue;
         const double bay = def->idler_sets[k].spacing;
         const bd_path_segment *sp = bd_path_span(path, def->idler_sets[k].span);
         double Ls = hypot(sp->p1[0] - sp->p0[0], sp->p1[1] - sp->p0[1]);
@@ -231,6 +306,7 @@ double bd_rfe_windows_estimate(const bd_model_def *def, const bd_path *path, dou
         tied += (i1 - i0) * bay;
         *windows += ceil((i1 - i0) / (double)per);
     }
+    free(allowed);
     return tied;
 }
 
@@ -250,7 +326,12 @@ void bd_rfe_sections_build(bd_sim *sim, bd_rfe_model *RM)
         return;
     /* at most a window per idler */
     RM->windows = bd_xcalloc((size_t)ni + 1, sizeof *RM->windows);
+    int *allowed = bd_xcalloc((size_t)def->idler_set_count + 1, sizeof *allowed);
+    kink_spans(def, &sim->model->path, sim->model->l0, allowed, &RM->kink_share,
+               &RM->kink_free_spans);
     for (int k = 0; k < def->idler_set_count; k++) {
+        if (!allowed[k])
+            continue;
         int base = RM->window_count;
         int made = set_windows(sim, k, RM->windows + base, ni - base);
         for (int w = base; w < base + made; w++) {
@@ -260,6 +341,7 @@ void bd_rfe_sections_build(bd_sim *sim, bd_rfe_model *RM)
         }
         RM->window_count += made;
     }
+    free(allowed);
     /* the idlers inside each window, in their order along it */
     int listed = 0;
     for (int w = 0; w < RM->window_count; w++) {
@@ -281,6 +363,7 @@ void bd_rfe_sections_build(bd_sim *sim, bd_rfe_model *RM)
         W->k0 = W->k1 = W->k2 = W->c0 = W->c1 = 0.0;
         W->along_min = W->b;
         W->along_max = W->a;
+        W->idler_lo = W->idler_hi = -1;
         for (int q = W->idler_first; q < listed; q++) {
             int i = RM->idler_list[q];
             const bd_idler_model *im = sim->idlers[i].m;
@@ -291,8 +374,14 @@ void bd_rfe_sections_build(bd_sim *sim, bd_rfe_model *RM)
             W->k2 += kr * x * x;
             W->c0 += c;
             W->c1 += c * x;
-            W->along_min = fmin(W->along_min, RM->idler_along[i]);
-            W->along_max = fmax(W->along_max, RM->idler_along[i]);
+            if (RM->idler_along[i] < W->along_min) {
+                W->along_min = RM->idler_along[i];
+                W->idler_lo = i;
+            }
+            if (RM->idler_along[i] > W->along_max) {
+                W->along_max = RM->idler_along[i];
+                W->idler_hi = i;
+            }
         }
         /* the loading zone (a bay either side of the feed point): mass
          * lands there every step, the skirts rub */
@@ -596,6 +685,52 @@ void bd_rfe_sections_forces(bd_sim *sim)
     bd_lumped_forces_runs(sim, R->live_first, R->live_count, R->live_n);
 }
 
+/* The free belt beside a section's end hangs from it: the end, held on
+ * the line at the idlers' height, is a support of no rolling resistance,
+ * and it holds half the weight of the free stretch from it to the next
+ * idler outside (a string between two supports at one height; seed 8522,
+ * 32 m, its return's bays sagging 5 %: 48–142 N at each of its four
+ * outer ends, measured as the forces across the line on them, and 2.3 %
+ * of its running force missing). On a belt free everywhere the idlers
+ * carry it, so the section's idler next to that end does: rr·½·w·d, w
+ * the free belt's weight per length normal to the span, d that stretch.
+ * The static weight, not the force measured on the end: that is the stiff
+ * shear's too, swinging by kilonewtons at its own frequency on an
+ * undamped belt (generated seed 8504: 1.7–5.3 kN rms about a mean of
+ * 44–253 N), and a roll's resistance, which cannot pull, would rectify
+ * it. None where the next section meets this one (no free stretch).
+ * Idler i (carried by S, its place `at` along the line) is next to the
+ * section's first end if that end lies less than a bay before it with
+ * no idler between, likewise for the last; sat the sign of the belt's
+ * speed over it (saturated, idler.c). */
+static inline void end_resistance(const bd_sim *sim, const bd_rfe_window *W, bd_rfe_section *S,
+                                  int i, double sat)
+{
+    const bd_rfe *R = bd_rfe_of(sim);
+    const bd_rfe_model *RM = bd_rfe_model_of(sim);
+    const int n = sim->model->n;
+    const double at = RM->idler_along[i];
+    double d = 0.0;
+    int outside = -1;
+    if (at >= S->s1 && at - S->s1 < W->bay) {
+        outside = bd_node_prev(S->first, n);
+        if (R->sec[outside] < 0)
+            d += S->s1 - (at - W->bay);
+    }
+    if (at <= S->s2 && S->s2 - at < W->bay) {
+        outside = bd_node_next(last_of(S, n), n);
+        if (R->sec[outside] < 0)
+            d += at + W->bay - S->s2;
+    }
+    if (!(d > 0.0))
+        return;
+    const double w = sim->model->gravity * W->cos_slope * sim->mass[outside] / sim->model->l0;
+    const double fr = sim->idlers[i].m->rolling * 0.5 * w * d * sat;
+    const double xi = (at - S->s1) / (S->s2 - S->s1);
+    S->f1 += (1.0 - xi) * fr;
+    S->f2 += xi * fr;
+}
+
 /* the supports phase: the idlers the sections carry (their sums for the
  * step; which they are the forces phase found, carry), every other idler
  * pressing on the belt as on the lumped belt */
@@ -645,6 +780,10 @@ void bd_rfe_supports(bd_sim *sim)
             double f = (S->v1 > 0.0 ? 1.0 : -1.0) * mbar;
             S->f1 = f * (xj.f0 * W->c0 + xj.f1 * W->c1);
             S->f2 = f * (xi.f0 * W->c0 + xi.f1 * W->c1);
+            const double sat = S->v1 > 0.0 ? 1.0 : -1.0;
+            end_resistance(sim, W, S, W->idler_lo, sat);
+            if (W->idler_hi != W->idler_lo)
+                end_resistance(sim, W, S, W->idler_hi, sat);
             continue;
         }
         /* else roll by roll: their speeds from the section first */
@@ -677,6 +816,7 @@ void bd_rfe_supports(bd_sim *sim)
             S->k22 += kr * xi * xi;
             S->p1 += pr * xj;
             S->p2 += pr * xi;
+            end_resistance(sim, W, S, i, sat);
         }
     }
     /* the idlers no section carries press on the belt */
@@ -1078,6 +1218,36 @@ static void reflect_turn(bd_sim *sim, int p, int q)
     reflected(sim, sim->x[p], sim->y[p], q, &R->ct[p], &R->st[p]);
 }
 
+/* A topology change makes no energy. What a join or a leave adds to the
+ * belt's mechanical energy (a join lifts its element the last millimetres
+ * onto the line, and the stiff shear beside it takes the new turn: on
+ * generated seed 8522's return 0.2–0.3 J a join, booked as input it was
+ * 8 W, and the drive drew 1.8 % less than the law) is taken from the
+ * section's motion along its line, both ends' speeds scaled alike: a drag
+ * the drive then pays, as it pays the idlers. What its kinetic energy
+ * cannot give without stopping it (at most a quarter of it: the belt at
+ * rest) stays a gain, booked as input. Returns what a change with this
+ * energy balance leaves to book: lost > 0 as it was, a gain less what
+ * the section paid. */
+static double pay_gain(bd_sim *sim, const bd_rfe_window *W, bd_rfe_section *S, double lost)
+{
+    if (lost >= 0.0 || S->count < 2)
+        return lost;
+    const double v1 = S->v1, v2 = S->v2;
+    const double ke2 = S->m11 * v1 * v1 + 2.0 * S->m12 * v1 * v2 + S->m22 * v2 * v2;
+    const double take = fmin(-lost, 0.25 * 0.5 * ke2);
+    if (!(take > 0.0))
+        return lost;
+    const double f = sqrt(1.0 - 2.0 * take / ke2);
+    S->v1 = f * v1;
+    S->v2 = f * v2;
+    if (aggregated(S))
+        place_ends(sim, W, S);
+    else
+        place(sim, W, S);
+    return lost + take;
+}
+
 /* the free node next to section w's first element (end 0) or last (end
  * 1) joins it; returns the energy the section's elements and the SDEs at
  * its ends lost by it */
@@ -1116,7 +1286,7 @@ static double join(bd_sim *sim, int w, int end)
     else
         bd_rfe_relax_turns(sim, bd_node_next(p, n), RELAX_JOIN);
     R->joined++;
-    return e0 - local_energy(sim, from, to);
+    return pay_gain(sim, W, S, e0 - local_energy(sim, from, to));
 }
 
 /* the first (end 0) or last (end 1) element of section w leaves it where
@@ -1154,7 +1324,7 @@ static double leave(bd_sim *sim, int w, int end)
     else
         bd_rfe_relax_turns(sim, k, RELAX_JOIN);
     R->left++;
-    return e0 - local_energy(sim, from, to);
+    return pay_gain(sim, &bd_rfe_model_of(sim)->windows[w], S, e0 - local_energy(sim, from, to));
 }
 
 /* whether node i stands in window W no further than `off` from its line
@@ -1502,4 +1672,6 @@ void bd_rfe_topology(const bd_sim *sim, bd_belt_topology *out)
     out->left = R->left;
     out->lost_J = R->booked_lost;
     out->gained_J = R->booked_gained;
+    out->kink_share = RM->kink_share;
+    out->kink_free_spans = RM->kink_free_spans;
 }
