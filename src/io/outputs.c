@@ -484,6 +484,8 @@ static int write_summary(bd_outputs *o, const bd_sim *sim, double wall, const ch
         cJSON_AddNumberToObject(vt, "elements_left", (double)top.left);
         bd_json_add_number(vt, "energy_booked_dissipated_J", top.lost_J);
         bd_json_add_number(vt, "energy_booked_input_J", top.gained_J);
+        bd_json_add_number(vt, "end_kink_share", top.kink_share);
+        cJSON_AddNumberToObject(vt, "spans_left_free", top.kink_free_spans);
     }
     /* steady running against the model's own law (sensors/running.c) */
     bd_running_check rc;
