@@ -74,9 +74,9 @@ typedef struct bd_belt_topology {
     int dof_now, dof_min, dof_max;   /* the belt's degrees of freedom */
     long joined, left;        /* elements tied into a section, freed from one */
     double lost_J, gained_J;  /* the energy tying booked as dissipated, as input */
-    /* the kink at the sections' ends (belt/rfe/sections.c): its cost as a
-     * share of the running resistance on the spans with windows, and the
-     * spans left free for theirs */
+    /* the kink at the sections' ends (belt/rfe/sections.c): what the kept
+     * spans' kinks cost, as a share of the whole belt's running
+     * resistance, and the spans left free for theirs */
     double kink_share;
     int kink_free_spans;
 } bd_belt_topology;

@@ -173,10 +173,13 @@ void bd_sim_describe(const bd_sim *sim, FILE *f)
         sim->model->belt->topology(sim, &top);
         if (!def->belt.group_sections)
             fprintf(f, "variable topology: off (belt.variable_topology.enabled: false)\n");
-        else if (top.windows == 0)
+        else if (top.windows == 0 && top.kink_free_spans == 0)
             fprintf(f, "variable topology: no window for a long section (none on a straight "
                        "span on its idlers, one row of idlers, bays of 4 elements or more, two "
                        "bays and five elements clear of its pulleys and curves)\n");
+        else if (top.windows == 0)
+            fprintf(f, "variable topology: no window for a long section (every span with "
+                       "room for one left free for the kink at its sections' ends)\n");
         else {
             double tied = top.window_length / sim->model->l0;
             fprintf(f, "variable topology: %d windows, %.1f m of the %.1f m belt in long "

@@ -200,8 +200,8 @@ static void window_bays(const bd_model_def *def, const bd_path *path, int k, dou
  * scale); the others stay free. allowed[k] for idler set k; *kept the
  * share the kept spans' kinks cost, *dropped how many were left free. */
 #define KINK_SHARE_MAX 0.01
-static void kink_spans(const bd_model_def *def, const bd_path *path, double l0, int *allowed,
-                       double *kept, int *dropped)
+static void kink_spans(const bd_model_def *def, const bd_path *path, double l0, const double *bays,
+                       int *allowed, double *kept, int *dropped)
 {
     const int sets = def->idler_set_count;
     *kept = 0.0;
@@ -214,15 +214,18 @@ static void kink_spans(const bd_model_def *def, const bd_path *path, double l0, 
     for (int k = 0; k < sets; k++) {
         const bd_span_rest *r = &rest[k];
         const bd_path_segment *sp = bd_path_span(path, def->idler_sets[k].span);
+        const double Ls = hypot(sp->p1[0] - sp->p0[0], sp->p1[1] - sp->p0[1]);
         int i0, i1, per;
-        window_bays(def, path, k, def->idler_sets[k].spacing, sp->length, l0, &i0, &i1, &per);
+        window_bays(def, path, k, bays[k], Ls, l0, &i0, &i1, &per);
         allowed[k] = i1 > i0;
         share[k] = 0.0;
         const double tc = r->tension - r->mass_per_length * v * v;
-        if (!allowed[k] || r->mass_per_length <= 0.0)
+        /* not assessed (kept): no belt laid at rest, or no running
+         * resistance to weigh the kink against (every roll frictionless) */
+        if (!allowed[k] || r->mass_per_length <= 0.0 || !(F > 0.0))
             continue;
         const double w = r->mass_per_length * def->gravity * r->cos_slope;
-        share[k] = tc > 0.0 && F > 0.0 ? w * w * r->spacing * r->spacing / (8.0 * tc * F) : INFINITY;
+        share[k] = tc > 0.0 ? w * w * r->spacing * r->spacing / (8.0 * tc * F) : INFINITY;
     }
     /* least first, while the sum stays within the share */
     for (;;) {
@@ -292,7 +295,11 @@ double bd_rfe_windows_estimate(const bd_model_def *def, const bd_path *path, dou
     double tied = 0.0, kept;
     int dropped;
     int *allowed = bd_xcalloc((size_t)def->idler_set_count + 1, sizeof *allowed);
-    kink_spans(def, path, l0, allowed, &kept, &dropped);
+    double *bays = bd_xcalloc((size_t)def->idler_set_count + 1, sizeof *bays);
+    for (int k = 0; k < def->idler_set_count; k++)
+        bays[k] = def->idler_sets[k].spacing;
+    kink_spans(def, path, l0, bays, allowed, &kept, &dropped);
+    free(bays);
     for (int k = 0; k < def->idler_set_count; k++) {
         if (!allowed[k])
             continue;
@@ -327,8 +334,8 @@ void bd_rfe_sections_build(bd_sim *sim, bd_rfe_model *RM)
     /* at most a window per idler */
     RM->windows = bd_xcalloc((size_t)ni + 1, sizeof *RM->windows);
     int *allowed = bd_xcalloc((size_t)def->idler_set_count + 1, sizeof *allowed);
-    kink_spans(def, &sim->model->path, sim->model->l0, allowed, &RM->kink_share,
-               &RM->kink_free_spans);
+    kink_spans(def, &sim->model->path, sim->model->l0, sim->model->idler_spacing, allowed,
+               &RM->kink_share, &RM->kink_free_spans);
     for (int k = 0; k < def->idler_set_count; k++) {
         if (!allowed[k])
             continue;
@@ -698,14 +705,17 @@ void bd_rfe_sections_forces(bd_sim *sim)
  * shear's too, swinging by kilonewtons at its own frequency on an
  * undamped belt (generated seed 8504: 1.7–5.3 kN rms about a mean of
  * 44–253 N), and a roll's resistance, which cannot pull, would rectify
- * it. None where the next section meets this one (no free stretch).
- * Idler i (carried by S, its place `at` along the line) is next to the
- * section's first end if that end lies less than a bay before it with
- * no idler between, likewise for the last; sat the sign of the belt's
+ * it. None where the next section meets this one (its end the adjacent
+ * element: no free stretch). Idler i (carried by S, its place `at` along
+ * the line; none: −1) is next to the section's first end if that end lies
+ * less than a bay before it (the window's idlers stand a bay apart, so
+ * none is between), likewise for the last; sat the sign of the belt's
  * speed over it (saturated, idler.c). */
 static inline void end_resistance(const bd_sim *sim, const bd_rfe_window *W, bd_rfe_section *S,
                                   int i, double sat)
 {
+    if (i < 0)
+        return;
     const bd_rfe *R = bd_rfe_of(sim);
     const bd_rfe_model *RM = bd_rfe_model_of(sim);
     const int n = sim->model->n;
@@ -1224,14 +1234,14 @@ static void reflect_turn(bd_sim *sim, int p, int q)
  * generated seed 8522's return 0.2–0.3 J a join, booked as input it was
  * 8 W, and the drive drew 1.8 % less than the law) is taken from the
  * section's motion along its line, both ends' speeds scaled alike: a drag
- * the drive then pays, as it pays the idlers. What its kinetic energy
- * cannot give without stopping it (at most a quarter of it: the belt at
- * rest) stays a gain, booked as input. Returns what a change with this
- * energy balance leaves to book: lost > 0 as it was, a gain less what
- * the section paid. */
+ * the drive then pays, as it pays the idlers. A change takes at most a
+ * quarter of the section's kinetic energy (a section near rest, as at
+ * the first tie, would be stopped); what that cannot give stays a gain,
+ * booked as input. Returns what a change with this energy balance leaves
+ * to book: a loss as it was, a gain less what the section paid. */
 static double pay_gain(bd_sim *sim, const bd_rfe_window *W, bd_rfe_section *S, double lost)
 {
-    if (lost >= 0.0 || S->count < 2)
+    if (!(lost < 0.0) || S->count < 2)
         return lost;
     const double v1 = S->v1, v2 = S->v2;
     const double ke2 = S->m11 * v1 * v1 + 2.0 * S->m12 * v1 * v2 + S->m22 * v2 * v2;
