@@ -181,7 +181,8 @@ static void window_bays(const bd_model_def *def, const bd_path *path, int k, dou
 }
 
 /* The kink at a section's ends. The free end bay hangs from a section's
- * end at the slope θ = w·d/(2T), d = a/2 (θ = φ/4 of the belt's turn
+ * end at the slope θ = w·d/(2T) of the sag parabola over d (DIN 22101's,
+ * as end_resistance), d = a/2 (θ = φ/4 of the belt's turn
  * φ = w·a/T at an idler; w its weight per metre normal to the span, T
  * less m′v²), and the end holds R = ½·w·d = w·a/4 of it (end_resistance).
  * Each element that joins is lifted the last θ·l0 onto the line against
@@ -695,7 +696,9 @@ void bd_rfe_sections_forces(bd_sim *sim)
 /* The free belt beside a section's end hangs from it: the end, held on
  * the line at the idlers' height, is a support of no rolling resistance,
  * and it holds half the weight of the free stretch from it to the next
- * idler outside (a string between two supports at one height; seed 8522,
+ * idler outside (a string between two supports at one height, the sag
+ * parabola h = w·d²/(8T) of DIN 22101's sag limit, as
+ * belt/lumped/idler_turn.c takes it; seed 8522,
  * 32 m, its return's bays sagging 5 %: 48–142 N at each of its four
  * outer ends, measured as the forces across the line on them, and 2.3 %
  * of its running force missing). On a belt free everywhere the idlers
