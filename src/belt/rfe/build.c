@@ -82,7 +82,7 @@ static void orient(bd_sim *sim)
 #define RELAX_TOL 1e-13
 #define RELAX_SWEEPS 20000
 
-void bd_rfe_relax_turns(bd_sim *sim, int first, int count)
+void bd_rfe_relax_turns(bd_sim *sim, int first, int count, int turn_tied)
 {
     bd_rfe *R = bd_rfe_of(sim);
     const bd_rfe_model *RM = bd_rfe_model_of(sim);
@@ -94,22 +94,26 @@ void bd_rfe_relax_turns(bd_sim *sim, int first, int count)
     const int sdes = loop ? n : count + 1;
     /* a few elements (a section's end, in the step) on the stack, the
      * whole loop (the build) on the heap */
-    double small[5 * (RELAX_STACK + 2)];
-    double *heap = count > RELAX_STACK ? bd_xcalloc(5 * ((size_t)sdes + 2), sizeof *heap) : NULL;
+    double small[6 * (RELAX_STACK + 2)];
+    double *heap = count > RELAX_STACK ? bd_xcalloc(6 * ((size_t)sdes + 2), sizeof *heap) : NULL;
     double *base = heap ? heap : small;
     const size_t stride = heap ? (size_t)sdes + 2 : RELAX_STACK + 2;
     double *g = base, *bt = base + stride, *S = base + 2 * stride;   /* γ at δ = 0, β, k_γ */
     double *p = base + 3 * stride, *d = base + 4 * stride;           /* ψ; δ with the fixed ends */
-    for (size_t k = 0; k < 5 * stride; k++)
+    double *B = base + 5 * stride;                                   /* k_β */
+    for (size_t k = 0; k < 6 * stride; k++)
         base[k] = 0.0;
+    /* an SDE between two tied elements has no shear or bending energy
+     * (bd_rfe_sde_energy), a tied element no alignment */
     for (int k = 0; k < sdes; k++) {
         int e = (first + k + n - 1) % n;
         g[k] = bd_rfe_sde_angles(sim, e, &bt[k]);
-        S[k] = R->sec[e] >= 0 && R->sec[bd_node_next(e, n)] >= 0 ? 0.0 : RM->k_shear;
+        int inside = R->sec[e] >= 0 && R->sec[bd_node_next(e, n)] >= 0;
+        S[k] = inside ? 0.0 : RM->k_shear;
+        B[k] = inside ? 0.0 : RM->k_bend;
     }
     for (int k = 0; k < count; k++)
         p[k] = bd_rfe_align_angle(sim, (first + k) % n);
-    const double kb = RM->k_bend;
     /* δ of local element k is d[k + 1]; d[0] and d[count + 1] the fixed
      * neighbours' (0), or, round the whole loop, the other end's */
     for (int sweep = 0; sweep < RELAX_SWEEPS; sweep++) {
@@ -120,16 +124,16 @@ void bd_rfe_relax_turns(bd_sim *sim, int first, int count)
         }
         for (int k = 0; k < count; k++) {
             int i = (first + k) % n;
-            if (R->sec[i] >= 0)
+            if (R->sec[i] >= 0 && !turn_tied)
                 continue;
             int sb = k, sa = loop ? (k + 1) % n : k + 1;
-            double kh = RM->k_align[i];
-            double coef = 0.25 * (S[sb] + S[sa]) + kh + 2.0 * kb;
+            double kh = R->sec[i] >= 0 ? 0.0 : RM->k_align[i];
+            double coef = 0.25 * (S[sb] + S[sa]) + kh + B[sb] + B[sa];
             if (coef <= 0.0)
                 continue;
             double db = d[k], da = d[k + 2];
             double c = -0.5 * S[sb] * (g[sb] - 0.5 * db) - 0.5 * S[sa] * (g[sa] - 0.5 * da)
-                     + kh * p[k] - kb * (bt[sa] + da) + kb * (bt[sb] - db);
+                     + kh * p[k] - B[sa] * (bt[sa] + da) + B[sb] * (bt[sb] - db);
             double step = -c / coef - d[k + 1];
             d[k + 1] += SOR_FACTOR * step;
             if (fabs(step) > most)
@@ -294,7 +298,7 @@ int bd_rfe_build(bd_sim *sim, bd_diag *diag)
     align_constants(sim, RM);
     bd_rfe_sections_build(sim, RM);
     bd_rfe_sections_alloc(sim);
-    bd_rfe_relax_turns(sim, 0, sim->model->n);
+    bd_rfe_relax_turns(sim, 0, sim->model->n, 0);
     return 0;
 }
 

@@ -183,8 +183,9 @@ static inline int bd_rfe_some_tied(const bd_sim *sim)
 int bd_rfe_build(bd_sim *sim, bd_diag *diag);
 /* the free elements first .. first + count − 1 (count ≥ n: the whole
  * loop) turned to the least shear, alignment and bending energy with
- * every centre held */
-void bd_rfe_relax_turns(bd_sim *sim, int first, int count);
+ * every centre held; with turn_tied, the tied ones among them too (a
+ * section's end, turning on its SDE to the free belt alone) */
+void bd_rfe_relax_turns(bd_sim *sim, int first, int count, int turn_tied);
 /* GA, N: belt.shear_stiffness, default 10·EA */
 double bd_rfe_shear_stiffness(const bd_model_def *def);
 void bd_rfe_free(bd_sim *sim);

@@ -1295,9 +1295,9 @@ static double join(bd_sim *sim, int w, int end)
      * free belt's turns beside it relaxed to it */
     reflect_turn(sim, p, q);
     if (end == 0)
-        bd_rfe_relax_turns(sim, (p - RELAX_JOIN + n) % n, RELAX_JOIN);
+        bd_rfe_relax_turns(sim, (p - RELAX_JOIN + n) % n, RELAX_JOIN, 0);
     else
-        bd_rfe_relax_turns(sim, bd_node_next(p, n), RELAX_JOIN);
+        bd_rfe_relax_turns(sim, bd_node_next(p, n), RELAX_JOIN, 0);
     R->joined++;
     return pay_gain(sim, W, S, e0 - local_energy(sim, from, to));
 }
@@ -1329,13 +1329,20 @@ static double leave(bd_sim *sim, int w, int end)
     S->count--;
     mass_matrix(sim, S);
     /* the element that left, and the free belt beyond it, turned to the
-     * least energy with the section's new end (along its line, as inside
-     * it) held: a section's end that joined it from the free belt keeps
-     * the turn it came with, and carried off unrelaxed it would swing */
+     * least energy (a section's end that joined it from the free belt
+     * keeps the turn it came with, and carried off unrelaxed it would
+     * swing), and the section's new end with them, on its SDE to the
+     * free belt alone: the end is the section's hinge, as a join makes it
+     * (reflect_turn). Held in the line's turn, it met the turn the
+     * element beside it had kept since it joined, and the shear that SDE
+     * hid while both were tied counted at once: on generated seed 8526,
+     * settling undamped from rest, with the free belt beside a section
+     * 0.06 rad off its line, one leave made 42 J (docs/physics.md §15,
+     * The sections' ends). */
     if (end == 0)
-        bd_rfe_relax_turns(sim, (k - RELAX_JOIN + 1 + n) % n, RELAX_JOIN);
+        bd_rfe_relax_turns(sim, (k - RELAX_JOIN + 1 + n) % n, RELAX_JOIN + 1, 1);
     else
-        bd_rfe_relax_turns(sim, k, RELAX_JOIN);
+        bd_rfe_relax_turns(sim, bd_node_prev(k, n), RELAX_JOIN + 1, 1);
     R->left++;
     return pay_gain(sim, &bd_rfe_model_of(sim)->windows[w], S, e0 - local_energy(sim, from, to));
 }
@@ -1538,8 +1545,8 @@ static void tie_all(bd_sim *sim)
         /* the whole half bay laid beside a free end, and a few beyond */
         const bd_rfe_window *W = &RM->windows[w];
         int around = (int)ceil(0.5 * W->bay / sim->model->l0) + RELAX_AROUND;
-        bd_rfe_relax_turns(sim, (S->first - around + n) % n, around);
-        bd_rfe_relax_turns(sim, bd_node_next(last_of(S, n), n), around);
+        bd_rfe_relax_turns(sim, (S->first - around + n) % n, around, 0);
+        bd_rfe_relax_turns(sim, bd_node_next(last_of(S, n), n), around, 0);
     }
     book(sim, e0 - belt_energy(sim));
     R->tied = 1;
