@@ -65,9 +65,12 @@ static void orient(bd_sim *sim)
 
 /* The orientations of least shear, alignment and bending energy with
  * the centres where they are, of the free elements first .. first +
- * count − 1 (all of them: the whole loop) with the others held; the
- * build's on the layout, and where a section's end meets the free belt
- * (sections.c). Along the path's tangent the
+ * count − 1 (all of them: the whole loop) with the others held, and with
+ * turn_tied of the tied ones among them too (a section's end: an SDE
+ * between two tied elements has no shear or bending energy, a tied
+ * element no alignment, so only its SDE to the free belt turns it; one
+ * inside its section has none and stays); the build's on the layout, and
+ * where a section's end meets the free belt (sections.c). Along the path's tangent the
  * elements stand askew where the belt's curvature jumps (a tangent point:
  * the line between two centres there leans by up to l0/(8R) from their
  * tangents), and the stiff shear held up to 2 kJ there on a 40 m conveyor
@@ -128,7 +131,9 @@ void bd_rfe_relax_turns(bd_sim *sim, int first, int count, int turn_tied)
                 continue;
             int sb = k, sa = loop ? (k + 1) % n : k + 1;
             double kh = R->sec[i] >= 0 ? 0.0 : RM->k_align[i];
-            double coef = 0.25 * (S[sb] + S[sa]) + kh + B[sb] + B[sa];
+            /* (B[sb] + B[sa]) is 2·k_β exactly for a free element, as
+             * before turn_tied: the build's turns stay bit for bit */
+            double coef = 0.25 * (S[sb] + S[sa]) + kh + (B[sb] + B[sa]);
             if (coef <= 0.0)
                 continue;
             double db = d[k], da = d[k + 2];

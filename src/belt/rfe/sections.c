@@ -1181,9 +1181,10 @@ static void tie_node(bd_sim *sim, int i, int w)
 
 /* a tied element turned along its section's line: one inside it, whose
  * turn counts for nothing (its SDEs are both to tied elements). A
- * section's end keeps the turn it had, so that its SDE to the free belt
- * does not jump; inside, turned along the line, it leaves as it would
- * stand there */
+ * section's end keeps the turn it was given when it became the end (a
+ * join's reflect_turn, a leave's relax), so that its SDE to the free
+ * belt does not jump; inside, turned along the line, it leaves as it
+ * would stand there */
 static void along_line(bd_sim *sim, int i, const bd_rfe_window *W)
 {
     bd_rfe *R = bd_rfe_of(sim);
@@ -1311,7 +1312,7 @@ static double leave(bd_sim *sim, int w, int end)
     const int n = sim->model->n;
     double r = 1.0 / (S->count - 1);
     /* its SDE to the section and its alignment count again (a section's
-     * end keeps the turn it had when it joined) */
+     * end keeps the turn it was given when it became the end) */
     int k = end == 0 ? S->first : last_of(S, n);
     int from = end == 0 ? (k - RELAX_JOIN - 1 + n) % n : bd_node_prev(bd_node_prev(k, n), n);
     int to = end == 0 ? bd_node_next(bd_node_next(k, n), n) : (k + RELAX_JOIN + 1) % n;
