@@ -69,12 +69,13 @@ static void orient(bd_sim *sim)
  * turn_tied of the tied ones among them too (a section's end: an SDE
  * between two tied elements has no shear or bending energy, a tied
  * element no alignment, so only its SDE to the free belt turns it; one
- * inside its section has none and stays); the build's on the layout, and
- * where a section's end meets the free belt (sections.c). Along the path's tangent the
- * elements stand askew where the belt's curvature jumps (a tangent point:
- * the line between two centres there leans by up to l0/(8R) from their
- * tangents), and the stiff shear held up to 2 kJ there on a 40 m conveyor
- * that a start without stabilization let go at once. The energy is
+ * inside its section has none and stays); the build's on the layout,
+ * and where a section's end meets the free belt (sections.c). Along the
+ * path's tangent the elements stand askew where the belt's curvature
+ * jumps (a tangent point: the line between two centres there leans by
+ * up to l0/(8R) from their tangents), and the stiff shear held up to
+ * 2 kJ there on a 40 m conveyor that a start without stabilization let
+ * go at once. The energy is
  * quadratic in the turns δ_i from the tangent (small angles):
  *   Σ ½k_γ(γ_e − ½(δ_i + δ_j))² + ½k_ψ,i(ψ_i + δ_i)² + ½k_β(β_e + δ_j − δ_i)²,
  * minimized by successive over-relaxation (Gauss–Seidel, factor
