@@ -75,8 +75,9 @@ static void orient(bd_sim *sim)
  * jumps (a tangent point: the line between two centres there leans by
  * up to l0/(8R) from their tangents), and the stiff shear held up to
  * 2 kJ there on a 40 m conveyor that a start without stabilization let
- * go at once. The energy is
- * quadratic in the turns δ_i from the tangent (small angles):
+ * go at once. The energy, the SDEs' shear and bending of seed 000 §2.3
+ * and the alignment (forces.c), is quadratic in the turns δ_i from the
+ * tangent (small angles):
  *   Σ ½k_γ(γ_e − ½(δ_i + δ_j))² + ½k_ψ,i(ψ_i + δ_i)² + ½k_β(β_e + δ_j − δ_i)²,
  * minimized by successive over-relaxation (Gauss–Seidel, factor
  * SOR_FACTOR) until no δ changes by RELAX_TOL rad; the alignment or the
@@ -112,9 +113,9 @@ void bd_rfe_relax_turns(bd_sim *sim, int first, int count, int turn_tied)
     for (int k = 0; k < sdes; k++) {
         int e = (first + k + n - 1) % n;
         g[k] = bd_rfe_sde_angles(sim, e, &bt[k]);
-        int inside = R->sec[e] >= 0 && R->sec[bd_node_next(e, n)] >= 0;
-        S[k] = inside ? 0.0 : RM->k_shear;
-        B[k] = inside ? 0.0 : RM->k_bend;
+        int held = bd_rfe_sde_held(R, e, bd_node_next(e, n));
+        S[k] = held ? 0.0 : RM->k_shear;
+        B[k] = held ? 0.0 : RM->k_bend;
     }
     for (int k = 0; k < count; k++)
         p[k] = bd_rfe_align_angle(sim, (first + k) % n);

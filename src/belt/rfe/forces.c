@@ -80,7 +80,7 @@ static void sde(bd_sim *sim, int e, int j)
     /* between two tied elements (inside a section or joining two) the
      * sections' lines hold both across and in their turn: no shear or
      * bending (sections.c) */
-    double on = R->sec[i] >= 0 && R->sec[j] >= 0 ? 0.0 : 1.0;
+    double on = bd_rfe_sde_held(R, i, j) ? 0.0 : 1.0;
     R->qd[e] = on * qd;
     R->q[e] = on * (RM->k_shear * gam + qd);
     R->mbd[e] = on * mbd;
@@ -295,7 +295,7 @@ double bd_rfe_sde_energy(const bd_sim *sim, int e)
     double v = 0.5 * RM->lumped.k_axial * x * x;
     /* between two tied elements a section's line holds them: no shear or
      * bending (sde above) */
-    if (R->sec[e] < 0 || R->sec[j] < 0) {
+    if (!bd_rfe_sde_held(R, e, j)) {
         double bend, gam = bd_rfe_sde_angles(sim, e, &bend);
         v += 0.5 * RM->k_shear * gam * gam + 0.5 * RM->k_bend * bend * bend;
     }
@@ -319,7 +319,7 @@ static double sde_energy(const bd_sim *sim)
     for (int i = 0; i < sim->model->n; i++) {
         double bend, gam = bd_rfe_sde_angles(sim, i, &bend);
         double psi = bd_rfe_align_angle(sim, i);
-        if (R->sec[i] < 0 || R->sec[bd_node_next(i, sim->model->n)] < 0)
+        if (!bd_rfe_sde_held(R, i, bd_node_next(i, sim->model->n)))
             e += 0.5 * RM->k_shear * gam * gam + 0.5 * RM->k_bend * bend * bend;
         if (R->sec[i] < 0)
             e += 0.5 * RM->k_align[i] * psi * psi;

@@ -171,6 +171,15 @@ static inline const bd_rfe_model *bd_rfe_model_of(const bd_sim *sim)
     return (const bd_rfe_model *)sim->model->belt_model;
 }
 
+/* whether the SDE between elements i and j = i + 1 joins two tied
+ * elements (inside a section, or where two meet): the sections' lines
+ * hold both across and in their turn, so it has no shear or bending
+ * (forces.c), and its two elements no turn to relax (build.c) */
+static inline int bd_rfe_sde_held(const bd_rfe *R, int i, int j)
+{
+    return R->sec[i] >= 0 && R->sec[j] >= 0;
+}
+
 /* whether any element is tied into a section now (sections.c): the step
  * then works on the free runs only */
 static inline int bd_rfe_some_tied(const bd_sim *sim)

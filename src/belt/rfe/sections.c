@@ -1174,7 +1174,7 @@ static void tie_node(bd_sim *sim, int i, int w)
     int es[2] = {bd_node_prev(i, n), i};
     for (int k = 0; k < 2; k++) {
         int e = es[k];
-        if (R->sec[e] >= 0 && R->sec[bd_node_next(e, n)] >= 0)
+        if (bd_rfe_sde_held(R, e, bd_node_next(e, n)))
             R->q[e] = R->qd[e] = R->mb[e] = R->mbd[e] = 0.0;
     }
 }
