@@ -159,6 +159,8 @@ typedef struct bd_idler {
     int lazy;              /* its roll's motion kept by the belt, not the parts (a
                               long section of the rfe belt carrying it,
                               belt/rfe/sections.c); omega written when read */
+    int landed;            /* the belt has stood on it: only a belt that was on
+                              an idler can lift off it (idler_contact.c) */
 } bd_idler;
 
 typedef struct bd_probe {
