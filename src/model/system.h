@@ -379,6 +379,11 @@ static inline double bd_pulley_solve_inertia(const bd_sim *sim, const bd_pulley_
  * rounding of a resting contact and the discrete belt's chord passing
  * over an idler (its contact gap), well below a lift in a curve (cm) */
 #define BD_LIFT_OFF_CLEARANCE 1e-3
+/* m the belt must first have come within of an idler for its standing off
+ * to count (idler_contact.c): a belt laid on the roll tops falls onto the
+ * contact a corner below them, which is no lift-off; half the clearance so
+ * that a belt hovering at the clearance does not flip in and out */
+#define BD_LIFT_OFF_LANDED (0.5 * BD_LIFT_OFF_CLEARANCE)
 
 /* an idler station at path coordinate s is lifted in this step */
 static inline void bd_lift_off_note(bd_sim *sim, double s)

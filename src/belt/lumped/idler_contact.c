@@ -99,8 +99,7 @@
 
 /* the belt, d from the idler's centre, off it by more than the
  * clearance that counts as lift-off (system.h), once it has stood within
- * half that clearance (landed, contact_on; the half so that a belt
- * hovering at the clearance does not count): the belt is laid straight on
+ * BD_LIFT_OFF_LANDED of it (landed, contact_on): the belt is laid straight on
  * the roll tops, and where it turns over an idler (its sag, a curve) the
  * contact stands a corner below them (contact_radius); at the start it
  * falls that far onto the rolls, which is no lift-off (the cement plant's
@@ -440,7 +439,7 @@ contact_on(bd_sim *sim, bd_idler *id, const bd_idler_touch *pc, const int count)
     id->torque = 0.0;
     const bd_idler_model *im = id->m;
     const double d = pc->d, nx = pc->n[0], ny = pc->n[1];
-    if (d - im->contact_radius <= 0.5 * BD_LIFT_OFF_CLEARANCE)
+    if (d - im->contact_radius <= BD_LIFT_OFF_LANDED)
         id->landed = 1;
     if (d >= im->contact_radius + IDLER_CONTACT_GAP * sim->model->l0) {
         note_lifted(sim, id, d);
