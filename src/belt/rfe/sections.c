@@ -645,7 +645,7 @@ static int loop_order(bd_rfe *R, int windows, int aggregated_only)
     int k = 0;
     for (int w = 0; w < windows; w++) {
         const bd_rfe_section *S = &R->sections[w];
-        if (S->count < 2 || (aggregated_only && (S->count < 3 || S->full)))
+        if (aggregated_only ? S->count < 3 || S->full : S->count < 1)
             continue;
         /* insertion: the order changes little from call to call */
         int at = k++;
@@ -1063,32 +1063,34 @@ void bd_rfe_sections_move(bd_sim *sim, double *ke_out, double *w_nc_out)
 /* joining and leaving                                                */
 
 /* the free nodes' runs round the loop (the step moves them), each
- * between two tied elements; all of it one run when none is tied */
-static void free_runs(bd_rfe *R, int n)
+ * between two tied elements; all of it one run when none is tied. From
+ * the sections in loop order, O(sections) (a join or leave calls it,
+ * several times a step on a long belt): the gaps between them, the first
+ * after the section that holds the lowest tied index (as a scan from node
+ * 0 would find them, so sums over runs keep their order) */
+static void free_runs(bd_rfe *R, int windows, int n)
 {
     R->run_n = 0;
-    int t0 = -1;
-    for (int i = 0; i < n && t0 < 0; i++)
-        if (R->sec[i] >= 0)
-            t0 = i;
-    if (t0 < 0) {
+    int k = loop_order(R, windows, 0);
+    if (k == 0) {
         R->run_first[0] = 0;
         R->run_count[0] = n;
         R->run_n = 1;
         return;
     }
-    for (int q = 1; q <= n;) {
-        int i = (t0 + q) % n;
-        if (R->sec[i] >= 0) {
-            q++;
-            continue;
+    /* sorted by first: the lowest tied index is 0 in the last section if
+     * that one wraps past node n − 1, else the first section's first */
+    const bd_rfe_section *L = &R->sections[R->order[k - 1]];
+    int start = L->first + L->count > n ? k - 1 : 0;
+    for (int q = 0; q < k; q++) {
+        const bd_rfe_section *S = &R->sections[R->order[(start + q) % k]];
+        const bd_rfe_section *N = &R->sections[R->order[(start + q + 1) % k]];
+        int a = last_of(S, n);
+        int gap = (N->first - a - 1 + n) % n;
+        if (gap > 0) {
+            R->run_first[R->run_n] = a + 1 == n ? 0 : a + 1;
+            R->run_count[R->run_n++] = gap;
         }
-        int c = 0;
-        while (q + c <= n && R->sec[(t0 + q + c) % n] < 0)
-            c++;
-        R->run_first[R->run_n] = i;
-        R->run_count[R->run_n++] = c;
-        q += c;
     }
 }
 
@@ -1635,7 +1637,7 @@ void bd_rfe_sections_regroup(bd_sim *sim)
         return;
     if (lost != 0.0)
         book(sim, lost);
-    free_runs(R, n);
+    free_runs(R, RM->window_count, n);
     R->live_stale = 1;
     /* the rotations' system changes with the tied elements */
     R->rdt = 0.0;
