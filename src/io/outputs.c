@@ -512,6 +512,13 @@ static int write_summary(bd_outputs *o, const bd_sim *sim, double wall, const ch
         cJSON_AddBoolToObject(st, "converged", sim->stabilize_converged);
         bd_json_add_number(st, "kinetic_final_J", sim->stabilize_final_kinetic);
     }
+    if (sim->settle_steps > 0) {
+        /* the rfe belt let go where the static layout lays it (sim/stabilize.c) */
+        cJSON *st = cJSON_AddObjectToObject(root, "settle");
+        bd_json_add_number(st, "steps", (double)sim->settle_steps);
+        bd_json_add_number(st, "resets", sim->settle_resets);
+        bd_json_add_number(st, "released_J", sim->settle_released);
+    }
     bd_layout_to_json(root, sim);
     cJSON *w = cJSON_AddArrayToObject(root, "warnings");
     for (int i = 0; i < sim->warning_count; i++)

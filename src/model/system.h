@@ -356,6 +356,9 @@ struct bd_sim {
     int stabilize_resets;
     int stabilize_converged;
     double stabilize_final_kinetic;
+    long settle_steps;     /* bd_sim_settle's (0: not settled) */
+    int settle_resets;
+    double settle_released;   /* J: the mechanical energy it took out */
     /* run control */
     int stabilizing;       /* relaxing before t = 0 (stabilize.c): clock held at
                               0, drives off, drive pulleys held, no feed */

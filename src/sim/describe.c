@@ -200,6 +200,11 @@ void bd_sim_describe(const bd_sim *sim, FILE *f)
             def->simulation.time_step > 0.0 ? "given" : "auto, 0.8 x limit");
     fprintf(f, "steps for %.4g s: %.0f\n", def->simulation.duration,
             ceil(def->simulation.duration / sim->model->dt));
+    if (sim->settle_steps > 0)
+        fprintf(f, "settled where the static layout lays it (before t = 0): %ld steps, %d "
+                   "kinetic-energy resets, %.4g J let go (the rfe chain at the tangent points; "
+                   "docs/physics.md §15)\n",
+                sim->settle_steps, sim->settle_resets, sim->settle_released);
     fprintf(f, "pulleys:\n");
     for (int i = 0; i < sim->model->pulley_count; i++) {
         const bd_pulley_body *p = &sim->pulleys[i];

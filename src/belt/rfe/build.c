@@ -450,3 +450,31 @@ void bd_rfe_estimate(const bd_model_def *def, const bd_path *path, bd_belt_estim
         out->stepped = (out->nodes - tied) + BD_SECTION_STEP_ELEMENTS * windows
                      + out->idlers * (1.0 - tied / out->nodes);
 }
+
+/* How long the chain's own modes take to settle where the static layout
+ * lays it (sim/stabilize.c, bd_sim_settle): the centres' zigzag against
+ * the shear, the fastest, lets the tangent points' misfit go within a few
+ * steps and stirs the elements turning alternately against the alignment,
+ * ω² = k_ψ/J (the shear does not resist it), which passes some of it back
+ * at its first peak; half a period of that, π·√(J/k̄_ψ), k̄_ψ the mean of
+ * the elements' alignment stiffness. Measured on examples/
+ * flat_belt_drive.yaml at its rfe default (the period 175 steps): its
+ * first kinetic-energy peaks came at steps 2, 5 and 8 (the zigzag), the
+ * next at 54 (the alternating turn, larger than the first); settled 20,
+ * 54, 88 or 175 steps its balance read 1.4·10⁻³, 2.8·10⁻⁴, 1.7·10⁻⁴ and
+ * 1.5·10⁻⁴ (a full stabilization 1.5·10⁻⁴). Longer lets the belt begin to
+ * fall into its sag between the idlers, which the sections' first tie
+ * then lifts back (tests/data/vt_loop.yaml: 0.17 J booked as input
+ * unsettled, 0.48 J at half a period, 2.3 J at a whole one). 0 with no
+ * tension to align. */
+double bd_rfe_settle_time(const bd_sim *sim)
+{
+    const bd_rfe_model *RM = bd_rfe_model_of(sim);
+    const int n = sim->model->n;
+    double sum = 0.0;
+    for (int i = 0; i < n; i++)
+        sum += RM->k_align[i];
+    if (!(sum > 0.0))
+        return 0.0;
+    return BD_PI * sqrt(RM->inertia * n / sum);
+}

@@ -14,6 +14,7 @@ const bd_belt_ops bd_rfe_ops = {
     .free_model = bd_rfe_free_model,
     .clone = bd_rfe_clone,
     .stable_step = bd_rfe_stable_step,
+    .settle_time = bd_rfe_settle_time,
     .estimate = bd_rfe_estimate,
     .forces = bd_rfe_forces,
     .wrap = bd_lumped_wrap,

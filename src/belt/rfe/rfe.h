@@ -201,6 +201,7 @@ void bd_rfe_free(bd_sim *sim);
 void bd_rfe_free_model(bd_model *model);
 void bd_rfe_clone(bd_sim *dst, const bd_sim *src);
 double bd_rfe_stable_step(const bd_sim *sim, bd_time_step_limit *limit);
+double bd_rfe_settle_time(const bd_sim *sim);
 void bd_rfe_estimate(const bd_model_def *def, const bd_path *path, bd_belt_estimate *out);
 
 /* forces.c */
