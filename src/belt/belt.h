@@ -85,10 +85,10 @@ typedef struct bd_belt_ops {
     const char *name;          /* as model-format.md `belt.formulation` */
     const char *description;   /* for `beltdyn check` */
     int node_dof;              /* degrees of freedom per node */
-    /* its `static` layout (the string's path) not its own equilibrium:
-     * how long (s of the step's clock) its own fast modes take to settle
-     * there, which the build lets them before t = 0 (bd_sim_settle); NULL
-     * when laid in equilibrium */
+    /* its layout (the string's path, `static` or `rest`) not its own
+     * equilibrium: how long (s of the step's clock) its own fast modes take
+     * to settle there, which the build lets them before t = 0
+     * (bd_sim_settle); NULL when laid in its own equilibrium */
     double (*settle_time)(const bd_sim *sim);
     const char *dof_text;      /* how `check` counts the degrees of freedom */
 

@@ -513,7 +513,7 @@ static int write_summary(bd_outputs *o, const bd_sim *sim, double wall, const ch
         bd_json_add_number(st, "kinetic_final_J", sim->stabilize_final_kinetic);
     }
     if (sim->settle_steps > 0) {
-        /* the rfe belt let go where the static layout lays it (sim/stabilize.c) */
+        /* the rfe belt let go where the layout lays it (sim/stabilize.c) */
         cJSON *st = cJSON_AddObjectToObject(root, "settle");
         bd_json_add_number(st, "steps", (double)sim->settle_steps);
         bd_json_add_number(st, "resets", sim->settle_resets);

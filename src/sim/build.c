@@ -134,12 +134,11 @@ static int create(const bd_model_def *def, bd_sim *volatile *out, bd_diag *diag)
     (void)bd_sim_start_at_rest(sim);
     bd_idler_turn_warn(sim);
     bd_sag_compliance_warn(sim);
-    /* a belt not in its own equilibrium where the static layout lays it
-     * settles there (a stabilization, when asked for, does more) */
-    if (sim->model->belt->settle_time && def->simulation.initial_state == BD_INITIAL_STATIC
-        && !def->simulation.stabilize && bd_sim_settle(sim)) {
+    /* a belt not in its own equilibrium where the layout lays it settles
+     * there (a stabilization, when asked for, does more) */
+    if (sim->model->belt->settle_time && !def->simulation.stabilize && bd_sim_settle(sim)) {
         bd_diag_error(diag, def->source, def->belt.mark,
-                      "the %s belt did not settle where the static layout lays it (before "
+                      "the %s belt did not settle where the layout lays it (before "
                       "t = 0): %s",
                       sim->model->belt->name, sim->fail_msg);
         return 1;

@@ -201,7 +201,7 @@ void bd_sim_describe(const bd_sim *sim, FILE *f)
     fprintf(f, "steps for %.4g s: %.0f\n", def->simulation.duration,
             ceil(def->simulation.duration / sim->model->dt));
     if (sim->settle_steps > 0)
-        fprintf(f, "settled where the static layout lays it (before t = 0): %ld steps, %d "
+        fprintf(f, "settled where the layout lays it (before t = 0): %ld steps, %d "
                    "kinetic-energy resets, %.4g J let go (the rfe chain at the tangent points; "
                    "docs/physics.md §15)\n",
                 sim->settle_steps, sim->settle_resets, sim->settle_released);

@@ -16,7 +16,7 @@ int bd_sim_start_at_rest(bd_sim *sim);   /* 1: the forces failed (fail_msg) */
 /* the run's records of belt tension and lift-off cleared: a run starts
  * (build) or starts again after stabilizing (step.c) */
 void bd_run_records_clear(bd_sim *sim);
-/* stabilize.c: a belt whose `static` layout is not its own equilibrium
+/* stabilize.c: a belt whose layout is not its own equilibrium
  * (bd_belt_ops settle_time) let go there before t = 0 (the build calls
  * it); 0, or 1 when it diverged (message in sim->fail_msg) */
 int bd_sim_settle(bd_sim *sim);

@@ -231,8 +231,8 @@ int bd_sim_stabilize(bd_sim *sim, const bd_run_options *opt, char *err, size_t e
     return BD_RUN_OK;
 }
 
-/* A belt whose `static` layout is not its own equilibrium (the rfe
- * belt's, belt/rfe/build.c): its centres are laid on the string's path and
+/* A belt whose layout is not its own equilibrium (the rfe belt's,
+ * belt/rfe/build.c; `static` or `rest`): its centres are laid on the string's path and
  * its elements turned to the least shear and alignment with the centres
  * held there, but where the path's curvature jumps (a tangent point) a
  * chain of rigid elements cannot lie with every centre on it; what the
@@ -242,8 +242,8 @@ int bd_sim_stabilize(bd_sim *sim, const bd_run_options *opt, char *err, size_t e
  * scheme keeps of it (the modified energy above), so the energy account
  * missed what it lost: 0.12 J of the 2.4 J laid on examples/
  * flat_belt_drive.yaml at its rfe default (balance 4.5 %), 165 J on the
- * cement plant at 0.2 m (5·10⁻⁴). So the build lets the belt go where it is
- * laid for the time its own modes take to settle (bd_belt_ops
+ * cement plant at 0.2 m (5·10⁻⁴); a `rest` start of the flat belt drive
+ * 11.4 %. So the build lets the belt go where it is laid for the time its own modes take to settle (bd_belt_ops
  * settle_time), by the kinetic-energy damping of bd_sim_stabilize (clock
  * held, drives held, no feed), and the run starts from there, at rest. Not
  * a stabilization: the slow modes (the spans' sag, a takeup) stay nearly as

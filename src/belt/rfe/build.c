@@ -451,8 +451,7 @@ void bd_rfe_estimate(const bd_model_def *def, const bd_path *path, bd_belt_estim
                      + out->idlers * (1.0 - tied / out->nodes);
 }
 
-/* How long the chain's own modes take to settle where the static layout
- * lays it (sim/stabilize.c, bd_sim_settle): the centres' zigzag against
+/* How long the chain's own modes take to settle where the layout lays it (sim/stabilize.c, bd_sim_settle): the centres' zigzag against
  * the shear, the fastest, lets the tangent points' misfit go within a few
  * steps and stirs the elements turning alternately against the alignment,
  * ω² = k_ψ/J (the shear does not resist it), which passes some of it back
