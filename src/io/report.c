@@ -1234,6 +1234,15 @@ void bd_rep_run_cards(bd_rep *r, bd_strbuf *b)
         bd_rep_card(b, be > 0.01 ? "bad" : "ok", "energy balance error", v,
              "largest over the run, relative");
     }
+    /* the rfe chain let go where the layout lays it (sim/stabilize.c) */
+    const cJSON *settle = cJSON_GetObjectItemCaseSensitive(r->summary, "settle");
+    if (settle) {
+        snprintf(v, sizeof v, "%.3g J", bd_json_num(settle, "released_J"));
+        char note[96];
+        snprintf(note, sizeof note, "let go before t = 0 in %.0f steps where the layout lays "
+                 "the belt", bd_json_num(settle, "steps"));
+        bd_rep_card(b, NULL, "settled", v, note);
+    }
     /* steady running against the model's own law (sensors/running.c) */
     const cJSON *rf = cJSON_GetObjectItemCaseSensitive(r->summary, "running_force");
     if (rf) {
