@@ -232,23 +232,24 @@ int bd_sim_stabilize(bd_sim *sim, const bd_run_options *opt, char *err, size_t e
 }
 
 /* A belt whose layout is not its own equilibrium (the rfe belt's,
- * belt/rfe/build.c; `static` or `rest`): its centres are laid on the string's path and
- * its elements turned to the least shear and alignment with the centres
- * held there, but where the path's curvature jumps (a tangent point) a
- * chain of rigid elements cannot lie with every centre on it; what the
- * turns cannot take up stays in the shear, which lets it go through the
- * centres' zigzag, the fastest mode, in the first steps. A mode that near
- * the step's limit is booked with its potential energy some times what the
- * scheme keeps of it (the modified energy above), so the energy account
- * missed what it lost: 0.12 J of the 2.4 J laid on examples/
- * flat_belt_drive.yaml at its rfe default (balance 4.5 %), 165 J on the
- * cement plant at 0.2 m (5·10⁻⁴); a `rest` start of the flat belt drive
- * 11.4 %. So the build lets the belt go where it is laid for the time its own modes take to settle (bd_belt_ops
- * settle_time), by the kinetic-energy damping of bd_sim_stabilize (clock
- * held, drives held, no feed), and the run starts from there, at rest. Not
- * a stabilization: the slow modes (the spans' sag, a takeup) stay nearly as
- * laid, and a stabilization, when asked for, does all of it. */
-/* a bound on what it adds to the build: 83 steps on the cement plant */
+ * belt/rfe/build.c; `static` or `rest`): its centres are laid on the
+ * string's path and its elements turned to the least shear and alignment
+ * with the centres held there, but where the path's curvature jumps (a
+ * tangent point) a chain of rigid elements cannot lie with every centre
+ * on it; what the turns cannot take up stays in the shear, which lets it
+ * go through the centres' zigzag, the fastest mode, in the first steps. A
+ * mode that near the step's limit is booked with its potential energy
+ * some times what the scheme keeps of it (the modified energy above), so
+ * the energy account missed what it lost: 0.12 J of the 2.4 J laid on
+ * examples/flat_belt_drive.yaml at its rfe default (balance 4.5 %; laid at
+ * rest 11.4 %), 165 J on the cement plant at 0.2 m (5·10⁻⁴). So the build
+ * lets the belt go where it is laid for the time its own modes take to
+ * settle (bd_belt_ops settle_time), by the kinetic-energy damping of
+ * bd_sim_stabilize (clock held, drives held, no feed), and the run starts
+ * from there, at rest. Not a stabilization: the slow modes (the spans'
+ * sag, a takeup) stay nearly as laid, and a stabilization, when asked
+ * for, does all of it. SETTLE_MAX_STEPS bounds what it adds to the build
+ * (83 steps on the cement plant). */
 #define SETTLE_MAX_STEPS 2000L
 
 int bd_sim_settle(bd_sim *sim)
