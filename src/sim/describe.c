@@ -202,9 +202,10 @@ void bd_sim_describe(const bd_sim *sim, FILE *f)
             ceil(def->simulation.duration / sim->model->dt));
     if (sim->settle_steps > 0)
         fprintf(f, "settled where the layout lays it (before t = 0): %ld steps, %d "
-                   "kinetic-energy resets, %.4g J let go (the rfe chain at the tangent points; "
+                   "kinetic-energy resets, %.4g J let go (the %s belt at the tangent points; "
                    "docs/physics.md §15)\n",
-                sim->settle_steps, sim->settle_resets, sim->settle_released);
+                sim->settle_steps, sim->settle_resets, sim->settle_released,
+                sim->model->belt->name);
     fprintf(f, "pulleys:\n");
     for (int i = 0; i < sim->model->pulley_count; i++) {
         const bd_pulley_body *p = &sim->pulleys[i];

@@ -72,6 +72,26 @@ static int rest_here(bd_sim *sim)
     return bd_sim_start_at_rest(sim);
 }
 
+/* one step of the kinetic-energy damping: the step, and at a peak of the
+ * kinetic energy (below *prev, the last step's) rest where the belt now
+ * is (rest_here), the peak into *peak. 1 at a peak, 0 while it rises, −1
+ * when the step or the rest failed (sim->fail_msg) */
+static int damped_step(bd_sim *sim, double *prev, double *peak)
+{
+    if (bd_step_once(sim))
+        return -1;
+    double ke = sim->energy.kinetic;
+    if (!(ke < *prev)) {
+        *prev = ke;
+        return 0;
+    }
+    if (rest_here(sim))
+        return -1;
+    *peak = *prev;
+    *prev = 0.0;
+    return 1;
+}
+
 /* the drive pulleys held (1) or let go (0); the clock, drives and feed
  * with them */
 static void hold(bd_sim *sim, int on, int feeding)
@@ -161,24 +181,15 @@ int bd_sim_stabilize(bd_sim *sim, const bd_run_options *opt, char *err, size_t e
             status = BD_RUN_INTERRUPTED;
             break;
         }
-        if (bd_step_once(sim)) {
+        int step = damped_step(sim, &prev, &peak);
+        if (step < 0) {
             status = BD_RUN_FAILED;
             break;
         }
-        double ke = sim->energy.kinetic;
-        if (ke < prev) {
-            /* a peak: take the energy out, at rest where the belt now is */
-            if (rest_here(sim)) {
-                status = BD_RUN_FAILED;
-                break;
-            }
+        if (step > 0) {
             resets++;
-            peak = prev;
             quiet_peaks = peak < STABILIZE_TOL * scale ? quiet_peaks + 1 : 0;
             converged = quiet_peaks >= 3;
-            prev = 0.0;
-        } else {
-            prev = ke;
         }
         if (opt && opt->progress && k % PROGRESS_EVERY == 0) {
             double w = bd_wall_seconds() - wall0;
@@ -264,25 +275,16 @@ int bd_sim_settle(bd_sim *sim)
     hold(sim, 1, feeding);
     int failed = rest_here(sim);
     const double e0 = bd_energy_potential(sim);
-    double prev = 0.0;
+    double prev = 0.0, peak = 0.0;
     int resets = 0;
     long k;
     for (k = 0; !failed && k < steps; k++) {
-        if (bd_step_once(sim)) {
+        int step = damped_step(sim, &prev, &peak);
+        if (step < 0) {
             failed = 1;
             break;
         }
-        double ke = sim->energy.kinetic;
-        if (ke < prev) {
-            if (rest_here(sim)) {
-                failed = 1;
-                break;
-            }
-            resets++;
-            prev = 0.0;
-        } else {
-            prev = ke;
-        }
+        resets += step;
     }
     if (!failed) {
         zero_velocities(sim);

@@ -451,11 +451,16 @@ void bd_rfe_estimate(const bd_model_def *def, const bd_path *path, bd_belt_estim
                      + out->idlers * (1.0 - tied / out->nodes);
 }
 
-/* How long the chain's own modes take to settle where the layout lays it (sim/stabilize.c, bd_sim_settle): the centres' zigzag against
- * the shear, the fastest, lets the tangent points' misfit go within a few
+/* How long the chain's own modes take to settle where the layout lays it
+ * (sim/stabilize.c, bd_sim_settle): the centres' zigzag against the
+ * shear, the fastest, lets the tangent points' misfit go within a few
  * steps and stirs the elements turning alternately against the alignment,
- * ω² = k_ψ/J (the shear does not resist it), which passes some of it back
- * at its first peak; half a period of that, π·√(J/k̄_ψ), k̄_ψ the mean of
+ * ω² = k_ψ/J (derived here: turning alternately, δ_i = ±δ, leaves every
+ * SDE's shear ½(δ_i + δ_j) and the centres still, so only the alignment
+ * k_ψ of physics.md §15 acts on the rotary inertia J of seed 000
+ * assumption i; a bending stiffness adds 4k_β, not counted: with EI > 0 the
+ * settle lasts somewhat more than the half period), which passes some of
+ * it back at its first peak; half a period of that, π·√(J/k̄_ψ), k̄_ψ the mean of
  * the elements' alignment stiffness. Measured on examples/
  * flat_belt_drive.yaml at its rfe default (the period 175 steps): its
  * first kinetic-energy peaks came at steps 2, 5 and 8 (the zigzag), the
